@@ -1,0 +1,20 @@
+#pragma once
+// Axis-aligned box, used for data-set domains and bounds.
+
+#include "field/sym3.h"
+
+namespace hsb {
+
+struct Box3 {
+  Vec3 lo = Vec3::Zero();
+  Vec3 hi = Vec3::Zero();
+
+  bool contains(const Vec3& p) const {
+    return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all();
+  }
+  Vec3 size() const { return hi - lo; }
+  Vec3 centre() const { return 0.5 * (lo + hi); }
+  double diagonal() const { return size().norm(); }
+};
+
+}  // namespace hsb

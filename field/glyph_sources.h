@@ -1,0 +1,35 @@
+#pragma once
+// Metaball sources placed along trajectories: the field library's output.
+
+#include <vector>
+
+#include "field/glyph_mapping.h"
+#include "field/tensor_field.h"
+#include "field/trajectory.h"
+
+namespace hsb {
+
+// One anisotropic metaball source (paper eq. 11): centre, principal axes
+// (columns, right-handed), radii along them and the colour scalar. The
+// renderer turns this into its shape matrix; this library never renders.
+struct GlyphSource {
+  Vec3 centre = Vec3::Zero();
+  Mat3 axes = Mat3::Identity();
+  Vec3 radii = Vec3::Ones();
+  Vec3 eigenvalues = Vec3::Zero();
+  double scalar = 0.0;
+};
+
+// Sources at arc-length `spacing` along `trajectory` (the paper's sample
+// ratio), the run of them centred on the curve's length. Each takes the
+// tensor sampled at its centre. Points where the field cannot be sampled are
+// skipped.
+std::vector<GlyphSource> place_sources(const TensorField& field, const Trajectory& trajectory,
+                                       double spacing, const GlyphMapping& mapping,
+                                       ColorScalar color);
+
+// A source for one tensor at one point (discrete glyphs, tests).
+GlyphSource make_source(const Vec3& centre, const Sym3& tensor, const GlyphMapping& mapping,
+                        ColorScalar color);
+
+}  // namespace hsb

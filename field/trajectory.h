@@ -1,0 +1,66 @@
+#pragma once
+// Stress trajectories (tensor lines): curves tangent to one eigenvector
+// family, dx/ds = e_k(x).
+
+#include <functional>
+#include <vector>
+
+#include "field/tensor_field.h"
+
+namespace hsb {
+
+enum class EigenFamily { major = 0, medium = 1, minor = 2 };
+
+// Why one end of a trajectory stopped.
+enum class StopReason { boundary, max_length, degenerate, low_magnitude, max_steps };
+
+struct TrajectoryOptions {
+  EigenFamily family = EigenFamily::major;
+  double step = 0.01;        // RK4 step, in arc length
+  double max_length = 10.0;  // per direction from the seed
+  // Stop where the followed eigenvalue's gap to its nearest neighbour is
+  // below this fraction of max|λ| (the eigenvector is undefined there).
+  double degeneracy_tolerance = 1e-3;
+  // Stop where the tensor's Frobenius norm falls below this (0: never).
+  double min_magnitude = 0.0;
+  int max_steps = 100000;  // per direction; a guard, not a control
+};
+
+struct Trajectory {
+  // Ordered from the backward end through the seed to the forward end.
+  std::vector<Vec3> points;
+  std::size_t seed_index = 0;
+  StopReason backward_stop = StopReason::max_length;
+  StopReason forward_stop = StopReason::max_length;
+
+  double length() const;
+};
+
+// What integration sees at one point: the followed eigenvector (unit,
+// arbitrary sign), or the reason integration must stop there.
+struct DirectionSample {
+  bool ok = false;
+  Vec3 direction = Vec3::Zero();
+  StopReason stop = StopReason::boundary;
+};
+using DirectionSampler = std::function<DirectionSample(const Vec3&)>;
+
+// The eigenvector of `options.family` at `x`: stops at the domain boundary,
+// at degenerate eigenvalues and below the magnitude threshold.
+DirectionSample eigen_direction(const TensorField& field, const Vec3& x,
+                                const TrajectoryOptions& options);
+
+// The integrator itself, over any direction sampler (tests feed it
+// directions with deliberately random signs).
+Trajectory trace_directions(const DirectionSampler& sampler, const Vec3& seed,
+                            const TrajectoryOptions& options);
+
+// Integrates both directions from `seed` with RK4. Every stage's sampled
+// eigenvector is flipped to agree with the current direction of travel, so
+// the arbitrary sign of eigenvectors never reverses the curve. A step that
+// would leave the domain is shortened so the curve ends on the boundary.
+// A seed outside the domain or at a stopping point gives a single point.
+Trajectory trace_trajectory(const TensorField& field, const Vec3& seed,
+                            const TrajectoryOptions& options);
+
+}  // namespace hsb

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Installs what the build needs (only what is missing) and builds what is
+# stale. Safe to run any number of times; the second run is a no-op build.
+#
+#   scripts/setup.sh            # install + configure + build into build/
+#   BUILD_DIR=build-debug BUILD_TYPE=Debug scripts/setup.sh
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+BUILD_DIR=${BUILD_DIR:-build}
+BUILD_TYPE=${BUILD_TYPE:-Release}
+
+# Debian 12 packages. libopencv-dev is here only because OIIO's CMake config
+# names OpenCV's include directory (see ../shared/debian-notes.md).
+packages=(
+  build-essential cmake ninja-build pkg-config
+  libembree-dev libtbb-dev
+  libopenimageio-dev openimageio-tools libopencv-dev
+  libopencolorio-dev
+  libtomlplusplus-dev libeigen3-dev libcli11-dev
+  googletest libgtest-dev
+  fonts-dejavu-core
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+  [[ "$status" == "install ok installed" ]] || missing+=("$p")
+done
+
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  sudo=()
+  [[ $(id -u) -eq 0 ]] || sudo=(sudo)
+  "${sudo[@]}" apt-get update -q
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+if [[ ! -f "$BUILD_DIR/build.ninja" ]]; then
+  cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE="$BUILD_TYPE"
+fi
+cmake --build "$BUILD_DIR" -j "${JOBS:-2}"
