@@ -2,6 +2,7 @@
 // Symmetric second-order tensors (paper eq. 3), stored as six components.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products, used wherever Vec3 is
 
 namespace hsb {
 

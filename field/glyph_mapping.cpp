@@ -1,0 +1,58 @@
+#include "field/glyph_mapping.h"
+
+#include <cmath>
+
+namespace hsb {
+
+namespace {
+
+Vec3 unclamped_radii(const Vec3& magnitude, const GlyphMapping& mapping) {
+  const double s = mapping.scale;
+  switch (mapping.mapping) {
+    case RadiusMapping::linear:
+      return s * magnitude;
+    case RadiusMapping::sqrt:
+      return s * magnitude.cwiseSqrt();
+    case RadiusMapping::normalized: {
+      const double largest = magnitude.maxCoeff();
+      // A zero tensor has no shape to keep: draw it as a sphere of the
+      // normalised size rather than dividing by zero.
+      if (largest == 0.0) return Vec3::Constant(s);
+      return (s / largest) * magnitude;
+    }
+    case RadiusMapping::constant:
+      break;
+  }
+  return Vec3::Constant(s);
+}
+
+}  // namespace
+
+Vec3 map_radii(const Vec3& eigenvalues, const GlyphMapping& mapping) {
+  // max then min (not std::clamp): a ceiling below the floor must not be UB;
+  // the ceiling wins, as it guards against glyphs larger than the domain.
+  return unclamped_radii(eigenvalues.cwiseAbs(), mapping)
+      .cwiseMax(mapping.floor)
+      .cwiseMin(mapping.ceiling);
+}
+
+double color_scalar(const Vec3& eigenvalues, ColorScalar which) {
+  const double l1 = eigenvalues(0), l2 = eigenvalues(1), l3 = eigenvalues(2);
+  switch (which) {
+    case ColorScalar::lambda1:
+      return l1;
+    case ColorScalar::lambda2:
+      return l2;
+    case ColorScalar::lambda3:
+      return l3;
+    case ColorScalar::mean:
+      return (l1 + l2 + l3) / 3.0;
+    case ColorScalar::von_mises:
+      // Invariant under rotation, so principal stresses suffice.
+      return std::sqrt(0.5 * ((l1 - l2) * (l1 - l2) + (l2 - l3) * (l2 - l3) +
+                              (l3 - l1) * (l3 - l1)));
+  }
+  return l3;  // unreachable for valid enum values
+}
+
+}  // namespace hsb

@@ -1,0 +1,62 @@
+#include "field/glyph_pipeline.h"
+
+#include <algorithm>
+
+#include <tbb/parallel_for.h>
+
+#include "field/seeding.h"
+#include "field/uniform_grid.h"
+
+namespace hsb {
+
+std::unique_ptr<TensorField> make_field(const DataSpec& spec) {
+  auto analytic = std::make_unique<PointLoadField>(spec.point_load);
+  const auto& dims = spec.sample_grid;
+  if (std::all_of(dims.begin(), dims.end(), [](int d) { return d >= 2; }))
+    return std::make_unique<UniformGridField>(UniformGridField::sampled_from(*analytic, dims));
+  return analytic;
+}
+
+namespace {
+
+std::vector<Vec3> all_seeds(const GlyphPipelineSpec& spec) {
+  std::vector<Vec3> seeds = spec.seed_points;
+  for (const SeedGridSpec& g : spec.seed_grids) {
+    const std::vector<Vec3> grid = grid_seeds(g.corner, g.edge_u, g.edge_v, g.n, g.m);
+    seeds.insert(seeds.end(), grid.begin(), grid.end());
+  }
+  return seeds;
+}
+
+}  // namespace
+
+GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec) {
+  const std::unique_ptr<TensorField> field = make_field(spec.data);
+  const std::vector<Vec3> seeds = all_seeds(spec);
+
+  GlyphScene scene;
+  scene.domain = field->bounds();
+
+  if (spec.placement == SourcePlacement::at_seeds) {
+    for (const Vec3& seed : seeds) {
+      if (const std::optional<Sym3> s = field->sample(seed))
+        scene.sources.push_back(make_source(seed, *s, spec.mapping, spec.color));
+    }
+    return scene;
+  }
+
+  // Each seed writes only its own slots, and the slots are concatenated in
+  // seed order afterwards, so the result is independent of scheduling.
+  scene.trajectories.resize(seeds.size());
+  std::vector<std::vector<GlyphSource>> per_seed(seeds.size());
+  tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t i) {
+    scene.trajectories[i] = trace_trajectory(*field, seeds[i], spec.trajectory);
+    per_seed[i] = place_sources(*field, scene.trajectories[i], spec.spacing, spec.mapping,
+                                spec.color);
+  });
+  for (const std::vector<GlyphSource>& sources : per_seed)
+    scene.sources.insert(scene.sources.end(), sources.begin(), sources.end());
+  return scene;
+}
+
+}  // namespace hsb

@@ -1,0 +1,62 @@
+#include "field/glyph_sources.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "field/eigensystem.h"
+
+namespace hsb {
+
+GlyphSource make_source(const Vec3& centre, const Sym3& tensor, const GlyphMapping& mapping,
+                        ColorScalar color) {
+  const Eigensystem es = decompose(tensor);
+  GlyphSource source;
+  source.centre = centre;
+  source.axes = es.vectors;
+  source.eigenvalues = es.values;
+  source.radii = map_radii(es.values, mapping);
+  source.scalar = color_scalar(es.values, color);
+  return source;
+}
+
+std::vector<GlyphSource> place_sources(const TensorField& field, const Trajectory& trajectory,
+                                       double spacing, const GlyphMapping& mapping,
+                                       ColorScalar color) {
+  if (!(spacing > 0.0) || !std::isfinite(spacing))
+    throw std::invalid_argument("glyph sources: spacing must be finite and > 0");
+  std::vector<GlyphSource> sources;
+  const std::vector<Vec3>& pts = trajectory.points;
+  if (pts.empty()) return sources;
+
+  // As many sources as fit at `spacing`, the run centred on the curve so
+  // both ends look alike. The epsilon keeps a length that is a whole number
+  // of spacings (up to rounding) from losing its last source.
+  const double total = trajectory.length();
+  const auto count = static_cast<std::size_t>(std::floor(total / spacing + 1e-9)) + 1;
+  const double first = 0.5 * (total - static_cast<double>(count - 1) * spacing);
+  sources.reserve(count);
+
+  // Walk the polyline once: arc-length targets only increase.
+  std::size_t segment = 0;   // current segment is pts[segment] → pts[segment + 1]
+  double segment_start = 0;  // arc length at pts[segment]
+  for (std::size_t i = 0; i < count; ++i) {
+    const double target = first + static_cast<double>(i) * spacing;
+    Vec3 p = pts.back();
+    while (segment + 1 < pts.size()) {
+      const double seg_len = (pts[segment + 1] - pts[segment]).norm();
+      if (target <= segment_start + seg_len) {
+        const double t = seg_len > 0.0 ? (target - segment_start) / seg_len : 0.0;
+        p = pts[segment] + std::max(0.0, t) * (pts[segment + 1] - pts[segment]);
+        break;
+      }
+      segment_start += seg_len;
+      ++segment;
+    }
+    const std::optional<Sym3> s = field.sample(p);
+    if (s) sources.push_back(make_source(p, *s, mapping, color));
+  }
+  return sources;
+}
+
+}  // namespace hsb
