@@ -29,11 +29,12 @@ Vec3 unclamped_radii(const Vec3& magnitude, const GlyphMapping& mapping) {
 }  // namespace
 
 Vec3 map_radii(const Vec3& eigenvalues, const GlyphMapping& mapping) {
-  // max then min (not std::clamp): a ceiling below the floor must not be UB;
-  // the ceiling wins, as it guards against glyphs larger than the domain.
-  return unclamped_radii(eigenvalues.cwiseAbs(), mapping)
-      .cwiseMax(mapping.floor)
-      .cwiseMin(mapping.ceiling);
+  Vec3 radii = unclamped_radii(eigenvalues.cwiseAbs(), mapping);
+  // Uniform scaling keeps the ratios of the radii, which carry the tensor's
+  // shape; clamping each radius alone would turn large glyphs into spheres.
+  const double largest = radii.maxCoeff();
+  if (largest > mapping.ceiling) radii *= mapping.ceiling / largest;
+  return radii.cwiseMax(mapping.floor);
 }
 
 double color_scalar(const Vec3& eigenvalues, ColorScalar which) {

@@ -17,9 +17,10 @@ enum class RadiusMapping {
 struct GlyphMapping {
   RadiusMapping mapping = RadiusMapping::linear;
   double scale = 1.0;
-  // Radii are clamped to [floor, ceiling] so no glyph is flat and the
-  // singular neighbourhood of a load cannot produce a glyph larger than the
-  // domain.
+  // A glyph whose largest radius exceeds `ceiling` is scaled down as a whole,
+  // so it keeps its shape (a point load's singular neighbourhood would
+  // otherwise give glyphs larger than the domain). Then each radius is
+  // raised to at least `floor`, so no glyph is flat.
   double floor = 1e-3;
   double ceiling = std::numeric_limits<double>::infinity();
 };

@@ -1,0 +1,150 @@
+#include "renderer/app/render_job.h"
+
+#include <OpenImageIO/hash.h>
+
+#include <chrono>
+#include <filesystem>
+#include <sstream>
+
+#include "renderer/image/color_management.h"
+#include "renderer/image/colorbar.h"
+#include "renderer/image/colormap.h"
+#include "renderer/image/image_output.h"
+#include "renderer/render/ray_scene.h"
+#include "renderer/render/render_image.h"
+#include "renderer/scene/scene_spec.h"
+
+#ifndef HSB_VERSION
+#define HSB_VERSION "unknown"
+#endif
+
+namespace hsb {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// ASCII only: OIIO 2.4's render_text decodes two-byte UTF-8 wrongly (λ comes
+// out as ';'), so Greek letters cannot be drawn.
+const char* scalar_title(ColorScalar scalar) {
+  switch (scalar) {
+    case ColorScalar::lambda1: return "major eigenvalue";
+    case ColorScalar::lambda2: return "medium eigenvalue";
+    case ColorScalar::lambda3: return "minor eigenvalue";
+    case ColorScalar::mean: return "mean eigenvalue";
+    case ColorScalar::von_mises: return "von Mises";
+  }
+  return "";
+}
+
+ColorScale color_scale(const ColorSpec& spec, const std::vector<GlyphSource>& sources) {
+  const Colormap& map = colormap_named(spec.map);
+  if (spec.range) return {&map, (*spec.range)[0], (*spec.range)[1]};
+  std::vector<double> values;
+  values.reserve(sources.size());
+  for (const GlyphSource& s : sources) values.push_back(s.scalar);
+  return auto_scale(map, values);
+}
+
+std::string sha1_hex(const std::string& text) {
+  OIIO::SHA1 hash(text.data(), text.size());
+  return hash.digest();
+}
+
+std::map<std::string, std::string> image_metadata(const SceneSpec& spec, const RenderJob& job,
+                                                  const ColorScale& scale,
+                                                  const ColorManagement& color,
+                                                  std::size_t sources) {
+  std::ostringstream description;
+  description << "Hyperstreamball render of " << std::filesystem::path(spec.path).filename().string()
+              << ": " << sources << " sources, kernel " << kernel_name(spec.surface.kernel)
+              << ", R " << spec.surface.influence_radius << ", C " << spec.surface.isovalue
+              << ", colour " << scale.map->name << " [" << scale.lo << ", " << scale.hi << "]";
+  return {
+      {"Software", std::string("Hyperstreamball ") + HSB_VERSION},
+      {"ImageDescription", description.str()},
+      {"hsb:scene", spec.path},
+      {"hsb:scene_sha1", sha1_hex(scene_fingerprint_text(job.scene_path, job.overrides))},
+      {"hsb:sources", std::to_string(sources)},
+      {"hsb:kernel", kernel_name(spec.surface.kernel)},
+      {"hsb:color_range", std::to_string(scale.lo) + " " + std::to_string(scale.hi)},
+      {"hsb:ocio", color.config_name() + " / " + color.display() + " / " + color.view()},
+  };
+}
+
+}  // namespace
+
+RenderSummary run_render_job(const RenderJob& job) {
+  const auto start = Clock::now();
+  const SceneSpec spec = load_scene(job.scene_path, job.overrides);
+  const ColorManagement color(spec.output.display, spec.output.view);
+
+  // Field side: data set → trajectories → sources.
+  const GlyphScene glyphs = build_glyph_scene(spec.pipeline);
+  const ColorScale scale = color_scale(spec.color, glyphs.sources);
+  std::vector<std::array<float, 3>> colors;
+  colors.reserve(glyphs.sources.size());
+  for (const GlyphSource& s : glyphs.sources) colors.push_back(color.to_scene_linear(scale.srgb(s.scalar)));
+  const BlobField field =
+      make_blob_field(glyphs.sources, colors, spec.surface.influence_radius, spec.surface.kernel,
+                      spec.surface.blend, spec.surface.isovalue);
+
+  // Renderer side: Embree scene → film.
+  ShadingSpec shading = spec.shading;
+  shading.background = color.to_scene_linear(shading.background);
+  shading.box_color = color.to_scene_linear(shading.box_color);
+  const double diagonal = glyphs.domain.diagonal();
+  const TraceSettings trace{spec.min_step * diagonal, spec.max_steps};
+  static const EmbreeDevice device;
+  const RayScene scene(device, field, glyphs.domain, shading, trace);
+  const double build_seconds = seconds_since(start);
+  RenderOutput rendered = render_image(scene, glyphs.domain, spec.camera, shading, spec.render);
+
+  // Image: display transform (or scene-linear EXR), colour bar, metadata.
+  const std::filesystem::path image_path = std::filesystem::path(job.output_dir) / spec.output.file;
+  std::filesystem::create_directories(image_path.parent_path());
+  Film& film = rendered.film;
+  ImageToWrite image;
+  image.width = film.width;
+  image.height = film.height;
+  image.bit_depth = spec.output.bit_depth;
+  image.metadata = image_metadata(spec, job, scale, color, field.sources.size());
+  if (is_scene_linear_format(image_path.string())) {
+    // EXR keeps scene-linear data, with the camera distance as a Z channel.
+    image.channels = 5;
+    image.channel_names = {"R", "G", "B", "A", "Z"};
+    image.pixels.resize(std::size_t(film.width) * film.height * 5);
+    for (std::size_t i = 0; i < std::size_t(film.width) * film.height; ++i) {
+      for (int c = 0; c < 4; ++c) image.pixels[i * 5 + c] = film.rgba[i * 4 + c];
+      image.pixels[i * 5 + 4] = film.depth[i];
+    }
+  } else {
+    color.apply_display(film.rgba, film.width, film.height);
+    // Display images are opaque: the background is part of the picture.
+    for (std::size_t i = 3; i < film.rgba.size(); i += 4) film.rgba[i] = 1.0f;
+    if (spec.output.colorbar && !field.sources.empty()) {
+      const std::string title = spec.output.colorbar_title.empty() ? scalar_title(spec.pipeline.color)
+                                                                   : spec.output.colorbar_title;
+      draw_colorbar(film.rgba, film.width, film.height, scale, {title}, color);
+    }
+    image.pixels = std::move(film.rgba);
+  }
+  write_image(image, image_path.string());
+
+  RenderSummary summary;
+  summary.image_path = image_path.string();
+  summary.trajectories = glyphs.trajectories.size();
+  summary.sources = field.sources.size();
+  summary.build_seconds = build_seconds;
+  summary.render_seconds = rendered.seconds;
+  summary.total_seconds = seconds_since(start);
+  summary.primary_rays = rendered.primary_rays;
+  summary.shadow_rays = rendered.shadow_rays;
+  summary.stats = rendered.stats;
+  return summary;
+}
+
+}  // namespace hsb

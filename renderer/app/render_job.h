@@ -1,0 +1,33 @@
+#pragma once
+// One scene file rendered to one image: the whole data flow of design §4.
+
+#include <string>
+#include <vector>
+
+#include "renderer/surface/trace_stats.h"
+
+namespace hsb {
+
+struct RenderJob {
+  std::string scene_path;
+  std::vector<std::string> overrides;  // --set key=value
+  std::string output_dir = "out";
+};
+
+struct RenderSummary {
+  std::string image_path;
+  std::size_t trajectories = 0;
+  std::size_t sources = 0;
+  double build_seconds = 0.0;   // data set, trajectories, sources, BVH
+  double render_seconds = 0.0;  // rays and shading
+  double total_seconds = 0.0;   // including colour management and writing
+  std::uint64_t primary_rays = 0, shadow_rays = 0;
+  TraceStats stats;
+};
+
+// Renders `job` and writes the image. Throws SceneError for bad scene input
+// and std::runtime_error for anything else that prevents a complete image;
+// no partial image is ever left behind.
+RenderSummary run_render_job(const RenderJob& job);
+
+}  // namespace hsb

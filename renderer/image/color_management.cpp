@@ -1,0 +1,58 @@
+#include "renderer/image/color_management.h"
+
+#include <cstdlib>
+#include <sstream>
+
+namespace OCIO = OCIO_NAMESPACE;
+
+namespace hsb {
+namespace {
+
+OCIO::ConstConfigRcPtr load_config() {
+  const char* env = std::getenv("OCIO");
+  if (env && *env) return OCIO::Config::CreateFromEnv();
+  std::istringstream text(builtin_ocio_config());
+  return OCIO::Config::CreateFromStream(text);
+}
+
+}  // namespace
+
+ColorManagement::ColorManagement(const std::string& display, const std::string& view)
+    : config_(load_config()) {
+  display_ = display.empty() ? config_->getDefaultDisplay() : display;
+  view_ = view.empty() ? config_->getDefaultView(display_.c_str()) : view;
+
+  to_linear_ = config_->getProcessor(OCIO::ROLE_COLOR_PICKING, OCIO::ROLE_SCENE_LINEAR)
+                   ->getDefaultCPUProcessor();
+  to_picking_ = config_->getProcessor(OCIO::ROLE_SCENE_LINEAR, OCIO::ROLE_COLOR_PICKING)
+                    ->getDefaultCPUProcessor();
+  OCIO::DisplayViewTransformRcPtr transform = OCIO::DisplayViewTransform::Create();
+  transform->setSrc(OCIO::ROLE_SCENE_LINEAR);
+  transform->setDisplay(display_.c_str());
+  transform->setView(view_.c_str());
+  to_display_ = config_->getProcessor(transform)->getDefaultCPUProcessor();
+}
+
+Rgb ColorManagement::to_scene_linear(const Rgb& picked) const {
+  Rgb out = picked;
+  to_linear_->applyRGB(out.data());
+  return out;
+}
+
+Rgb ColorManagement::to_picking(const Rgb& linear) const {
+  Rgb out = linear;
+  to_picking_->applyRGB(out.data());
+  return out;
+}
+
+void ColorManagement::apply_display(std::vector<float>& rgba, int width, int height) const {
+  OCIO::PackedImageDesc image(rgba.data(), width, height, 4);
+  to_display_->apply(image);
+}
+
+std::string ColorManagement::config_name() const {
+  const char* env = std::getenv("OCIO");
+  return env && *env ? std::string(env) : std::string("built-in hyperstreamball");
+}
+
+}  // namespace hsb

@@ -1,0 +1,44 @@
+#pragma once
+// Colour management through OpenColorIO: the renderer's scene-linear working
+// space, colours authored in display sRGB (colormaps, background), and the
+// display/view transform applied to every displayable image.
+
+#include <OpenColorIO/OpenColorIO.h>
+
+#include <string>
+#include <vector>
+
+#include "renderer/render/shading.h"
+
+namespace hsb {
+
+class ColorManagement {
+ public:
+  // Uses $OCIO when it is set, else the config compiled into the program
+  // (renderer/image/hyperstreamball.ocio). Empty display/view select the
+  // config's defaults. Throws with OCIO's message on a bad config or name.
+  ColorManagement(const std::string& display, const std::string& view);
+
+  // A colour picked in display terms (role color_picking) in scene-linear.
+  Rgb to_scene_linear(const Rgb& picked) const;
+  // The inverse: scene-linear to the picking space (for overlays drawn in
+  // display terms on a display-referred image).
+  Rgb to_picking(const Rgb& linear) const;
+
+  // Scene-linear RGBA pixels to display-referred, in place.
+  void apply_display(std::vector<float>& rgba, int width, int height) const;
+
+  const std::string& display() const { return display_; }
+  const std::string& view() const { return view_; }
+  std::string config_name() const;
+
+ private:
+  OCIO_NAMESPACE::ConstConfigRcPtr config_;
+  std::string display_, view_;
+  OCIO_NAMESPACE::ConstCPUProcessorRcPtr to_linear_, to_picking_, to_display_;
+};
+
+// The built-in config's text (for tests and for `hsb --print-ocio-config`).
+const char* builtin_ocio_config();
+
+}  // namespace hsb

@@ -1,0 +1,28 @@
+#pragma once
+// Writing finished images through OpenImageIO.
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace hsb {
+
+struct ImageToWrite {
+  int width = 0, height = 0;
+  int channels = 4;
+  std::vector<std::string> channel_names;  // empty: OIIO's defaults (R, G, B, A)
+  std::vector<float> pixels;               // width*height*channels, top row first
+  int bit_depth = 8;                       // 8 or 16 for PNG/TIFF; ignored for EXR (float)
+  std::map<std::string, std::string> metadata;
+};
+
+// Writes `image` to `path`, the format chosen by the extension (.png, .tif,
+// .tiff, .exr). The file appears complete or not at all: it is written under
+// a temporary name in the same folder and renamed into place. Throws
+// std::runtime_error with OIIO's message on failure.
+void write_image(const ImageToWrite& image, const std::string& path);
+
+// True for extensions whose images hold scene-linear data (EXR).
+bool is_scene_linear_format(const std::string& path);
+
+}  // namespace hsb

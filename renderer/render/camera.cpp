@@ -1,0 +1,27 @@
+#include "renderer/render/camera.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace hsb {
+
+Camera::Camera(const CameraSpec& spec, int width, int height)
+    : origin_(spec.position), width_(width), height_(height) {
+  forward_ = spec.look_at - spec.position;
+  if (forward_.norm() == 0.0) throw std::invalid_argument("camera position equals look_at");
+  forward_.normalize();
+  right_ = forward_.cross(spec.up);
+  if (right_.norm() < 1e-12) throw std::invalid_argument("camera up is parallel to the view direction");
+  right_.normalize();
+  down_ = forward_.cross(right_);  // image y grows downwards
+  half_height_ = std::tan(0.5 * spec.fov_degrees * M_PI / 180.0);
+  half_width_ = half_height_ * double(width) / double(height);
+}
+
+Vec3 Camera::direction(double x, double y) const {
+  const double sx = (2.0 * x / width_ - 1.0) * half_width_;
+  const double sy = (2.0 * y / height_ - 1.0) * half_height_;
+  return (forward_ + sx * right_ + sy * down_).normalized();
+}
+
+}  // namespace hsb

@@ -1,0 +1,75 @@
+#include "renderer/render/ray_scene.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace hsb {
+namespace {
+
+void report_embree_error(void*, RTCError code, const char* message) {
+  // Errors are also collected with rtcGetDeviceError where they matter;
+  // printing here gives the message text that the code alone lacks.
+  std::fprintf(stderr, "hsb: Embree error %d: %s\n", int(code), message ? message : "");
+}
+
+// The twelve edges of a box as round linear curves of constant radius.
+RTCGeometry make_box_edges(RTCDevice device, const Box3& box, double radius) {
+  RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_ROUND_LINEAR_CURVE);
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), 24));
+  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, sizeof(unsigned), 12));
+  auto corner = [&](int i) {
+    return Vec3(i & 1 ? box.hi.x() : box.lo.x(), i & 2 ? box.hi.y() : box.lo.y(),
+                i & 4 ? box.hi.z() : box.lo.z());
+  };
+  int edge = 0;
+  for (int a = 0; a < 8; ++a) {
+    for (int bit = 1; bit < 8; bit <<= 1) {
+      if (a & bit) continue;  // each edge once, from its lower corner
+      const Vec3 ends[2] = {corner(a), corner(a | bit)};
+      for (int e = 0; e < 2; ++e) {
+        float* v = vertices + 4 * (2 * edge + e);
+        v[0] = float(ends[e].x());
+        v[1] = float(ends[e].y());
+        v[2] = float(ends[e].z());
+        v[3] = float(radius);
+      }
+      indices[edge] = unsigned(2 * edge);
+      ++edge;
+    }
+  }
+  rtcCommitGeometry(geometry);
+  return geometry;
+}
+
+}  // namespace
+
+EmbreeDevice::EmbreeDevice() : device_(rtcNewDevice(nullptr)) {
+  if (!device_) throw std::runtime_error("cannot create an Embree device");
+  rtcSetDeviceErrorFunction(device_, report_embree_error, nullptr);
+}
+
+EmbreeDevice::~EmbreeDevice() { rtcReleaseDevice(device_); }
+
+RayScene::RayScene(const EmbreeDevice& device, const BlobField& field, const Box3& domain,
+                   const ShadingSpec& shading, const TraceSettings& settings) {
+  scene_ = rtcNewScene(device.get());
+  blobs_ = std::make_unique<BlobGeometry>(device.get(), field, settings);
+  if (!field.sources.empty()) field_id_ = blobs_->attach_to(scene_);
+  if (shading.box) {
+    const double radius = shading.box_radius > 0.0 ? shading.box_radius : domain.diagonal() / 500.0;
+    RTCGeometry edges = make_box_edges(device.get(), domain, radius);
+    box_id_ = rtcAttachGeometry(scene_, edges);
+    rtcReleaseGeometry(edges);
+  }
+  rtcCommitScene(scene_);
+  if (rtcGetDeviceError(device.get()) != RTC_ERROR_NONE)
+    throw std::runtime_error("Embree failed to build the scene");
+}
+
+RayScene::~RayScene() {
+  if (scene_) rtcReleaseScene(scene_);
+}
+
+}  // namespace hsb

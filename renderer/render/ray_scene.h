@@ -1,0 +1,49 @@
+#pragma once
+// The top-level Embree scene: the blob field plus context geometry.
+
+#include <embree3/rtcore.h>
+
+#include <memory>
+
+#include "field/box3.h"
+#include "renderer/render/shading.h"
+#include "renderer/surface/blob_geometry.h"
+
+namespace hsb {
+
+// Owns an Embree device; one per process is enough, scenes share it.
+class EmbreeDevice {
+ public:
+  EmbreeDevice();
+  ~EmbreeDevice();
+  EmbreeDevice(const EmbreeDevice&) = delete;
+  EmbreeDevice& operator=(const EmbreeDevice&) = delete;
+  RTCDevice get() const { return device_; }
+
+ private:
+  RTCDevice device_;
+};
+
+class RayScene {
+ public:
+  // `field` must outlive the scene. The domain box edges are added as thin
+  // round curves when `shading.box` is set.
+  RayScene(const EmbreeDevice& device, const BlobField& field, const Box3& domain,
+           const ShadingSpec& shading, const TraceSettings& settings);
+  ~RayScene();
+  RayScene(const RayScene&) = delete;
+  RayScene& operator=(const RayScene&) = delete;
+
+  RTCScene get() const { return scene_; }
+  unsigned field_id() const { return field_id_; }
+  unsigned box_id() const { return box_id_; }
+  const BlobGeometry& blobs() const { return *blobs_; }
+
+ private:
+  RTCScene scene_ = nullptr;
+  std::unique_ptr<BlobGeometry> blobs_;
+  unsigned field_id_ = RTC_INVALID_GEOMETRY_ID;
+  unsigned box_id_ = RTC_INVALID_GEOMETRY_ID;
+};
+
+}  // namespace hsb

@@ -1,0 +1,31 @@
+#pragma once
+// Lights and surface response. Colours here are scene-linear RGB.
+
+#include <array>
+
+#include "field/sym3.h"
+
+namespace hsb {
+
+using Rgb = std::array<float, 3>;
+
+struct ShadingSpec {
+  Vec3 light_from{1.0, -1.5, 2.5};  // direction from the scene towards the key light
+  Rgb light_color{1, 1, 1};
+  double light_intensity = 1.0;
+  bool shadows = true;
+  double ambient = 0.3;    // uniform ambient light, times the surface colour
+  double specular = 0.2;   // Blinn–Phong highlight strength
+  double shininess = 40.0;
+  Rgb background{1, 1, 1};
+  bool box = true;         // draw the domain's edges
+  Rgb box_color{0.05f, 0.05f, 0.05f};
+  double box_radius = 0.0;  // 0: 1/500 of the domain's diagonal
+};
+
+// Light leaving a glyph surface point towards the viewer.
+// `to_light` is unit; `visibility` is 0 in shadow, 1 lit.
+Rgb shade_surface(const ShadingSpec& spec, const Rgb& albedo, const Vec3& normal,
+                  const Vec3& to_viewer, const Vec3& to_light, double visibility);
+
+}  // namespace hsb

@@ -1,0 +1,78 @@
+#include "renderer/surface/blob_field.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace hsb {
+
+BlobSource make_blob_source(const Vec3& centre, const Mat3& axes, const Vec3& radii,
+                            double influence_radius, const std::array<float, 3>& color) {
+  BlobSource s{};
+  for (int k = 0; k < 3; ++k) {
+    const double inv = 1.0 / (influence_radius * radii[k]);
+    for (int j = 0; j < 3; ++j) s.w[3 * k + j] = static_cast<float>(axes(j, k) * inv);
+    s.centre[k] = static_cast<float>(centre[k]);
+  }
+  s.color = color;
+  return s;
+}
+
+BlobField make_blob_field(const std::vector<GlyphSource>& glyphs,
+                          const std::vector<std::array<float, 3>>& colors,
+                          double influence_radius, KernelKind kernel, Blend blend,
+                          double isovalue) {
+  if (colors.size() != glyphs.size())
+    throw std::invalid_argument("make_blob_field: one colour per glyph is required");
+  BlobField field;
+  field.kernel = kernel;
+  field.blend = blend;
+  field.isovalue = isovalue;
+  field.sources.reserve(glyphs.size());
+  for (std::size_t i = 0; i < glyphs.size(); ++i)
+    field.sources.push_back(make_blob_source(glyphs[i].centre, glyphs[i].axes, glyphs[i].radii,
+                                             influence_radius, colors[i]));
+  return field;
+}
+
+Box3 influence_bounds(const BlobSource& s) {
+  // The ellipsoid's semi-axis k is row k of W divided by its squared length
+  // (W's rows are orthogonal), so the half-extent along world axis j is the
+  // length of the j-th components of those semi-axis vectors.
+  Vec3 half = Vec3::Zero();
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 row(s.w[3 * k], s.w[3 * k + 1], s.w[3 * k + 2]);
+    const Vec3 semi_axis = row / row.squaredNorm();
+    half += semi_axis.cwiseAbs2();
+  }
+  half = half.cwiseSqrt();
+  const Vec3 c(s.centre[0], s.centre[1], s.centre[2]);
+  return {c - half, c + half};
+}
+
+Box3 influence_bounds(const BlobField& field) {
+  if (field.sources.empty()) return {};
+  Box3 all = influence_bounds(field.sources.front());
+  for (const BlobSource& s : field.sources) {
+    const Box3 b = influence_bounds(s);
+    all.lo = all.lo.cwiseMin(b.lo);
+    all.hi = all.hi.cwiseMax(b.hi);
+  }
+  return all;
+}
+
+double field_value(const BlobField& field, const Vec3& x) {
+  double f = 0.0;
+  for (const BlobSource& s : field.sources) {
+    double g = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      double row = 0.0;
+      for (int j = 0; j < 3; ++j) row += double(s.w[3 * k + j]) * (x[j] - double(s.centre[j]));
+      g += row * row;
+    }
+    const double k = kernel_value(field.kernel, g);
+    f = field.blend == Blend::sum ? f + k : std::max(f, k);
+  }
+  return f;
+}
+
+}  // namespace hsb

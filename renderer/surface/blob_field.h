@@ -1,0 +1,56 @@
+#pragma once
+// The renderer's view of the sources: a blended implicit field
+// F(x) = Σ K(g_i(x))  (or max K) whose level set F = C is the surface.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "field/box3.h"
+#include "field/glyph_sources.h"
+#include "renderer/surface/kernel.h"
+
+namespace hsb {
+
+enum class Blend { sum, max };
+
+// One anisotropic metaball (paper eq. 11). The shape is stored as the matrix
+// W = diag(1/(R r_k)) Vᵀ, so that g(x) = |W (x − c)|² = (x − c)ᵀ M (x − c)
+// with M = WᵀW. Each row of W is a scaled unit vector, so single precision
+// keeps every axis accurate however thin the glyph; storing M itself would
+// lose the long axes of needles (M's condition number is the square of the
+// glyph's aspect ratio).
+struct BlobSource {
+  std::array<float, 9> w;       // rows of W
+  std::array<float, 3> centre;
+  std::array<float, 3> color;   // scene-linear RGB
+};
+
+struct BlobField {
+  std::vector<BlobSource> sources;
+  KernelKind kernel = KernelKind::wyvill;
+  Blend blend = Blend::sum;
+  double isovalue = 0.5;
+};
+
+// Sources from the field library's glyphs with the fixed influence radius R
+// (paper §4.2) and one scene-linear colour per glyph.
+BlobField make_blob_field(const std::vector<GlyphSource>& glyphs,
+                          const std::vector<std::array<float, 3>>& colors,
+                          double influence_radius, KernelKind kernel, Blend blend,
+                          double isovalue);
+
+BlobSource make_blob_source(const Vec3& centre, const Mat3& axes, const Vec3& radii,
+                            double influence_radius, const std::array<float, 3>& color);
+
+// The axis-aligned box of the influence ellipsoid g ≤ 1.
+Box3 influence_bounds(const BlobSource& s);
+
+// Union of all sources' influence bounds.
+Box3 influence_bounds(const BlobField& field);
+
+// F(x) and the influence-weighted colour at a point, straight from the
+// definition (tests and shading of a single point; rays use ray_spans.h).
+double field_value(const BlobField& field, const Vec3& x);
+
+}  // namespace hsb

@@ -1,0 +1,164 @@
+#include "renderer/surface/sphere_tracer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hsb {
+
+double SphereTracer::value_at(const BlobField& field, double t, TraceStats& stats) const {
+  ++stats.field_evaluations;
+  stats.kernel_evaluations += active_.size();
+  double f = 0.0;
+  if (field.blend == Blend::sum) {
+    for (std::uint32_t i : active_) f += kernel_value(field.kernel, spans[i].g(t));
+  } else {
+    for (std::uint32_t i : active_) f = std::max(f, kernel_value(field.kernel, spans[i].g(t)));
+  }
+  return f;
+}
+
+// An upper bound on dF/dt from t to the end of the current segment. Only a
+// source the ray is still approaching (t < t_c) can raise F, and on its
+// support |d K(u(t))/dt| ≤ √a · max|dK/du| because u = √g changes at rate at
+// most √a. Past t_c a source only falls, whichever segment we are in, so
+// dropping it keeps the bound valid for the rest of the ray: it is one-sided,
+// which is all that stepping towards F = C from below needs.
+double SphereTracer::slope_bound_at(const BlobField& field, double t) const {
+  double rate = 0.0;
+  for (std::uint32_t i : active_) {
+    const RaySpan& s = spans[i];
+    if (t >= s.t_c) continue;
+    rate = field.blend == Blend::sum ? rate + std::sqrt(s.a) : std::max(rate, std::sqrt(s.a));
+  }
+  return rate * kernel_max_du_slope(field.kernel);
+}
+
+// Illinois (modified regula falsi) on a bracket F(lo) < C ≤ F(hi): superlinear
+// like the secant method, yet it never leaves the bracket.
+double SphereTracer::refine(const BlobField& field, double lo, double hi, double f_lo,
+                            double f_hi, TraceStats& stats) const {
+  const double c = field.isovalue;
+  double r_lo = f_lo - c, r_hi = f_hi - c;
+  int side = 0;
+  for (int i = 0; i < 100 && hi - lo > 1e-14 * (std::fabs(lo) + std::fabs(hi) + 1e-300); ++i) {
+    const double t = (lo * r_hi - hi * r_lo) / (r_hi - r_lo);
+    const double r = value_at(field, t, stats) - c;
+    if (r >= 0.0) {
+      hi = t;
+      r_hi = r;
+      if (side == 1) r_lo *= 0.5;
+      side = 1;
+    } else {
+      lo = t;
+      r_lo = r;
+      if (side == -1) r_hi *= 0.5;
+      side = -1;
+    }
+  }
+  return hi;
+}
+
+double SphereTracer::first_crossing(const BlobField& field, double tmin, double tmax,
+                                    const TraceSettings& settings, TraceStats& stats) {
+  ++stats.field_rays;
+  stats.spans += spans.size();
+  std::sort(spans.begin(), spans.end(),
+            [](const RaySpan& x, const RaySpan& y) { return x.t0 < y.t0; });
+  active_.clear();
+
+  const double c = field.isovalue;
+  const std::size_t n = spans.size();
+  std::size_t next = 0;  // first span not yet activated
+  double t = tmin;
+  double t_prev = tmin, f_prev = 0.0;
+  bool have_prev = false;
+
+  for (int step = 0; step < settings.max_steps; ++step) {
+    if (active_.empty()) {
+      if (next == n) return -1.0;  // no support left: F = 0 < C for the rest
+      if (spans[next].t0 > t) {
+        // F is zero in the gap, so nothing can be crossed there.
+        t = spans[next].t0;
+        t_prev = t;
+        f_prev = 0.0;
+        have_prev = true;
+      }
+    }
+    while (next < n && spans[next].t0 <= t) active_.push_back(static_cast<std::uint32_t>(next++));
+
+    const double f = value_at(field, t, stats);
+    if (f >= c) {
+      if (!have_prev) return t;  // the ray starts inside the surface
+      return refine(field, t_prev, t, f_prev, f, stats);
+    }
+    if (t >= tmax) return -1.0;
+
+    // Sources whose support ends here contribute K(1) = 0 from now on.
+    active_.erase(std::remove_if(active_.begin(), active_.end(),
+                                 [&](std::uint32_t i) { return spans[i].t1 <= t; }),
+                  active_.end());
+
+    // The bound holds until the active set grows (the next span starts);
+    // spans that end only make F smaller, but their ends are cheap to
+    // respect and keep each segment's set exact.
+    double segment_end = tmax;
+    if (next < n) segment_end = std::min(segment_end, spans[next].t0);
+    for (std::uint32_t i : active_) segment_end = std::min(segment_end, spans[i].t1);
+
+    const double rate = slope_bound_at(field, t);
+    double dt = rate > 0.0 ? (c - f) / rate : std::numeric_limits<double>::infinity();
+    dt = std::max(dt, settings.min_step);
+
+    t_prev = t;
+    f_prev = f;
+    have_prev = true;
+    t = std::min(t + dt, segment_end);
+  }
+  ++stats.step_limit_hits;
+  return -1.0;
+}
+
+SurfaceSample SphereTracer::surface_at(const BlobField& field, const Vec3& origin,
+                                       const Vec3& direction, double t) const {
+  const Vec3 x = origin + t * direction;
+  Vec3 gradient = Vec3::Zero();
+  double weight = 0.0, best = -1.0;
+  Vec3 color = Vec3::Zero();
+  for (const RaySpan& span : spans) {
+    const BlobSource& s = field.sources[span.source];
+    // W(x − c) and ∇g = 2 Wᵀ W (x − c).
+    Vec3 q;
+    Eigen::Matrix3d w;
+    for (int k = 0; k < 3; ++k) {
+      for (int j = 0; j < 3; ++j) w(k, j) = s.w[3 * k + j];
+    }
+    q = w * (x - Vec3(s.centre[0], s.centre[1], s.centre[2]));
+    const double g = q.squaredNorm();
+    const double k = kernel_value(field.kernel, g);
+    if (k <= 0.0) continue;
+    const Vec3 grad_g = 2.0 * (w.transpose() * q);
+    const Vec3 source_color(s.color[0], s.color[1], s.color[2]);
+    if (field.blend == Blend::sum) {
+      gradient += kernel_slope(field.kernel, g) * grad_g;
+      color += k * source_color;
+      weight += k;
+    } else if (k > best) {
+      // max blend: the surface is the union, so the winning source alone
+      // defines both normal and colour.
+      best = k;
+      gradient = kernel_slope(field.kernel, g) * grad_g;
+      color = source_color;
+      weight = 1.0;
+    }
+  }
+  SurfaceSample sample;
+  const double len = gradient.norm();
+  // dK/dg < 0, so ∇F points inwards; the outward normal is −∇F/|∇F|.
+  if (len > 0.0) sample.normal = -gradient / len;
+  if (weight > 0.0) color /= weight;
+  sample.color = {float(color[0]), float(color[1]), float(color[2])};
+  return sample;
+}
+
+}  // namespace hsb

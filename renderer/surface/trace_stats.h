@@ -1,0 +1,25 @@
+#pragma once
+// Counters that explain where render time goes (hsb render --stats).
+
+#include <cstdint>
+
+namespace hsb {
+
+struct TraceStats {
+  std::uint64_t field_rays = 0;       // rays that queried the blob field
+  std::uint64_t spans = 0;            // source supports those rays crossed
+  std::uint64_t field_evaluations = 0;  // F(t) evaluations (steps + refinement)
+  std::uint64_t kernel_evaluations = 0; // single-source K evaluations inside them
+  std::uint64_t step_limit_hits = 0;    // rays that gave up (counted as misses)
+
+  TraceStats& operator+=(const TraceStats& o) {
+    field_rays += o.field_rays;
+    spans += o.spans;
+    field_evaluations += o.field_evaluations;
+    kernel_evaluations += o.kernel_evaluations;
+    step_limit_hits += o.step_limit_hits;
+    return *this;
+  }
+};
+
+}  // namespace hsb

@@ -1,0 +1,81 @@
+// Colour: the built-in OCIO config, the transforms, colormaps and ranges.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "renderer/image/color_management.h"
+#include "renderer/image/colormap.h"
+
+namespace hsb {
+namespace {
+
+double srgb_to_linear(double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); }
+
+class Color : public ::testing::Test {
+ protected:
+  void SetUp() override { unsetenv("OCIO"); }
+};
+
+TEST_F(Color, BuiltinConfigValidates) {
+  std::istringstream text(builtin_ocio_config());
+  const auto config = OCIO_NAMESPACE::Config::CreateFromStream(text);
+  EXPECT_NO_THROW(config->validate());
+  EXPECT_STREQ(config->getDefaultDisplay(), "sRGB");
+}
+
+TEST_F(Color, PickedSrgbBecomesLinearByTheSrgbCurve) {
+  const ColorManagement color("", "");
+  for (float v : {0.0f, 0.02f, 0.2f, 0.5f, 0.8f, 1.0f}) {
+    const Rgb lin = color.to_scene_linear({v, v, v});
+    EXPECT_NEAR(lin[0], srgb_to_linear(v), 2e-4) << v;
+    const Rgb back = color.to_picking(lin);
+    EXPECT_NEAR(back[1], v, 2e-4);
+  }
+}
+
+TEST_F(Color, DisplayTransformEncodesSceneLinearAsSrgb) {
+  const ColorManagement color("", "");
+  EXPECT_EQ(color.display(), "sRGB");
+  EXPECT_EQ(color.view(), "Standard");
+  std::vector<float> px{0.214f, 0.5f, 1.0f, 0.7f};
+  color.apply_display(px, 1, 1);
+  EXPECT_NEAR(px[0], 0.5, 2e-3);
+  EXPECT_NEAR(px[1], 0.7354, 2e-3);
+  EXPECT_NEAR(px[2], 1.0, 2e-4);
+  EXPECT_FLOAT_EQ(px[3], 0.7f);  // alpha untouched
+}
+
+TEST_F(Color, UnknownViewIsAnError) { EXPECT_ANY_THROW(ColorManagement("sRGB", "NoSuchView")); }
+
+TEST_F(Color, ColormapEndsAndInterpolation) {
+  const Colormap& v = colormap_named("viridis");
+  EXPECT_NEAR(v.at(0.0)[0], 68 / 255.0, 1e-6);
+  EXPECT_NEAR(v.at(1.0)[1], 231 / 255.0, 1e-6);
+  EXPECT_EQ(v.at(-3.0), v.at(0.0));
+  EXPECT_EQ(v.at(7.0), v.at(1.0));
+  EXPECT_EQ(v.at(std::nan("")), v.at(0.0));
+  const Colormap& c = colormap_named("coolwarm");
+  const Rgb mid = c.at(0.5);
+  EXPECT_NEAR(mid[0], mid[2], 1e-6);  // neutral at zero
+  EXPECT_THROW(colormap_named("jet"), std::invalid_argument);
+}
+
+TEST_F(Color, AutoRangeIgnoresSingularOutliersAndCentresDivergingMaps) {
+  std::vector<double> values;
+  for (int i = 0; i < 1000; ++i) values.push_back(-1.0 + i / 1000.0);  // [−1, 0)
+  values.push_back(-1e6);  // a singular point's value
+  const ColorScale seq = auto_scale(colormap_named("viridis"), values);
+  EXPECT_GT(seq.lo, -1.0);
+  EXPECT_LT(seq.lo, -0.9);
+  EXPECT_LT(seq.hi, 0.0);
+  const ColorScale div = auto_scale(colormap_named("coolwarm"), values);
+  EXPECT_DOUBLE_EQ(div.lo, -div.hi);
+  EXPECT_NEAR(div.normalized(0.0), 0.5, 1e-12);
+  const ColorScale flat = auto_scale(colormap_named("viridis"), {2.0, 2.0});
+  EXPECT_LT(flat.lo, flat.hi);
+}
+
+}  // namespace
+}  // namespace hsb

@@ -1,0 +1,170 @@
+// Scene files: defaults, overrides, and one clear error per kind of mistake.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "renderer/scene/scene_spec.h"
+
+namespace hsb {
+namespace {
+
+class SceneFile : public ::testing::Test {
+ protected:
+  std::string write(const std::string& text) {
+    const auto dir = std::filesystem::temp_directory_path() / "hsb_scene_test";
+    std::filesystem::create_directories(dir);
+    path_ = (dir / (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".toml")).string();
+    std::ofstream(path_) << text;
+    return path_;
+  }
+  // The error message load_scene gives, or "" when it succeeds.
+  std::string error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
+    try {
+      load_scene(write(text), overrides);
+    } catch (const SceneError& e) {
+      return e.what();
+    }
+    return "";
+  }
+  std::string path_;
+};
+
+constexpr const char* minimal = "[seeds]\npoints = [[0, 0, 0.5]]\n";
+
+TEST_F(SceneFile, MinimalSceneGetsDocumentedDefaults) {
+  const SceneSpec spec = load_scene(write(minimal));
+  EXPECT_EQ(spec.surface.kernel, KernelKind::wyvill);
+  EXPECT_EQ(spec.surface.blend, Blend::sum);
+  EXPECT_DOUBLE_EQ(spec.surface.isovalue, 0.5);
+  EXPECT_DOUBLE_EQ(spec.surface.influence_radius, 1.0);
+  EXPECT_EQ(spec.pipeline.color, ColorScalar::lambda3);
+  EXPECT_EQ(spec.pipeline.mapping.mapping, RadiusMapping::linear);
+  EXPECT_EQ(spec.render.width, 800);
+  EXPECT_EQ(spec.output.file, "MinimalSceneGetsDocumentedDefaults.png");
+  EXPECT_DOUBLE_EQ(spec.pipeline.spacing, spec.pipeline.data.point_load.bounds.diagonal() / 40.0);
+  EXPECT_EQ(spec.pipeline.seed_points.size(), 1u);
+}
+
+TEST_F(SceneFile, ReadsEverySection) {
+  const SceneSpec spec = load_scene(write(R"(
+[data]
+bounds = [0, 2, 0, 4, -1, 0]
+load = 3
+poisson_ratio = 0.25
+sample_grid = [5, 6, 7]
+[[seeds.grid]]
+corner = [0, 0, -0.5]
+edge_u = [2, 0, 0]
+edge_v = [0, 4, 0]
+n = 7
+m = 7
+[trajectories]
+family = "medium"
+step = 0.005
+[glyphs]
+spacing = 0.02
+mapping = "sqrt"
+ceiling = 0.3
+color_by = "von_mises"
+[surface]
+kernel = "quartic"
+blend = "max"
+[color]
+map = "coolwarm"
+range = [-2, 2]
+[camera]
+fov = 20
+[light]
+from = [0, 0, 1]
+shadows = false
+[render]
+width = 64
+height = 32
+background = "#808080"
+[output]
+file = "x.exr"
+)"));
+  EXPECT_EQ(spec.pipeline.data.point_load.bounds.hi, Vec3(2, 4, 0));
+  EXPECT_EQ(spec.pipeline.data.sample_grid, (std::array<int, 3>{5, 6, 7}));
+  EXPECT_EQ(spec.pipeline.seed_grids.at(0).n, 7);
+  EXPECT_EQ(spec.pipeline.trajectory.family, EigenFamily::medium);
+  EXPECT_EQ(spec.pipeline.mapping.mapping, RadiusMapping::sqrt);
+  EXPECT_EQ(spec.pipeline.color, ColorScalar::von_mises);
+  EXPECT_EQ(spec.surface.kernel, KernelKind::quartic);
+  EXPECT_EQ(spec.surface.blend, Blend::max);
+  EXPECT_EQ(spec.color.range.value()[1], 2.0);
+  EXPECT_FALSE(spec.shading.shadows);
+  EXPECT_NEAR(spec.shading.background[0], 128 / 255.0, 1e-6);
+  EXPECT_EQ(spec.output.file, "x.exr");
+}
+
+TEST_F(SceneFile, OverridesReplaceAndAddKeys) {
+  const SceneSpec spec = load_scene(write(minimal), {"render.width=123", "glyphs.mapping=sqrt",
+                                                     "camera.position=[1, 2, 3]", "output.file=a b.png"});
+  EXPECT_EQ(spec.render.width, 123);
+  EXPECT_EQ(spec.pipeline.mapping.mapping, RadiusMapping::sqrt);
+  EXPECT_EQ(spec.camera.position, Vec3(1, 2, 3));
+  EXPECT_EQ(spec.output.file, "a b.png");
+}
+
+TEST_F(SceneFile, WrongTypeNamesFileLineColumnAndKey) {
+  const std::string e = error_of(std::string(minimal) + "[glyphs]\nspacing = \"wide\"\n");
+  EXPECT_EQ(e, path_ + ":4:11: glyphs.spacing must be a number, got string \"wide\"");
+}
+
+TEST_F(SceneFile, OutOfRangeValue) {
+  const std::string e = error_of(std::string(minimal) + "[glyphs]\n\nspacing = -0.1\n");
+  EXPECT_EQ(e, path_ + ":5:11: glyphs.spacing must be > 0, got -0.1");
+}
+
+TEST_F(SceneFile, UnknownKeyIsAnErrorNotIgnored) {
+  const std::string e = error_of(std::string(minimal) + "[glyphs]\nspaceing = 0.1\n");
+  EXPECT_NE(e.find(path_ + ":4:1: unknown key glyphs.spaceing"), std::string::npos) << e;
+  EXPECT_NE(e.find("spacing"), std::string::npos) << "should list the known keys: " << e;
+  EXPECT_NE(error_of(std::string(minimal) + "[glyph]\nspacing = 0.1\n").find("unknown key glyph"),
+            std::string::npos);
+}
+
+TEST_F(SceneFile, BadChoiceListsTheChoices) {
+  const std::string e = error_of(std::string(minimal) + "[surface]\nkernel = \"gauss\"\n");
+  EXPECT_EQ(e, path_ + ":4:10: surface.kernel must be one of \"wyvill\", \"quartic\", \"blinn\", got string \"gauss\"");
+}
+
+TEST_F(SceneFile, TomlSyntaxErrorHasItsLocation) {
+  const std::string e = error_of("[seeds]\npoints = [[0, 0, 0.5]\n");
+  EXPECT_EQ(e.rfind(path_ + ":", 0), 0u) << e;
+  EXPECT_NE(e.find(":2:"), std::string::npos) << e;
+}
+
+TEST_F(SceneFile, BadOverrideNamesTheOverride) {
+  const std::string e = error_of(minimal, {"render.width=-5"});
+  EXPECT_EQ(e, "--set render.width=-5: render.width must be in [1, 16384], got -5");
+  EXPECT_NE(error_of(minimal, {"render.widht=5"}).find("unknown key render.widht"), std::string::npos);
+  EXPECT_NE(error_of(minimal, {"nonsense"}).find("expected key.path=value"), std::string::npos);
+}
+
+TEST_F(SceneFile, MissingFileAndMissingSeeds) {
+  EXPECT_THROW(load_scene("/nonexistent/scene.toml"), SceneError);
+  EXPECT_NE(error_of("[glyphs]\nspacing = 0.1\n").find("no seeds"), std::string::npos);
+}
+
+TEST_F(SceneFile, CrossKeyChecksAreLocated) {
+  const std::string e = error_of(std::string(minimal) + "[data]\nbounds = [1, 0, 0, 1, 0, 1]\n");
+  EXPECT_EQ(e, path_ + ":4:10: data.bounds must be [xmin, xmax, ymin, ymax, zmin, zmax] with min < max");
+}
+
+TEST(SceneFiles, EveryShippedSceneLoads) {
+  int count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(HSB_SOURCE_DIR) + "/scenes")) {
+    if (entry.path().extension() != ".toml") continue;
+    SCOPED_TRACE(entry.path().string());
+    EXPECT_NO_THROW(load_scene(entry.path().string()));
+    ++count;
+  }
+  EXPECT_GE(count, 5);
+}
+
+}  // namespace
+}  // namespace hsb
