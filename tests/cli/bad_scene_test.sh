@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# hsb render on bad input: one clear file:line:column error, a non-zero exit,
+# no image left behind, and the other scenes of the batch still rendered.
+set -uo pipefail
+hsb=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+
+cat > "$work/bad.toml" <<'TOML'
+[seeds]
+points = [[0, 0, 0.5]]
+[glyphs]
+spacing = "wide"
+TOML
+cat > "$work/good.toml" <<'TOML'
+[seeds]
+points = [[0, 0, 0.5]]
+[render]
+width = 32
+height = 32
+TOML
+
+"$hsb" render "$work/bad.toml" -o "$work/out" 2> "$work/err"
+status=$?
+[[ $status -ne 0 ]] || fail "exit status 0 for a bad scene"
+grep -q "$work/bad.toml:4:11: glyphs.spacing must be a number, got string \"wide\"" "$work/err" \
+  || fail "unexpected message: $(cat "$work/err")"
+[[ $(wc -l < "$work/err") -le 2 ]] || fail "more than one error: $(cat "$work/err")"
+[[ -z $(ls -A "$work/out" 2>/dev/null) ]] || fail "files left behind: $(ls -A "$work/out")"
+
+"$hsb" render "$work/bad.toml" "$work/good.toml" -o "$work/out" > "$work/log" 2> "$work/err"
+[[ $? -ne 0 ]] || fail "exit status 0 when one of two scenes failed"
+[[ -f "$work/out/good.png" ]] || fail "the good scene was not rendered"
+grep -q "good.png  sources=" "$work/log" || fail "no summary line: $(cat "$work/log")"
+
+"$hsb" render "$work/good.toml" -o "$work/out" --set render.width=-1 2> "$work/err"
+[[ $? -ne 0 ]] || fail "exit status 0 for a bad --set"
+grep -q "render.width must be" "$work/err" || fail "unexpected message: $(cat "$work/err")"
+
+"$hsb" render "$work/missing.toml" -o "$work/out" 2> "$work/err"
+[[ $? -ne 0 ]] || fail "exit status 0 for a missing scene"
+echo "PASS"
