@@ -1,5 +1,7 @@
 #include "renderer/render/render_image.h"
 
+#include "renderer/surface/embree_ray.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -29,22 +31,6 @@ double hash_unit(std::uint64_t key) {
   return double(key >> 11) * (1.0 / 9007199254740992.0);
 }
 
-RTCRayHit make_ray(const Vec3& o, const Vec3& d, double tnear, double tfar) {
-  RTCRayHit rh{};
-  rh.ray.org_x = float(o.x());
-  rh.ray.org_y = float(o.y());
-  rh.ray.org_z = float(o.z());
-  rh.ray.dir_x = float(d.x());
-  rh.ray.dir_y = float(d.y());
-  rh.ray.dir_z = float(d.z());
-  rh.ray.tnear = float(tnear);
-  rh.ray.tfar = float(tfar);
-  rh.ray.mask = 0xFFFFFFFFu;
-  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  return rh;
-}
-
 struct Sample {
   Rgb color;
   bool covered;
@@ -55,7 +41,7 @@ Sample trace_sample(const RayScene& scene, const ShadingSpec& shading, const Vec
                     const Vec3& direction, const Vec3& to_light, double shadow_offset,
                     ThreadState& state) {
   FieldRayContext context(state.tracer, state.stats);
-  RTCRayHit rh = make_ray(origin, direction, 0.0, std::numeric_limits<double>::infinity());
+  RTCRayHit rh = make_embree_ray(origin, direction, 0.0f, INFINITY);
   rtcIntersect1(scene.get(), &context.embree, &rh);
   ++state.primary_rays;
 
@@ -69,7 +55,7 @@ Sample trace_sample(const RayScene& scene, const ShadingSpec& shading, const Vec
   double visibility = 1.0;
   if (shading.shadows) {
     const Vec3 start = x + shadow_offset * (n.dot(direction) < 0.0 ? n : Vec3(-n));
-    RTCRayHit shadow = make_ray(start, to_light, 0.0, std::numeric_limits<double>::infinity());
+    RTCRayHit shadow = make_embree_ray(start, to_light, 0.0f, INFINITY);
     FieldRayContext shadow_context(state.tracer, state.stats);
     rtcOccluded1(scene.get(), &shadow_context.embree, &shadow.ray);
     ++state.shadow_rays;

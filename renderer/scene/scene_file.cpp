@@ -102,7 +102,7 @@ void read_glyphs(TableReader& g, GlyphPipelineSpec& spec, double diagonal) {
                         {"constant", RadiusMapping::constant}});
   m.scale = g.number("scale", m.scale, positive);
   m.floor = g.number("floor", m.floor, positive);
-  m.ceiling = g.number("ceiling", m.ceiling, positive);
+  m.ceiling = g.number("ceiling", m.ceiling, positive_or_infinite);
   spec.color = g.choice("color_by", ColorScalar::lambda3,
                         {{"lambda1", ColorScalar::lambda1}, {"lambda2", ColorScalar::lambda2},
                          {"lambda3", ColorScalar::lambda3}, {"mean", ColorScalar::mean},

@@ -62,6 +62,8 @@ double TableReader::number(std::string_view key, double fallback, NumberRange ra
   if (!value || !(node->is_integer() || node->is_floating_point()))
     fail(*node, key, "must be a number, got " + describe(*node));
   const double v = *value;
+  if (!std::isfinite(v) && !(range.allow_infinite && std::isinf(v)))
+    fail(*node, key, "must be a finite number, got " + describe(*node));
   const bool low = range.lo_open ? !(v > range.lo) : !(v >= range.lo);
   if (std::isnan(v) || low || v > range.hi) {
     std::ostringstream text;
@@ -111,6 +113,8 @@ std::vector<double> TableReader::numbers(std::string_view key, std::size_t count
   for (const toml::node& element : *array) {
     if (!(element.is_integer() || element.is_floating_point()))
       fail(element, key, "must be " + expected + ", got an element " + describe(element));
+    if (!std::isfinite(*element.value<double>()))
+      fail(element, key, "must be " + expected + " (finite), got an element " + describe(element));
     out.push_back(*element.value<double>());
   }
   return out;

@@ -25,14 +25,18 @@ std::string source_location(const toml::node& node);
 std::string source_location(const toml::source_region& where);
 
 // Allowed range of a number; lo_open makes the lower bound exclusive.
+// Infinite values (TOML's inf) are refused unless allow_infinite is set;
+// NaN is always refused.
 struct NumberRange {
   double lo = -std::numeric_limits<double>::infinity();
   double hi = std::numeric_limits<double>::infinity();
   bool lo_open = false;
+  bool allow_infinite = false;
 };
 inline constexpr NumberRange any_number{};
 inline constexpr NumberRange positive{0.0, std::numeric_limits<double>::infinity(), true};
 inline constexpr NumberRange non_negative{0.0, std::numeric_limits<double>::infinity(), false};
+inline constexpr NumberRange positive_or_infinite{0.0, std::numeric_limits<double>::infinity(), true, true};
 
 class TableReader {
  public:

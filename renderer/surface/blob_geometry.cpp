@@ -1,5 +1,7 @@
 #include "renderer/surface/blob_geometry.h"
 
+#include "renderer/surface/embree_ray.h"
+
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -98,21 +100,12 @@ void BlobGeometry::collect_spans(const Vec3& o, const Vec3& d, double tmin, doub
   query.tmax = tmax;
   query.spans = &tracer.spans;
 
-  RTCRayHit rayhit{};
-  rayhit.ray.org_x = float(o.x());
-  rayhit.ray.org_y = float(o.y());
-  rayhit.ray.org_z = float(o.z());
-  rayhit.ray.dir_x = float(d.x());
-  rayhit.ray.dir_y = float(d.y());
-  rayhit.ray.dir_z = float(d.z());
   // Widen the float interval by a hair: the spans are clipped exactly to
   // [tmin, tmax] in double by ray_span, and Embree's float boxes must not
   // cull a source that touches the interval's ends.
-  rayhit.ray.tnear = std::nextafter(float(tmin), 0.0f);
-  rayhit.ray.tfar = std::isinf(tmax) ? std::numeric_limits<float>::infinity()
-                                     : std::nextafter(float(tmax), std::numeric_limits<float>::infinity());
-  rayhit.ray.mask = 0xFFFFFFFFu;
-  rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  RTCRayHit rayhit = make_embree_ray(o, d, std::nextafter(float(tmin), 0.0f),
+                                     std::isinf(tmax) ? inf : std::nextafter(float(tmax), inf));
   rtcIntersect1(span_scene_, &query.embree, &rayhit);
 }
 

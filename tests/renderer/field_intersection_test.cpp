@@ -7,6 +7,7 @@
 #include <random>
 
 #include "renderer/render/ray_scene.h"
+#include "renderer/surface/embree_ray.h"
 
 namespace hsb {
 namespace {
@@ -40,16 +41,7 @@ double trace(const RayScene& scene, const Vec3& o, const Vec3& d) {
   SphereTracer tracer;
   TraceStats stats;
   FieldRayContext context(tracer, stats);
-  RTCRayHit rh{};
-  rh.ray.org_x = float(o.x());
-  rh.ray.org_y = float(o.y());
-  rh.ray.org_z = float(o.z());
-  rh.ray.dir_x = float(d.x());
-  rh.ray.dir_y = float(d.y());
-  rh.ray.dir_z = float(d.z());
-  rh.ray.tfar = INFINITY;
-  rh.ray.mask = 0xFFFFFFFFu;
-  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  RTCRayHit rh = make_embree_ray(o, d, 0.0f, INFINITY);
   rtcIntersect1(scene.get(), &context.embree, &rh);
   return rh.hit.geomID == scene.field_id() ? context.t : -1.0;
 }

@@ -119,6 +119,15 @@ TEST_F(SceneFile, OutOfRangeValue) {
   EXPECT_EQ(e, path_ + ":5:11: glyphs.spacing must be > 0, got -0.1");
 }
 
+TEST_F(SceneFile, NonFiniteNumbersAreRefusedExceptAnInfiniteCeiling) {
+  const std::string e = error_of(std::string(minimal) + "[data]\nload = inf\n");
+  EXPECT_EQ(e, path_ + ":4:8: data.load must be a finite number, got inf");
+  EXPECT_NE(error_of(std::string(minimal) + "[data]\nload = nan\n").find("finite"), std::string::npos);
+  EXPECT_NE(error_of(std::string(minimal) + "[camera]\nposition = [1, inf, 0]\n").find("camera.position"),
+            std::string::npos);
+  EXPECT_EQ(error_of(std::string(minimal) + "[glyphs]\nceiling = inf\n"), "");
+}
+
 TEST_F(SceneFile, UnknownKeyIsAnErrorNotIgnored) {
   const std::string e = error_of(std::string(minimal) + "[glyphs]\nspaceing = 0.1\n");
   EXPECT_NE(e.find(path_ + ":4:1: unknown key glyphs.spaceing"), std::string::npos) << e;
