@@ -60,7 +60,12 @@ int main(int argc, char** argv) {
   render->add_option("--set", overrides,
                      "Override a scene key for every scene, e.g. --set render.width=400 "
                      "--set glyphs.mapping=sqrt (the value is TOML; bare words are strings)")
-      ->take_all();
+      ->allow_extra_args(false);  // one value per --set, so scenes may follow it
+  render->footer(
+      "Prints one line per image: file, sources, trajectories, time (build, render) and Mrays/s.\n"
+      "A scene that fails prints one error (file:line:column: what was expected, what was found)\n"
+      "and leaves no image; the others still render. Exit status: 0 when all scenes rendered, 1 if\n"
+      "any failed, 106-109 for command-line usage errors.");
   render->add_flag("--stats", stats,
                    "Also print ray counts, support intervals and field evaluations per ray");
 

@@ -8,9 +8,14 @@ namespace OCIO = OCIO_NAMESPACE;
 namespace hsb {
 namespace {
 
-OCIO::ConstConfigRcPtr load_config() {
+// $OCIO if set, else the built-in config; `name` says which.
+OCIO::ConstConfigRcPtr load_config(std::string& name) {
   const char* env = std::getenv("OCIO");
-  if (env && *env) return OCIO::Config::CreateFromEnv();
+  if (env && *env) {
+    name = env;
+    return OCIO::Config::CreateFromEnv();
+  }
+  name = "built-in hyperstreamball";
   std::istringstream text(builtin_ocio_config());
   return OCIO::Config::CreateFromStream(text);
 }
@@ -18,7 +23,7 @@ OCIO::ConstConfigRcPtr load_config() {
 }  // namespace
 
 ColorManagement::ColorManagement(const std::string& display, const std::string& view)
-    : config_(load_config()) {
+    : config_(load_config(config_name_)) {
   display_ = display.empty() ? config_->getDefaultDisplay() : display;
   view_ = view.empty() ? config_->getDefaultView(display_.c_str()) : view;
 
@@ -48,11 +53,6 @@ Rgb ColorManagement::to_picking(const Rgb& linear) const {
 void ColorManagement::apply_display(std::vector<float>& rgba, int width, int height) const {
   OCIO::PackedImageDesc image(rgba.data(), width, height, 4);
   to_display_->apply(image);
-}
-
-std::string ColorManagement::config_name() const {
-  const char* env = std::getenv("OCIO");
-  return env && *env ? std::string(env) : std::string("built-in hyperstreamball");
 }
 
 }  // namespace hsb

@@ -30,9 +30,11 @@ class ColorManagement {
 
   const std::string& display() const { return display_; }
   const std::string& view() const { return view_; }
-  std::string config_name() const;
+  // The config in use: $OCIO's value at construction, or "built-in".
+  const std::string& config_name() const { return config_name_; }
 
  private:
+  std::string config_name_;  // before config_: the constructor fills it while loading
   OCIO_NAMESPACE::ConstConfigRcPtr config_;
   std::string display_, view_;
   OCIO_NAMESPACE::ConstCPUProcessorRcPtr to_linear_, to_picking_, to_display_;

@@ -38,6 +38,9 @@ grep -q "good.png  sources=" "$work/log" || fail "no summary line: $(cat "$work/
 [[ $? -ne 0 ]] || fail "exit status 0 for a bad --set"
 grep -q "render.width must be" "$work/err" || fail "unexpected message: $(cat "$work/err")"
 
+"$hsb" render --set render.width=16 "$work/good.toml" -o "$work/out2" > "$work/log" 2>&1
+[[ $? -eq 0 && -f "$work/out2/good.png" ]] || fail "--set before the scene: $(cat "$work/log")"
+
 "$hsb" render "$work/missing.toml" -o "$work/out" 2> "$work/err"
 [[ $? -ne 0 ]] || fail "exit status 0 for a missing scene"
 echo "PASS"

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 
 #include "renderer/image/color_management.h"
@@ -45,6 +47,25 @@ TEST_F(Color, DisplayTransformEncodesSceneLinearAsSrgb) {
   EXPECT_NEAR(px[1], 0.7354, 2e-3);
   EXPECT_NEAR(px[2], 1.0, 2e-4);
   EXPECT_FLOAT_EQ(px[3], 0.7f);  // alpha untouched
+}
+
+TEST_F(Color, OcioEnvironmentVariableSelectsAnotherConfig) {
+  // The built-in config with Raw as the sRGB display's first (default) view.
+  std::string text = builtin_ocio_config();
+  const std::string standard = "    - !<View> {name: Standard, colorspace: srgb}\n";
+  const std::string raw = "    - !<View> {name: Raw, colorspace: raw}\n";
+  text.replace(text.find(standard), standard.size() + raw.size(), raw + standard);
+  text.replace(text.find("active_views: [Standard, Raw]"), 29, "active_views: [Raw, Standard]");
+  const std::string path = (std::filesystem::temp_directory_path() / "hsb_raw_first.ocio").string();
+  std::ofstream(path) << text;
+  setenv("OCIO", path.c_str(), 1);
+  const ColorManagement color("", "");
+  unsetenv("OCIO");
+  EXPECT_EQ(color.view(), "Raw");
+  EXPECT_EQ(color.config_name(), path);
+  std::vector<float> px{0.214f, 0.5f, 1.0f, 1.0f};
+  color.apply_display(px, 1, 1);
+  EXPECT_FLOAT_EQ(px[0], 0.214f);  // Raw passes scene-linear values through
 }
 
 TEST_F(Color, UnknownViewIsAnError) { EXPECT_ANY_THROW(ColorManagement("sRGB", "NoSuchView")); }
