@@ -9,12 +9,20 @@
 
 namespace hsb {
 
-std::unique_ptr<TensorField> make_field(const DataSpec& spec) {
-  auto analytic = std::make_unique<PointLoadField>(spec.point_load);
+LoadedField make_field(const DataSpec& spec) {
+  LoadedField loaded;
+  if (spec.kind == DataKind::vtk_file) {
+    VtkData data = load_vtk_data(spec.file);
+    loaded.field = std::move(data.field);
+    loaded.boundary = std::move(data.boundary);
+    loaded.warnings = std::move(data.warnings);
+  } else {
+    loaded.field = std::make_unique<PointLoadField>(spec.point_load);
+  }
   const auto& dims = spec.sample_grid;
   if (std::all_of(dims.begin(), dims.end(), [](int d) { return d >= 2; }))
-    return std::make_unique<UniformGridField>(UniformGridField::sampled_from(*analytic, dims));
-  return analytic;
+    loaded.field = std::make_unique<UniformGridField>(UniformGridField::sampled_from(*loaded.field, dims));
+  return loaded;
 }
 
 namespace {
@@ -30,12 +38,22 @@ std::vector<Vec3> all_seeds(const GlyphPipelineSpec& spec) {
 
 }  // namespace
 
-GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec) {
-  const std::unique_ptr<TensorField> field = make_field(spec.data);
-  const std::vector<Vec3> seeds = all_seeds(spec);
+GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec_in) {
+  LoadedField loaded = make_field(spec_in.data);
+  const TensorField* field = loaded.field.get();
+  const std::vector<Vec3> seeds = all_seeds(spec_in);
 
   GlyphScene scene;
   scene.domain = field->bounds();
+  scene.boundary = std::move(loaded.boundary);
+  scene.warnings = std::move(loaded.warnings);
+
+  // Resolve the automatic lengths against the data set's size.
+  GlyphPipelineSpec spec = spec_in;
+  const double diagonal = scene.domain.diagonal();
+  if (spec.trajectory.step <= 0.0) spec.trajectory.step = diagonal / 400.0;
+  if (spec.trajectory.max_length <= 0.0) spec.trajectory.max_length = 2.0 * diagonal;
+  if (spec.spacing <= 0.0) spec.spacing = diagonal / 40.0;
 
   if (spec.placement == SourcePlacement::at_seeds) {
     for (const Vec3& seed : seeds) {

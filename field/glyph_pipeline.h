@@ -5,18 +5,26 @@
 
 #include <array>
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "field/glyph_sources.h"
 #include "field/point_load.h"
 #include "field/trajectory.h"
+#include "field/triangle_mesh.h"
+#include "field/vtk_data.h"
 
 namespace hsb {
 
+enum class DataKind { point_load, vtk_file };
+
 struct DataSpec {
+  DataKind kind = DataKind::point_load;
   PointLoadSpec point_load;
-  // When all three are ≥ 2, the analytic field is sampled onto a grid of
-  // these dimensions and everything downstream reads the grid instead.
+  VtkFileSpec file;
+  // When all three are ≥ 2, the data set is sampled onto a grid of these
+  // dimensions spanning its bounds, and everything downstream reads the grid.
   std::array<int, 3> sample_grid{0, 0, 0};
 };
 
@@ -33,13 +41,16 @@ enum class SourcePlacement {
   at_seeds,            // one glyph per seed point: classic ellipsoid glyphs
 };
 
+// Lengths given as 0 are "automatic": fractions of the data set's diagonal D,
+// known only once the data set is read (trajectory.step = D/400,
+// trajectory.max_length = 2 D, spacing = D/40).
 struct GlyphPipelineSpec {
   DataSpec data;
   std::vector<Vec3> seed_points;
   std::vector<SeedGridSpec> seed_grids;
   TrajectoryOptions trajectory;
   SourcePlacement placement = SourcePlacement::along_trajectories;
-  double spacing = 0.1;
+  double spacing = 0.0;
   GlyphMapping mapping;
   ColorScalar color = ColorScalar::lambda3;
 };
@@ -48,10 +59,19 @@ struct GlyphScene {
   Box3 domain;
   std::vector<Trajectory> trajectories;
   std::vector<GlyphSource> sources;
+  std::optional<TriangleMesh> boundary;  // a mesh's outer surface (none for analytic data)
+  std::vector<std::string> warnings;     // about the data, for the user
 };
 
-// Builds the data set described by `spec.data`.
-std::unique_ptr<TensorField> make_field(const DataSpec& spec);
+struct LoadedField {
+  std::unique_ptr<TensorField> field;
+  std::optional<TriangleMesh> boundary;
+  std::vector<std::string> warnings;
+};
+
+// Builds (or reads) the data set described by `spec`. Throws DataError for
+// unusable data files.
+LoadedField make_field(const DataSpec& spec);
 
 // Runs the pipeline. Trajectories are traced in parallel-safe order and the
 // result does not depend on thread count.

@@ -18,6 +18,7 @@ packages=(
   libopenimageio-dev openimageio-tools libopencv-dev
   libopencolorio-dev
   libtomlplusplus-dev libeigen3-dev libcli11-dev
+  libvtk9-dev
   googletest libgtest-dev
   fonts-dejavu-core
 )

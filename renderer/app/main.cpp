@@ -17,6 +17,7 @@
 namespace {
 
 void print_summary(const hsb::RenderSummary& s, bool with_stats) {
+  for (const std::string& warning : s.warnings) std::fprintf(stderr, "hsb: warning: %s\n", warning.c_str());
   const double rays = double(s.primary_rays + s.shadow_rays);
   const double mrays = s.render_seconds > 0.0 ? rays / s.render_seconds * 1e-6 : 0.0;
   std::printf("%s  sources=%zu  trajectories=%zu  time=%.2fs (build %.2fs, render %.2fs)  %.2f Mrays/s\n",

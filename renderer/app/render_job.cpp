@@ -99,9 +99,11 @@ RenderSummary run_render_job(const RenderJob& job) {
   const double diagonal = glyphs.domain.diagonal();
   const TraceSettings trace{spec.min_step * diagonal, spec.max_steps};
   static const EmbreeDevice device;
-  const RayScene scene(device, field, glyphs.domain, shading, trace);
+  const RayScene scene(device, field, glyphs.domain, shading, trace,
+                       glyphs.boundary ? &*glyphs.boundary : nullptr);
   const double build_seconds = seconds_since(start);
-  RenderOutput rendered = render_image(scene, glyphs.domain, spec.camera, shading, spec.render);
+  RenderOutput rendered =
+      render_image(scene, glyphs.domain, resolve_camera(spec, glyphs.domain), shading, spec.render);
 
   // Image: display transform (or scene-linear EXR), colour bar, metadata.
   const std::filesystem::path image_path = std::filesystem::path(job.output_dir) / spec.output.file;
@@ -136,6 +138,7 @@ RenderSummary run_render_job(const RenderJob& job) {
 
   RenderSummary summary;
   summary.image_path = image_path.string();
+  summary.warnings = glyphs.warnings;
   summary.trajectories = glyphs.trajectories.size();
   summary.sources = field.sources.size();
   summary.build_seconds = build_seconds;

@@ -23,6 +23,7 @@ struct RenderSummary {
   double total_seconds = 0.0;   // including colour management and writing
   std::uint64_t primary_rays = 0, shadow_rays = 0;
   TraceStats stats;
+  std::vector<std::string> warnings;  // about the data; the image is still complete
 };
 
 // Renders `job` and writes the image. Throws SceneError for bad scene input

@@ -43,6 +43,24 @@ RTCGeometry make_box_edges(RTCDevice device, const Box3& box, double radius) {
   return geometry;
 }
 
+RTCScene make_shell(RTCDevice device, const TriangleMesh& mesh) {
+  RTCScene scene = rtcNewScene(device);
+  RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertices.size()));
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
+    for (int k = 0; k < 3; ++k) vertices[3 * i + std::size_t(k)] = float(mesh.vertices[i][k]);
+  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.triangles.size()));
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
+    for (int k = 0; k < 3; ++k) indices[3 * i + std::size_t(k)] = mesh.triangles[i][std::size_t(k)];
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometry(scene, geometry);
+  rtcReleaseGeometry(geometry);
+  rtcCommitScene(scene);
+  return scene;
+}
+
 }  // namespace
 
 EmbreeDevice::EmbreeDevice() : device_(rtcNewDevice(nullptr)) {
@@ -53,7 +71,8 @@ EmbreeDevice::EmbreeDevice() : device_(rtcNewDevice(nullptr)) {
 EmbreeDevice::~EmbreeDevice() { rtcReleaseDevice(device_); }
 
 RayScene::RayScene(const EmbreeDevice& device, const BlobField& field, const Box3& domain,
-                   const ShadingSpec& shading, const TraceSettings& settings) {
+                   const ShadingSpec& shading, const TraceSettings& settings,
+                   const TriangleMesh* shell) {
   scene_ = rtcNewScene(device.get());
   blobs_ = std::make_unique<BlobGeometry>(device.get(), field, settings);
   if (!field.sources.empty()) field_id_ = blobs_->attach_to(scene_);
@@ -64,12 +83,14 @@ RayScene::RayScene(const EmbreeDevice& device, const BlobField& field, const Box
     rtcReleaseGeometry(edges);
   }
   rtcCommitScene(scene_);
+  if (shading.shell && shell && !shell->triangles.empty()) shell_ = make_shell(device.get(), *shell);
   if (rtcGetDeviceError(device.get()) != RTC_ERROR_NONE)
     throw std::runtime_error("Embree failed to build the scene");
 }
 
 RayScene::~RayScene() {
   if (scene_) rtcReleaseScene(scene_);
+  if (shell_) rtcReleaseScene(shell_);
 }
 
 }  // namespace hsb

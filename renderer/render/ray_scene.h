@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "field/box3.h"
+#include "field/triangle_mesh.h"
 #include "renderer/render/shading.h"
 #include "renderer/surface/blob_geometry.h"
 
@@ -27,9 +28,12 @@ class EmbreeDevice {
 class RayScene {
  public:
   // `field` must outlive the scene. The domain box edges are added as thin
-  // round curves when `shading.box` is set.
+  // round curves when `shading.box` is set. `shell`, when given and
+  // `shading.shell` is set, becomes a separate scene of triangles: it is
+  // composited over what the rays hit, casts no shadow and hides nothing.
   RayScene(const EmbreeDevice& device, const BlobField& field, const Box3& domain,
-           const ShadingSpec& shading, const TraceSettings& settings);
+           const ShadingSpec& shading, const TraceSettings& settings,
+           const TriangleMesh* shell = nullptr);
   ~RayScene();
   RayScene(const RayScene&) = delete;
   RayScene& operator=(const RayScene&) = delete;
@@ -38,9 +42,11 @@ class RayScene {
   unsigned field_id() const { return field_id_; }
   unsigned box_id() const { return box_id_; }
   const BlobGeometry& blobs() const { return *blobs_; }
+  RTCScene shell() const { return shell_; }  // nullptr when there is none
 
  private:
   RTCScene scene_ = nullptr;
+  RTCScene shell_ = nullptr;
   std::unique_ptr<BlobGeometry> blobs_;
   unsigned field_id_ = RTC_INVALID_GEOMETRY_ID;
   unsigned box_id_ = RTC_INVALID_GEOMETRY_ID;

@@ -65,6 +65,38 @@ Sample trace_sample(const RayScene& scene, const ShadingSpec& shading, const Vec
           context.t};
 }
 
+// The shell's layers between the camera and `behind` (at distance t_behind),
+// composited front to back. Opacity rises from shell_opacity facing the
+// viewer to shell_edge_opacity at grazing angles, so the body's outline
+// shows as an edge while glyphs inside stay visible.
+Rgb composite_shell(RTCScene shell, const ShadingSpec& shading, const Vec3& origin,
+                    const Vec3& direction, const Vec3& to_light, const Rgb& behind,
+                    double t_behind) {
+  constexpr int max_layers = 8;
+  Rgb sum{0, 0, 0};
+  double transmittance = 1.0;
+  float t_near = 0.0f;
+  const float t_far = std::isinf(t_behind) ? INFINITY : float(t_behind);
+  for (int layer = 0; layer < max_layers; ++layer) {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh = make_embree_ray(origin, direction, t_near, t_far);
+    rtcIntersect1(shell, &context, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) break;
+    const Vec3 n = Vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z).normalized();
+    const double facing = std::fabs(n.dot(direction));
+    const double grazing = std::pow(1.0 - facing, 3.0);
+    const double alpha = shading.shell_opacity + (shading.shell_edge_opacity - shading.shell_opacity) * grazing;
+    const double lit = shading.ambient + shading.light_intensity * std::fabs(n.dot(to_light));
+    for (int c = 0; c < 3; ++c)
+      sum[c] += float(transmittance * alpha * lit * shading.shell_color[c] * shading.light_color[c]);
+    transmittance *= 1.0 - alpha;
+    t_near = std::nextafter(rh.ray.tfar, INFINITY);
+  }
+  for (int c = 0; c < 3; ++c) sum[c] += float(transmittance) * behind[c];
+  return sum;
+}
+
 }  // namespace
 
 RenderOutput render_image(const RayScene& scene, const Box3& domain, const CameraSpec& camera_spec,
@@ -92,9 +124,10 @@ RenderOutput render_image(const RayScene& scene, const Box3& domain, const Camer
             const std::uint64_t key = (pixel * std::uint64_t(n * n) + std::uint64_t(sy * n + sx)) * 2;
             const double jx = n == 1 ? 0.5 : (sx + hash_unit(key)) / n;
             const double jy = n == 1 ? 0.5 : (sy + hash_unit(key + 1)) / n;
-            const Sample s = trace_sample(scene, shading, camera.origin(),
-                                          camera.direction(x + jx, y + jy), to_light,
-                                          shadow_offset, state);
+            const Vec3 direction = camera.direction(x + jx, y + jy);
+            Sample s = trace_sample(scene, shading, camera.origin(), direction, to_light, shadow_offset, state);
+            if (scene.shell())
+              s.color = composite_shell(scene.shell(), shading, camera.origin(), direction, to_light, s.color, s.depth);
             for (int c = 0; c < 3; ++c) rgb[c] += s.color[c];
             coverage += s.covered ? 1.0 : 0.0;
             depth = std::min(depth, s.depth);

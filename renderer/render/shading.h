@@ -21,6 +21,12 @@ struct ShadingSpec {
   bool box = true;         // draw the domain's edges
   Rgb box_color{0.05f, 0.05f, 0.05f};
   double box_radius = 0.0;  // 0: 1/500 of the domain's diagonal
+  // A data set's boundary surface drawn as a translucent shell; its opacity
+  // rises towards grazing angles, so the outline reads as an edge.
+  bool shell = false;
+  Rgb shell_color{0.6f, 0.65f, 0.7f};
+  double shell_opacity = 0.08;       // facing the viewer
+  double shell_edge_opacity = 0.6;   // at grazing angles
 };
 
 // Light leaving a glyph surface point towards the viewer.

@@ -42,8 +42,24 @@ void apply_override(toml::table& root, const std::string& text) {
   parsed.get("v")->visit([&](auto&& node) { table->insert_or_assign(leaf, std::move(node)); });
 }
 
-void read_data(TableReader& data, DataSpec& spec) {
-  data.choice("kind", 0, {{"point_load", 0}});
+void read_data(TableReader& data, DataSpec& spec, const std::string& scene_path) {
+  spec.kind = data.choice("kind", DataKind::point_load,
+                          {{"point_load", DataKind::point_load}, {"vtk", DataKind::vtk_file}});
+  if (spec.kind == DataKind::vtk_file) {
+    const std::string file = data.string("file", "");
+    if (file.empty()) data.fail_at("file", "is required when data.kind = \"vtk\" (a .vtk, .vti, .vtu, .vts or .vtr file)");
+    // Relative to the scene file, so scenes can be run from anywhere.
+    const std::filesystem::path p(file);
+    spec.file.path = p.is_absolute() ? file : (std::filesystem::path(scene_path).parent_path() / p).lexically_normal().string();
+    spec.file.array = data.string("array", "");
+    spec.file.association = data.choice("association", TensorAssociation::automatic,
+                                        {{"auto", TensorAssociation::automatic},
+                                         {"point", TensorAssociation::point},
+                                         {"cell", TensorAssociation::cell}});
+    spec.file.cell_tensors = data.choice("cell_tensors", CellTensors::constant,
+                                         {{"constant", CellTensors::constant},
+                                          {"averaged", CellTensors::averaged}});
+  }
   PointLoadSpec& load = spec.point_load;
   if (const std::vector<double> b = data.numbers("bounds", 6); !b.empty()) {
     load.bounds = Box3{Vec3(b[0], b[2], b[4]), Vec3(b[1], b[3], b[5])};
@@ -78,23 +94,24 @@ void read_seeds(TableReader& seeds, GlyphPipelineSpec& spec) {
   seeds.finish();
 }
 
-void read_trajectories(TableReader& t, TrajectoryOptions& options, double diagonal) {
+void read_trajectories(TableReader& t, TrajectoryOptions& options) {
   options.family = t.choice("family", EigenFamily::major,
                             {{"major", EigenFamily::major}, {"medium", EigenFamily::medium},
                              {"minor", EigenFamily::minor}});
-  options.step = t.number("step", diagonal / 400.0, positive);
-  options.max_length = t.number("max_length", 2.0 * diagonal, positive);
+  // Absent means automatic (0 here, resolved against the data's size).
+  options.step = t.number("step", options.step, positive);
+  options.max_length = t.number("max_length", options.max_length, positive);
   options.degeneracy_tolerance = t.number("degeneracy", options.degeneracy_tolerance, non_negative);
   options.min_magnitude = t.number("min_magnitude", options.min_magnitude, non_negative);
   options.max_steps = t.integer("max_steps", options.max_steps, 1);
   t.finish();
 }
 
-void read_glyphs(TableReader& g, GlyphPipelineSpec& spec, double diagonal) {
+void read_glyphs(TableReader& g, GlyphPipelineSpec& spec) {
   spec.placement = g.choice("placement", SourcePlacement::along_trajectories,
                             {{"trajectories", SourcePlacement::along_trajectories},
                              {"seeds", SourcePlacement::at_seeds}});
-  spec.spacing = g.number("spacing", diagonal / 40.0, positive);
+  spec.spacing = g.number("spacing", spec.spacing, positive);  // absent: automatic
   GlyphMapping& m = spec.mapping;
   m.mapping = g.choice("mapping", RadiusMapping::linear,
                        {{"linear", RadiusMapping::linear}, {"sqrt", RadiusMapping::sqrt},
@@ -131,16 +148,17 @@ void read_color(TableReader& c, ColorSpec& spec) {
   c.finish();
 }
 
-void read_camera(TableReader& c, CameraSpec& spec) {
-  spec.look_at = c.vec3("look_at", spec.look_at);
-  spec.position = c.vec3("position", spec.position);
-  spec.up = c.vec3("up", spec.up);
-  spec.fov_degrees = c.number("fov", spec.fov_degrees, {0.0, 179.0, true});
+void read_camera(TableReader& c, SceneSpec& spec) {
+  if (c.has("look_at")) spec.camera_look_at = c.vec3("look_at", Vec3::Zero());
+  if (c.has("position")) spec.camera_position = c.vec3("position", Vec3::Zero());
+  c.vec3("look_at", Vec3::Zero());  // known keys even when absent
+  c.vec3("position", Vec3::Zero());
+  spec.camera.up = c.vec3("up", spec.camera.up);
+  spec.camera.fov_degrees = c.number("fov", spec.camera.fov_degrees, {0.0, 179.0, true});
   c.finish();
-  if ((spec.position - spec.look_at).norm() == 0.0)
+  if (spec.camera_position && spec.camera_look_at && (*spec.camera_position - *spec.camera_look_at).norm() == 0.0)
     c.fail_at("position", "must differ from camera.look_at");
-  if ((spec.look_at - spec.position).cross(spec.up).norm() < 1e-12)
-    c.fail_at("up", "must not be parallel to the viewing direction");
+  if (spec.camera.up.norm() == 0.0) c.fail_at("up", "must not be zero");
 }
 
 void read_light(TableReader& l, ShadingSpec& spec) {
@@ -164,6 +182,11 @@ void read_render(TableReader& r, SceneSpec& spec) {
   spec.shading.box = r.boolean("box", spec.shading.box);
   spec.shading.box_color = r.color("box_color", spec.shading.box_color);
   spec.shading.box_radius = r.number("box_radius", spec.shading.box_radius, non_negative);
+  spec.shading.shell = r.boolean("shell", spec.shading.shell);
+  spec.shading.shell_color = r.color("shell_color", spec.shading.shell_color);
+  spec.shading.shell_opacity = r.number("shell_opacity", spec.shading.shell_opacity, {0.0, 1.0, false});
+  spec.shading.shell_edge_opacity =
+      r.number("shell_edge_opacity", spec.shading.shell_edge_opacity, {0.0, 1.0, false});
   spec.min_step = r.number("min_step", spec.min_step, positive);
   spec.max_steps = r.integer("max_steps", spec.max_steps, 1);
   r.finish();
@@ -182,6 +205,15 @@ void read_output(TableReader& o, OutputSpec& spec, const std::string& scene_path
 }
 
 }  // namespace
+
+CameraSpec resolve_camera(const SceneSpec& spec, const Box3& domain) {
+  CameraSpec camera = spec.camera;
+  camera.look_at = spec.camera_look_at.value_or(domain.centre());
+  camera.position = spec.camera_position.value_or(domain.centre() + domain.diagonal() * Vec3(0.95, -1.45, 0.75));
+  if ((camera.look_at - camera.position).cross(camera.up).norm() < 1e-12 * domain.diagonal())
+    throw SceneError(spec.path + ": camera.up must not be parallel to the viewing direction");
+  return camera;
+}
 
 std::string scene_fingerprint_text(const std::string& path, const std::vector<std::string>& overrides) {
   std::ifstream in(path, std::ios::binary);
@@ -206,23 +238,22 @@ SceneSpec load_scene(const std::string& path, const std::vector<std::string>& ov
   SceneSpec spec;
   spec.path = path;
   TableReader top(root, "", path);
-  // The data set comes first: its size sets several defaults below.
-  if (auto data = top.table("data")) read_data(*data, spec.pipeline.data);
-  const Box3 domain = spec.pipeline.data.point_load.bounds;
-  const double diagonal = domain.diagonal();
-  spec.pipeline.trajectory.step = diagonal / 400.0;
-  spec.pipeline.trajectory.max_length = 2.0 * diagonal;
-  spec.pipeline.spacing = diagonal / 40.0;
-  // By default, look at the domain's centre from the front-right, above.
-  spec.camera.look_at = domain.centre();
-  spec.camera.position = domain.centre() + diagonal * Vec3(0.95, -1.45, 0.75);
+  // Automatic lengths (0) are resolved once the data set's size is known.
+  spec.pipeline.trajectory.step = 0.0;
+  spec.pipeline.trajectory.max_length = 0.0;
+  spec.pipeline.spacing = 0.0;
+  if (auto data = top.table("data")) read_data(*data, spec.pipeline.data, path);
+  // A box of edges frames an analytic domain; a mesh is shown by its shell.
+  const bool mesh = spec.pipeline.data.kind == DataKind::vtk_file;
+  spec.shading.box = !mesh;
+  spec.shading.shell = mesh;
 
   if (auto seeds = top.table("seeds")) read_seeds(*seeds, spec.pipeline);
-  if (auto t = top.table("trajectories")) read_trajectories(*t, spec.pipeline.trajectory, diagonal);
-  if (auto g = top.table("glyphs")) read_glyphs(*g, spec.pipeline, diagonal);
+  if (auto t = top.table("trajectories")) read_trajectories(*t, spec.pipeline.trajectory);
+  if (auto g = top.table("glyphs")) read_glyphs(*g, spec.pipeline);
   if (auto s = top.table("surface")) read_surface(*s, spec.surface);
   if (auto c = top.table("color")) read_color(*c, spec.color);
-  if (auto c = top.table("camera")) read_camera(*c, spec.camera);
+  if (auto c = top.table("camera")) read_camera(*c, spec);
   if (auto l = top.table("light")) read_light(*l, spec.shading);
   if (auto r = top.table("render")) read_render(*r, spec);
   spec.output.file = std::filesystem::path(path).stem().string() + ".png";

@@ -42,7 +42,8 @@ struct SceneSpec {
   GlyphPipelineSpec pipeline;
   SurfaceSpec surface;
   ColorSpec color;
-  CameraSpec camera;
+  CameraSpec camera;  // position and look_at are filled in by resolve_camera()
+  std::optional<Vec3> camera_position, camera_look_at;  // nullopt: framed on the data
   ShadingSpec shading;  // background and box colours still in display terms
   RenderSettings render;
   double min_step = 1e-6;  // sphere tracer's smallest step, × domain diagonal
@@ -54,6 +55,10 @@ struct SceneSpec {
 // (hsb --set); each value is parsed as a TOML value, or taken as a string
 // when it is not one. Throws SceneError naming file:line:column and the key.
 SceneSpec load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// The camera, with position and look_at defaulting to a view of `domain`
+// from the front-right, above (the domain is known only once data is read).
+CameraSpec resolve_camera(const SceneSpec& spec, const Box3& domain);
 
 // The scene's text plus overrides, for the hash written into images.
 std::string scene_fingerprint_text(const std::string& path, const std::vector<std::string>& overrides);

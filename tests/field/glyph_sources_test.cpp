@@ -203,6 +203,24 @@ GlyphPipelineSpec point_load_scene() {
   return spec;
 }
 
+TEST(GlyphPipeline, AutomaticLengthsFollowTheDataSize) {
+  GlyphPipelineSpec spec = point_load_scene();
+  spec.data.point_load.bounds = Box3{Vec3(-2, -2, -2), Vec3(2, 2, 2)};
+  spec.seed_grids.clear();
+  spec.seed_points = {Vec3(0, 0, 0)};  // on the axis: a straight trajectory
+  spec.trajectory.step = 0.0;
+  spec.trajectory.max_length = 0.0;
+  spec.spacing = 0.0;
+  const GlyphScene scene = build_glyph_scene(spec);
+  const double diagonal = spec.data.point_load.bounds.diagonal();
+  ASSERT_GE(scene.sources.size(), 3u);
+  for (std::size_t i = 1; i < scene.sources.size(); ++i)
+    EXPECT_NEAR((scene.sources[i].centre - scene.sources[i - 1].centre).norm(), diagonal / 40.0, 1e-6);
+  // From the top face to the bottom face: the whole 4-unit height, which a
+  // fixed default step or length could not know about.
+  EXPECT_NEAR(scene.trajectories[0].length(), 4.0, 1e-6);
+}
+
 TEST(GlyphPipeline, PointLoadAlongTrajectories) {
   const GlyphPipelineSpec spec = point_load_scene();
   const GlyphScene scene = build_glyph_scene(spec);
@@ -268,11 +286,11 @@ TEST(GlyphPipeline, SampledGridFollowsAnalyticField) {
 
 TEST(GlyphPipeline, MakeFieldChoosesGridOnlyWhenAllDimsGiven) {
   DataSpec d;
-  EXPECT_NE(dynamic_cast<PointLoadField*>(make_field(d).get()), nullptr);
+  EXPECT_NE(dynamic_cast<PointLoadField*>(make_field(d).field.get()), nullptr);
   d.sample_grid = {5, 5, 1};
-  EXPECT_NE(dynamic_cast<PointLoadField*>(make_field(d).get()), nullptr);
+  EXPECT_NE(dynamic_cast<PointLoadField*>(make_field(d).field.get()), nullptr);
   d.sample_grid = {5, 6, 7};
-  EXPECT_NE(dynamic_cast<UniformGridField*>(make_field(d).get()), nullptr);
+  EXPECT_NE(dynamic_cast<UniformGridField*>(make_field(d).field.get()), nullptr);
 }
 
 }  // namespace

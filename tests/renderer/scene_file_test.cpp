@@ -43,7 +43,14 @@ TEST_F(SceneFile, MinimalSceneGetsDocumentedDefaults) {
   EXPECT_EQ(spec.pipeline.mapping.mapping, RadiusMapping::linear);
   EXPECT_EQ(spec.render.width, 800);
   EXPECT_EQ(spec.output.file, "MinimalSceneGetsDocumentedDefaults.png");
-  EXPECT_DOUBLE_EQ(spec.pipeline.spacing, spec.pipeline.data.point_load.bounds.diagonal() / 40.0);
+  // Sizes that depend on the data are left automatic (0) until it is read.
+  EXPECT_EQ(spec.pipeline.spacing, 0.0);
+  EXPECT_EQ(spec.pipeline.trajectory.step, 0.0);
+  EXPECT_FALSE(spec.camera_position.has_value());
+  const CameraSpec camera = resolve_camera(spec, spec.pipeline.data.point_load.bounds);
+  EXPECT_EQ(camera.look_at, Vec3::Zero());
+  EXPECT_TRUE(spec.shading.box);
+  EXPECT_FALSE(spec.shading.shell);
   EXPECT_EQ(spec.pipeline.seed_points.size(), 1u);
 }
 
@@ -105,7 +112,7 @@ TEST_F(SceneFile, OverridesReplaceAndAddKeys) {
                                                      "camera.position=[1, 2, 3]", "output.file=a b.png"});
   EXPECT_EQ(spec.render.width, 123);
   EXPECT_EQ(spec.pipeline.mapping.mapping, RadiusMapping::sqrt);
-  EXPECT_EQ(spec.camera.position, Vec3(1, 2, 3));
+  EXPECT_EQ(spec.camera_position.value(), Vec3(1, 2, 3));
   EXPECT_EQ(spec.output.file, "a b.png");
 }
 

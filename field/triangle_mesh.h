@@ -1,0 +1,18 @@
+#pragma once
+// A plain triangle mesh: the boundary surface of a data set, handed to the
+// renderer as context geometry.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "field/sym3.h"
+
+namespace hsb {
+
+struct TriangleMesh {
+  std::vector<Vec3> vertices;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+
+}  // namespace hsb

@@ -1,0 +1,320 @@
+#include "field/vtk_data.h"
+
+#include <vtkCellData.h>
+#include <vtkCellDataToPointData.h>
+#include <vtkCellTypes.h>
+#include <vtkDataArray.h>
+#include <vtkDataSet.h>
+#include <vtkDataSetReader.h>
+#include <vtkDataSetSurfaceFilter.h>
+#include <vtkImageData.h>
+#include <vtkMatrix3x3.h>
+#include <vtkOutputWindow.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkTriangleFilter.h>
+#include <vtkXMLGenericDataObjectReader.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <sstream>
+
+#include "field/data_error.h"
+#include "field/eigensystem.h"
+#include "field/mesh_field.h"
+#include "field/uniform_grid.h"
+
+namespace hsb {
+namespace {
+
+// VTK reports problems as text to its output window. This one keeps the last
+// error instead of printing it, so a bad file becomes one DataError.
+class CapturingOutputWindow : public vtkOutputWindow {
+ public:
+  static CapturingOutputWindow* New() { return new CapturingOutputWindow; }
+  void DisplayErrorText(const char* text) override { last_error = text ? text : ""; }
+  void DisplayWarningText(const char*) override {}
+  void DisplayGenericWarningText(const char*) override {}
+  void DisplayDebugText(const char*) override {}
+  std::string last_error;
+};
+
+// VTK's messages start with the source file and object address; the last
+// line is the part a user can act on.
+std::string last_line(const std::string& text) {
+  std::string s = text;
+  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+  const std::size_t nl = s.rfind('\n');
+  s = nl == std::string::npos ? s : s.substr(nl + 1);
+  const std::size_t colon = s.find("): ");
+  return colon == std::string::npos ? s : s.substr(colon + 3);
+}
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path)) throw DataError(path + ": no such data file");
+  static std::mutex mutex;  // the output window is global
+  std::lock_guard<std::mutex> lock(mutex);
+  static vtkSmartPointer<CapturingOutputWindow> window = [] {
+    auto w = vtkSmartPointer<CapturingOutputWindow>::New();
+    vtkOutputWindow::SetInstance(w);
+    return w;
+  }();
+  window->last_error.clear();
+
+  const std::string ext = lower_extension(path);
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (ext == ".vtk") {
+    auto legacy = vtkSmartPointer<vtkDataSetReader>::New();
+    legacy->SetFileName(path.c_str());
+    legacy->ReadAllTensorsOn();
+    legacy->ReadAllScalarsOn();
+    legacy->ReadAllVectorsOn();
+    legacy->ReadAllFieldsOn();
+    reader = legacy;
+  } else if (ext == ".vti" || ext == ".vtu" || ext == ".vts" || ext == ".vtr") {
+    auto xml = vtkSmartPointer<vtkXMLGenericDataObjectReader>::New();
+    xml->SetFileName(path.c_str());
+    reader = xml;
+  } else {
+    throw DataError(path + ": unsupported data file type \"" + ext +
+                    "\" (expected .vtk, .vti, .vtu, .vts or .vtr)");
+  }
+  reader->Update();
+  vtkSmartPointer<vtkDataSet> data = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
+  if (!window->last_error.empty() || !data || data->GetNumberOfPoints() == 0) {
+    const std::string why = window->last_error.empty() ? "no points in it" : last_line(window->last_error);
+    throw DataError(path + ": cannot read it as a VTK data set: " + why);
+  }
+  return data;
+}
+
+std::string list_arrays(vtkDataSet* data) {
+  std::ostringstream out;
+  auto list = [&](vtkDataSetAttributes* attributes, const char* where) {
+    out << where << " data: ";
+    if (attributes->GetNumberOfArrays() == 0) out << "none";
+    for (int i = 0; i < attributes->GetNumberOfArrays(); ++i) {
+      vtkAbstractArray* a = attributes->GetAbstractArray(i);
+      out << (i ? ", " : "") << (a->GetName() ? a->GetName() : "(unnamed)") << " ("
+          << a->GetNumberOfComponents() << " components)";
+    }
+  };
+  list(data->GetPointData(), "point");
+  out << "; ";
+  list(data->GetCellData(), "cell");
+  return out.str();
+}
+
+struct ChosenArray {
+  vtkDataArray* array = nullptr;
+  bool on_points = true;
+  std::string name;
+};
+
+ChosenArray choose_tensor_array(vtkDataSet* data, const VtkFileSpec& spec) {
+  auto pick = [&](vtkDataSetAttributes* attributes) -> vtkDataArray* {
+    return spec.array.empty() ? attributes->GetTensors() : attributes->GetArray(spec.array.c_str());
+  };
+  ChosenArray chosen;
+  if (spec.association != TensorAssociation::cell) chosen.array = pick(data->GetPointData());
+  if (!chosen.array && spec.association != TensorAssociation::point) {
+    chosen.array = pick(data->GetCellData());
+    chosen.on_points = false;
+  }
+  const char* where = spec.association == TensorAssociation::point  ? " in its point data"
+                      : spec.association == TensorAssociation::cell ? " in its cell data"
+                                                                     : "";
+  if (!chosen.array) {
+    const std::string what = spec.array.empty() ? "no active tensors" : "no array named \"" + spec.array + "\"";
+    throw DataError(spec.path + ": " + what + where + "; the file has " + list_arrays(data));
+  }
+  chosen.name = chosen.array->GetName() ? chosen.array->GetName() : "(unnamed)";
+  const int components = chosen.array->GetNumberOfComponents();
+  if (components != 6 && components != 9)
+    throw DataError(spec.path + ": array \"" + chosen.name + "\" has " + std::to_string(components) +
+                    " components; a tensor needs 9, or 6 (XX, YY, ZZ, XY, YZ, XZ)");
+  return chosen;
+}
+
+// Tensors of `array`, checked for finiteness, symmetrised when given as 9
+// components (with one warning for the largest asymmetry found).
+std::vector<Sym3> read_tensors(const ChosenArray& chosen, const std::string& path,
+                               std::vector<std::string>& warnings) {
+  vtkDataArray* array = chosen.array;
+  const char* item = chosen.on_points ? "point" : "cell";
+  const vtkIdType n = array->GetNumberOfTuples();
+  const int components = array->GetNumberOfComponents();
+  std::vector<Sym3> tensors(static_cast<std::size_t>(n));
+  double worst = 0.0, worst_norm = 0.0;
+  vtkIdType worst_at = -1;
+  double t[9];
+  for (vtkIdType i = 0; i < n; ++i) {
+    array->GetTuple(i, t);
+    for (int c = 0; c < components; ++c) {
+      if (!std::isfinite(t[c])) {
+        std::ostringstream message;
+        message << path << ": array \"" << chosen.name << "\" has a non-finite value (" << t[c] << ") at "
+                << item << " " << i << ", component " << c;
+        throw DataError(message.str());
+      }
+    }
+    Sym3& s = tensors[std::size_t(i)];
+    if (components == 6) {
+      s = Sym3{t[0], t[1], t[2], t[3], t[4], t[5]};
+      continue;
+    }
+    // Row- or column-major does not matter: the symmetric part is the same.
+    Mat3 m;
+    for (int k = 0; k < 9; ++k) m(k / 3, k % 3) = t[k];
+    s = Sym3::symmetric_part(m);
+    const double asymmetry = (m - m.transpose()).cwiseAbs().maxCoeff();
+    if (asymmetry > worst) {
+      worst = asymmetry;
+      worst_at = i;
+      worst_norm = m.norm();
+    }
+  }
+  if (worst_at >= 0) {
+    std::ostringstream message;
+    message << path << ": array \"" << chosen.name << "\" is not symmetric; using its symmetric part "
+            << "(T + Tᵀ)/2. Largest asymmetry |T_ij − T_ji| = " << worst << " at " << item << " "
+            << worst_at << " (where |T| = " << worst_norm << ")";
+    warnings.push_back(message.str());
+  }
+  return tensors;
+}
+
+// The point-data version of a cell array, by VTK's averaging filter.
+ChosenArray averaged_onto_points(vtkDataSet* data, const ChosenArray& cells,
+                                 vtkSmartPointer<vtkDataSet>& keep_alive) {
+  vtkSmartPointer<vtkDataSet> only_this = vtkSmartPointer<vtkDataSet>::Take(data->NewInstance());
+  only_this->CopyStructure(data);
+  only_this->GetCellData()->AddArray(cells.array);
+  auto filter = vtkSmartPointer<vtkCellDataToPointData>::New();
+  filter->SetInputData(only_this);
+  filter->Update();
+  keep_alive = vtkDataSet::SafeDownCast(filter->GetOutputDataObject(0));
+  return {keep_alive->GetPointData()->GetArray(cells.array->GetName()), true, cells.name};
+}
+
+bool is_axis_aligned_image(vtkDataSet* data) {
+  auto* image = vtkImageData::SafeDownCast(data);
+  if (!image) return false;
+  vtkMatrix3x3* direction = image->GetDirectionMatrix();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (direction->GetElement(i, j) != (i == j ? 1.0 : 0.0)) return false;
+  const int* dims = image->GetDimensions();
+  return dims[0] >= 2 && dims[1] >= 2 && dims[2] >= 2;
+}
+
+TriangleMesh boundary_surface(vtkDataSet* data) {
+  auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
+  surface->SetInputData(data);
+  auto triangles = vtkSmartPointer<vtkTriangleFilter>::New();
+  triangles->SetInputConnection(surface->GetOutputPort());
+  triangles->PassVertsOff();
+  triangles->PassLinesOff();
+  triangles->Update();
+  vtkPolyData* poly = triangles->GetOutput();
+  TriangleMesh mesh;
+  mesh.vertices.reserve(std::size_t(poly->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i) {
+    double p[3];
+    poly->GetPoint(i, p);
+    mesh.vertices.emplace_back(p[0], p[1], p[2]);
+  }
+  vtkCellArray* polys = poly->GetPolys();
+  polys->InitTraversal();
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  while (polys->GetNextCell(count, ids)) {
+    if (count == 3) mesh.triangles.push_back({std::uint32_t(ids[0]), std::uint32_t(ids[1]), std::uint32_t(ids[2])});
+  }
+  return mesh;
+}
+
+}  // namespace
+
+VtkData load_vtk_data(const VtkFileSpec& spec) {
+  const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path);
+  VtkData out;
+  ChosenArray chosen = choose_tensor_array(data, spec);
+  vtkSmartPointer<vtkDataSet> averaged;
+  std::vector<Sym3> tensors = read_tensors(chosen, spec.path, out.warnings);
+  if (!chosen.on_points && spec.cell_tensors == CellTensors::averaged) {
+    // The checks and warnings above name cells, which the user can find;
+    // the averaged copy would only repeat them for points.
+    chosen = averaged_onto_points(data, chosen, averaged);
+    std::vector<std::string> repeated;
+    tensors = read_tensors(chosen, spec.path, repeated);
+  }
+
+  if (chosen.on_points && is_axis_aligned_image(data)) {
+    auto* image = vtkImageData::SafeDownCast(data);
+    const int* extent = image->GetExtent();
+    const double* origin = image->GetOrigin();
+    const double* spacing = image->GetSpacing();
+    const Vec3 first(origin[0] + extent[0] * spacing[0], origin[1] + extent[2] * spacing[1],
+                     origin[2] + extent[4] * spacing[2]);
+    const int* dims = image->GetDimensions();
+    out.field = std::make_unique<UniformGridField>(first, Vec3(spacing[0], spacing[1], spacing[2]),
+                                                   std::array<int, 3>{dims[0], dims[1], dims[2]},
+                                                   std::move(tensors));
+  } else {
+    out.field = std::make_unique<MeshField>(
+        chosen.on_points && averaged ? averaged.Get() : data.Get(), std::move(tensors),
+        chosen.on_points ? TensorLocation::points : TensorLocation::cells);
+  }
+  out.boundary = boundary_surface(data);
+  return out;
+}
+
+std::string describe_vtk_file(const VtkFileSpec& spec) {
+  const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path);
+  std::ostringstream out;
+  double b[6];
+  data->GetBounds(b);
+  out << spec.path << ": " << data->GetClassName() << "\n";
+  out << "  bounds    x [" << b[0] << ", " << b[1] << "]  y [" << b[2] << ", " << b[3] << "]  z [" << b[4]
+      << ", " << b[5] << "]\n";
+  out << "  points    " << data->GetNumberOfPoints() << "\n";
+  out << "  cells     " << data->GetNumberOfCells();
+  std::map<std::string, vtkIdType> types;
+  for (vtkIdType i = 0; i < data->GetNumberOfCells(); ++i)
+    ++types[vtkCellTypes::GetClassNameFromTypeId(data->GetCellType(i))];
+  const char* separator = ": ";
+  for (const auto& [name, count] : types) {
+    out << separator << count << " " << name;
+    separator = ", ";
+  }
+  out << "\n  arrays    " << list_arrays(data) << "\n";
+
+  std::vector<std::string> warnings;
+  const ChosenArray chosen = choose_tensor_array(data, spec);
+  const std::vector<Sym3> tensors = read_tensors(chosen, spec.path, warnings);
+  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
+  for (const Sym3& s : tensors) {
+    const Vec3 values = decompose(s).values;
+    lo = lo.cwiseMin(values);
+    hi = hi.cwiseMax(values);
+  }
+  out << "  tensors   \"" << chosen.name << "\" (" << chosen.array->GetNumberOfComponents() << " components, "
+      << (chosen.on_points ? "point" : "cell") << " data)\n";
+  const char* names[3] = {"λ1 (major) ", "λ2 (medium)", "λ3 (minor) "};
+  for (int k = 0; k < 3; ++k) out << "  " << names[k] << " [" << lo[k] << ", " << hi[k] << "]\n";
+  for (const std::string& w : warnings) out << "  warning: " << w << "\n";
+  return out.str();
+}
+
+}  // namespace hsb

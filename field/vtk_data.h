@@ -1,0 +1,56 @@
+#pragma once
+// Tensor data from VTK files: legacy .vtk (ASCII or binary) and XML .vti,
+// .vtu, .vts, .vtr (ASCII, binary, appended, zlib-compressed), read by VTK's
+// own readers. No VTK type appears in this header.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "field/tensor_field.h"
+#include "field/triangle_mesh.h"
+
+namespace hsb {
+
+enum class TensorAssociation {
+  automatic,  // point data if the array is there, else cell data
+  point,
+  cell,
+};
+
+// How cell-data tensors are sampled.
+enum class CellTensors {
+  constant,  // piecewise constant: the tensor of the containing cell
+  averaged,  // averaged onto the points (VTK's cell-data-to-point-data), then
+             // interpolated like point data
+};
+
+struct VtkFileSpec {
+  std::string path;
+  std::string array;  // "" = the data set's active tensors
+  TensorAssociation association = TensorAssociation::automatic;
+  CellTensors cell_tensors = CellTensors::constant;
+};
+
+struct VtkData {
+  std::unique_ptr<TensorField> field;
+  TriangleMesh boundary;              // the data set's outer surface
+  std::vector<std::string> warnings;  // e.g. a non-symmetric tensor array
+};
+
+// Reads the file and its tensors. Tensors with 9 components are replaced by
+// their symmetric part (paper eq. 2), with one warning giving the largest
+// asymmetry; 6 components are read in VTK's order XX, YY, ZZ, XY, YZ, XZ.
+// Throws DataError naming the file (and point or cell) for an unreadable
+// file, a missing array (listing those present), a wrong component count or
+// a non-finite value. Uniform image data with point tensors is sampled
+// trilinearly; any other data set through a cell locator and the cells' own
+// interpolation functions.
+VtkData load_vtk_data(const VtkFileSpec& spec);
+
+// What `hsb info` prints for a data file: kind, bounds, cell types and
+// counts, arrays, and the range of each eigenvalue of the chosen tensors.
+std::string describe_vtk_file(const VtkFileSpec& spec);
+
+}  // namespace hsb
