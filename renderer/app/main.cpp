@@ -3,11 +3,15 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <filesystem>
 #include <exception>
 #include <string>
 #include <vector>
 
+#include "field/data_info.h"
+#include "renderer/app/export_job.h"
 #include "renderer/app/render_job.h"
+#include "renderer/scene/scene_spec.h"
 #include "renderer/scene/scene_error.h"
 
 #ifndef HSB_VERSION
@@ -70,20 +74,76 @@ int main(int argc, char** argv) {
   render->add_flag("--stats", stats,
                    "Also print ray counts, support intervals and field evaluations per ray");
 
+  CLI::App* info = app.add_subcommand(
+      "info", "Describe a data set: kind, bounds, cell types and counts, arrays, eigenvalue ranges.");
+  std::vector<std::string> info_inputs;
+  std::string info_array;
+  info->add_option("inputs", info_inputs, "Data files (.vtk .vti .vtu .vts .vtr) or scene files (.toml)")
+      ->required();
+  info->add_option("--array", info_array, "Tensor array of a data file (default: its active tensors)");
+
+  CLI::App* exporter = app.add_subcommand(
+      "export", "Write each scene's trajectories and sources as VTK PolyData (.vtp) for ParaView.");
+  std::vector<std::string> export_scenes;
+  std::string export_dir = "out";
+  std::vector<std::string> export_overrides;
+  std::string format = "vtp";
+  exporter->add_option("scenes", export_scenes, "Scene files (.toml)")->required();
+  exporter->add_option("-o,--output", export_dir, "Folder for the files")->capture_default_str();
+  exporter->add_option("--set", export_overrides, "Override a scene key, as for render")
+      ->allow_extra_args(false);
+  exporter->add_option("--format", format, "Output format")->check(CLI::IsMember({"vtp"}))->capture_default_str();
+  exporter->footer(
+      "Writes <scene>_trajectories.vtp (polylines, arc length) and <scene>_sources.vtp (points with\n"
+      "tensor, eigenvalues, radii, scalar, and active tensors \"glyph\" scaled so that ParaView's\n"
+      "Tensor Glyph filter draws the same ellipsoids as an isolated source here).");
+
   CLI11_PARSE(app, argc, argv);
 
-  int failures = 0;
-  for (const std::string& scene : scenes) {
-    try {
-      print_summary(hsb::run_render_job({scene, overrides, output_dir}), stats);
-    } catch (const hsb::SceneError& e) {
-      std::fprintf(stderr, "hsb: %s\n", e.what());
-      ++failures;
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "hsb: %s: %s\n", scene.c_str(), e.what());
-      ++failures;
+  // Runs `work` for each input, reporting each failure once; returns the exit status.
+  auto for_each = [](const std::vector<std::string>& inputs, const char* noun, auto&& work) {
+    int failures = 0;
+    for (const std::string& input : inputs) {
+      try {
+        work(input);
+      } catch (const hsb::SceneError& e) {
+        std::fprintf(stderr, "hsb: %s\n", e.what());
+        ++failures;
+      } catch (const std::exception& e) {
+        // Data errors already start with the data file's path; name the
+        // input only when it adds something.
+        const std::string message = e.what();
+        if (message.rfind(input + ":", 0) == 0)
+          std::fprintf(stderr, "hsb: %s\n", message.c_str());
+        else
+          std::fprintf(stderr, "hsb: %s: %s\n", input.c_str(), message.c_str());
+        ++failures;
+      }
     }
+    if (failures) std::fprintf(stderr, "hsb: %d of %zu %s failed\n", failures, inputs.size(), noun);
+    return failures ? 1 : 0;
+  };
+
+  if (*info) {
+    return for_each(info_inputs, "inputs", [&](const std::string& input) {
+      hsb::DataSpec data;
+      if (std::filesystem::path(input).extension() == ".toml") {
+        data = hsb::load_scene(input).pipeline.data;
+      } else {
+        data.kind = hsb::DataKind::vtk_file;
+        data.file.path = input;
+        data.file.array = info_array;
+      }
+      std::fputs(hsb::describe_data(data).c_str(), stdout);
+    });
   }
-  if (failures) std::fprintf(stderr, "hsb: %d of %zu scenes failed\n", failures, scenes.size());
-  return failures ? 1 : 0;
+  if (*exporter) {
+    return for_each(export_scenes, "scenes", [&](const std::string& scene) {
+      for (const std::string& path : hsb::run_export_job({scene, export_overrides, export_dir}))
+        std::printf("%s\n", path.c_str());
+    });
+  }
+  return for_each(scenes, "scenes", [&](const std::string& scene) {
+    print_summary(hsb::run_render_job({scene, overrides, output_dir}), stats);
+  });
 }

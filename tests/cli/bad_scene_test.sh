@@ -43,4 +43,15 @@ grep -q "render.width must be" "$work/err" || fail "unexpected message: $(cat "$
 
 "$hsb" render "$work/missing.toml" -o "$work/out" 2> "$work/err"
 [[ $? -ne 0 ]] || fail "exit status 0 for a missing scene"
+# info and export on the project's real data.
+src=$(cd "$(dirname "$0")/../.." && pwd)
+"$hsb" info "$src/scenes/data/cylinder_stress_coarse.vtu" > "$work/info" 2>&1 || fail "info: $(cat "$work/info")"
+grep -q "10784 vtkTetra" "$work/info" || fail "info lacks the cell types: $(cat "$work/info")"
+grep -q "stress\" (9 components, point data)" "$work/info" || fail "info lacks the tensors: $(cat "$work/info")"
+"$hsb" info "$src/scenes/data/cylinder_stress_coarse.vtu" --array nope 2> "$work/err"
+[[ $? -ne 0 ]] || fail "info with a missing array exited 0"
+grep -q 'no array named "nope"; the file has point data: stress' "$work/err" || fail "unexpected: $(cat "$work/err")"
+"$hsb" export "$src/scenes/fig10_cylinder_ellipsoids.toml" -o "$work/export" > "$work/log" 2>&1 || fail "export: $(cat "$work/log")"
+[[ -s "$work/export/fig10_cylinder_ellipsoids_sources.vtp" && -s "$work/export/fig10_cylinder_ellipsoids_trajectories.vtp" ]] \
+  || fail "export wrote: $(ls "$work/export")"
 echo "PASS"

@@ -244,3 +244,48 @@ TEST(PointLoad, RejectsBadSpecs) {
 
 }  // namespace
 }  // namespace hsb
+
+// An independent reference: VTK's own vtkPointLoad on the same domain.
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+#include <vtkPointLoad.h>
+#include <vtkSmartPointer.h>
+
+namespace hsb {
+namespace {
+
+TEST(PointLoad, AgreesWithVtkPointLoad) {
+  PointLoadSpec spec;
+  spec.bounds = Box3{Vec3(-1, -2, -1.5), Vec3(1, 2, 0.5)};
+  spec.load = 3.0;
+  spec.poisson_ratio = 0.27;
+  const PointLoadField field(spec);
+
+  auto vtk = vtkSmartPointer<vtkPointLoad>::New();
+  vtk->SetModelBounds(-1, 1, -2, 2, -1.5, 0.5);
+  vtk->SetLoadValue(3.0);
+  vtk->SetPoissonsRatio(0.27);
+  vtk->SetSampleDimensions(9, 10, 11);
+  vtk->ComputeEffectiveStressOff();
+  vtk->Update();
+  vtkImageData* image = vtk->GetOutput();
+  vtkDataArray* tensors = image->GetPointData()->GetTensors();
+  int compared = 0;
+  for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i) {
+    double p[3], t[9];
+    image->GetPoint(i, p);
+    const Vec3 x(p[0], p[1], p[2]);
+    if ((x - field.load_point()).norm() < 0.1) continue;  // VTK puts FLT_MAX at the load
+    tensors->GetTuple(i, t);
+    const Sym3 ours = field.stress(x);
+    const Sym3 theirs{t[0], t[4], t[8], t[1], t[5], t[2]};
+    // VTK stores single precision.
+    EXPECT_LT((ours.matrix() - theirs.matrix()).norm(), 1e-5 * (1.0 + ours.frobenius_norm())) << x.transpose();
+    ++compared;
+  }
+  EXPECT_GT(compared, 900);
+}
+
+}  // namespace
+}  // namespace hsb

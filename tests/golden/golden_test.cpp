@@ -59,7 +59,7 @@ TEST_P(Golden, MatchesReviewedImage) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, Golden,
                          ::testing::Values("ellipsoids_at_seeds", "hyperstreamlines_quartic",
-                                           "union_of_ellipsoids"),
+                                           "union_of_ellipsoids", "cylinder_hyperstreamlines"),
                          [](const ::testing::TestParamInfo<std::string>& param) { return param.param; });
 
 }  // namespace

@@ -1,0 +1,24 @@
+#pragma once
+// Trajectories and sources as VTK PolyData (.vtp), so the same sources can
+// be inspected in ParaView (its Tensor Glyph filter draws them).
+
+#include <string>
+
+#include "field/glyph_pipeline.h"
+
+namespace hsb {
+
+// Writes two XML PolyData files (each complete or not at all):
+//  - `trajectories_path`: one polyline per trajectory, with point data
+//    "arc_length" and cell data "trajectory";
+//  - `sources_path`: one vertex per source with point data "tensor" (the
+//    tensor, V diag(λ) Vᵀ, 9 components), "eigenvalues", "radii" (r_k of the
+//    mapping), "scalar" (the colour scalar) and the active tensors "glyph" =
+//    V diag(glyph_scale · r_k) Vᵀ. ParaView's Tensor Glyph (sphere source of
+//    radius ½, eigenvalue extraction on, no colouring by eigenvalues) then
+//    draws ellipsoids with semi-axes glyph_scale·r_k/2.
+// Throws DataError when a file cannot be written.
+void write_glyph_scene_vtp(const GlyphScene& scene, double glyph_scale,
+                           const std::string& trajectories_path, const std::string& sources_path);
+
+}  // namespace hsb
