@@ -27,11 +27,35 @@ LoadedField make_field(const DataSpec& spec) {
 
 namespace {
 
-std::vector<Vec3> all_seeds(const GlyphPipelineSpec& spec) {
+// The default seeding: 5×5 on the middle cross-section across the longest
+// axis of the bounds, in bounds fractions.
+SeedGridSpec default_seed_grid(const Box3& bounds) {
+  Eigen::Index longest = 0;
+  bounds.size().maxCoeff(&longest);
+  const Eigen::Index u = (longest + 1) % 3, v = (longest + 2) % 3;
+  SeedGridSpec grid;
+  grid.corner = Vec3::Zero();
+  grid.corner[longest] = 0.5;
+  grid.edge_u = Vec3::Unit(u);
+  grid.edge_v = Vec3::Unit(v);
+  grid.n = grid.m = 5;
+  return grid;
+}
+
+std::vector<Vec3> all_seeds(const GlyphPipelineSpec& spec, const Box3& bounds) {
   std::vector<Vec3> seeds = spec.seed_points;
-  for (const SeedGridSpec& g : spec.seed_grids) {
+  std::vector<SeedGridSpec> grids = spec.seed_grids;
+  SeedFrame frame = spec.seed_frame;
+  if (seeds.empty() && grids.empty()) {
+    grids.push_back(default_seed_grid(bounds));
+    frame = SeedFrame::bounds;
+  }
+  for (const SeedGridSpec& g : grids) {
     const std::vector<Vec3> grid = grid_seeds(g.corner, g.edge_u, g.edge_v, g.n, g.m);
     seeds.insert(seeds.end(), grid.begin(), grid.end());
+  }
+  if (frame == SeedFrame::bounds) {
+    for (Vec3& s : seeds) s = bounds.lo + bounds.size().cwiseProduct(s);
   }
   return seeds;
 }
@@ -41,10 +65,9 @@ std::vector<Vec3> all_seeds(const GlyphPipelineSpec& spec) {
 GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec_in) {
   LoadedField loaded = make_field(spec_in.data);
   const TensorField* field = loaded.field.get();
-  const std::vector<Vec3> seeds = all_seeds(spec_in);
-
   GlyphScene scene;
   scene.domain = field->bounds();
+  const std::vector<Vec3> seeds = all_seeds(spec_in, scene.domain);
   scene.boundary = std::move(loaded.boundary);
   scene.warnings = std::move(loaded.warnings);
 

@@ -36,6 +36,13 @@ struct SeedGridSpec {
   int m = 3;
 };
 
+// The coordinates seeds are given in.
+enum class SeedFrame {
+  world,   // the data's own coordinates
+  bounds,  // fractions of the data's bounding box: (0,0,0) its low corner,
+           // (1,1,1) its high corner, so a scene fits any data set
+};
+
 enum class SourcePlacement {
   along_trajectories,  // hyperstreamballs: sources spaced along tensor lines
   at_seeds,            // one glyph per seed point: classic ellipsoid glyphs
@@ -46,8 +53,12 @@ enum class SourcePlacement {
 // trajectory.max_length = 2 D, spacing = D/40).
 struct GlyphPipelineSpec {
   DataSpec data;
+  // With neither points nor grids, a 5×5 grid on the cross-section through
+  // the middle of the bounding box, across its longest axis: trajectories
+  // along the body of a bar, beam or rail.
   std::vector<Vec3> seed_points;
   std::vector<SeedGridSpec> seed_grids;
+  SeedFrame seed_frame = SeedFrame::world;
   TrajectoryOptions trajectory;
   SourcePlacement placement = SourcePlacement::along_trajectories;
   double spacing = 0.0;

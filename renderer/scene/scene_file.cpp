@@ -80,6 +80,8 @@ void read_data(TableReader& data, DataSpec& spec, const std::string& scene_path)
 }
 
 void read_seeds(TableReader& seeds, GlyphPipelineSpec& spec) {
+  spec.seed_frame = seeds.choice("frame", SeedFrame::world,
+                                 {{"world", SeedFrame::world}, {"bounds", SeedFrame::bounds}});
   spec.seed_points = seeds.points("points");
   for (TableReader& grid : seeds.tables("grid")) {
     SeedGridSpec g;
@@ -260,8 +262,6 @@ SceneSpec load_scene(const std::string& path, const std::vector<std::string>& ov
   if (auto o = top.table("output")) read_output(*o, spec.output, path);
   top.finish();
 
-  if (spec.pipeline.seed_points.empty() && spec.pipeline.seed_grids.empty())
-    throw SceneError(path + ": the scene has no seeds (add seeds.points or a [[seeds.grid]])");
   return spec;
 }
 

@@ -161,9 +161,26 @@ TEST_F(SceneFile, BadOverrideNamesTheOverride) {
   EXPECT_NE(error_of(minimal, {"nonsense"}).find("expected key.path=value"), std::string::npos);
 }
 
-TEST_F(SceneFile, MissingFileAndMissingSeeds) {
-  EXPECT_THROW(load_scene("/nonexistent/scene.toml"), SceneError);
-  EXPECT_NE(error_of("[glyphs]\nspacing = 0.1\n").find("no seeds"), std::string::npos);
+TEST_F(SceneFile, MissingFile) { EXPECT_THROW(load_scene("/nonexistent/scene.toml"), SceneError); }
+
+// A user's own data with nothing but its path: automatic seeds, lengths and
+// camera give a picture.
+TEST_F(SceneFile, OnlyADataPathIsEnoughForAPicture) {
+  const std::string data = std::string(HSB_SOURCE_DIR) + "/scenes/data/cylinder_stress_coarse.vtu";
+  const SceneSpec spec = load_scene(write("[data]\nkind = \"vtk\"\nfile = \"" + data + "\"\n"));
+  const GlyphScene glyphs = build_glyph_scene(spec.pipeline);
+  EXPECT_GE(glyphs.trajectories.size(), 9u);  // 5×5 seeds on the middle cross-section, some outside the round body
+  EXPECT_GT(glyphs.sources.size(), 100u);
+  for (const Trajectory& t : glyphs.trajectories)
+    EXPECT_NEAR(t.points[t.seed_index].x(), 0.05, 1e-9);  // the middle of x ∈ [0, 0.1]
+}
+
+TEST_F(SceneFile, SeedsInBoundsFractions) {
+  const SceneSpec spec = load_scene(write("[data]\nbounds = [0, 2, 0, 4, 0, 8]\n[seeds]\nframe = \"bounds\"\n"
+                                          "points = [[0.5, 0.25, 0.5]]\n[glyphs]\nplacement = \"seeds\"\n"));
+  const GlyphScene glyphs = build_glyph_scene(spec.pipeline);
+  ASSERT_EQ(glyphs.sources.size(), 1u);
+  EXPECT_LT((glyphs.sources[0].centre - Vec3(1, 1, 4)).norm(), 1e-12);
 }
 
 TEST_F(SceneFile, CrossKeyChecksAreLocated) {
