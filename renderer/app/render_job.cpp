@@ -97,7 +97,10 @@ RenderSummary run_render_job(const RenderJob& job) {
   shading.background = color.to_scene_linear(shading.background);
   shading.box_color = color.to_scene_linear(shading.box_color);
   const double diagonal = glyphs.domain.diagonal();
-  const TraceSettings trace{spec.min_step * diagonal, spec.max_steps};
+  TraceSettings trace;
+  trace.intersector = spec.intersector;
+  trace.min_step = spec.min_step * diagonal;
+  trace.max_steps = spec.max_steps;
   static const EmbreeDevice device;
   const RayScene scene(device, field, glyphs.domain, shading, trace,
                        glyphs.boundary ? &*glyphs.boundary : nullptr);

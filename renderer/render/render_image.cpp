@@ -14,7 +14,7 @@ namespace hsb {
 namespace {
 
 struct ThreadState {
-  SphereTracer tracer;
+  FieldRay tracer;
   TraceStats stats;
   std::uint64_t primary_rays = 0;
   std::uint64_t shadow_rays = 0;

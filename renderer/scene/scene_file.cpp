@@ -189,6 +189,11 @@ void read_render(TableReader& r, SceneSpec& spec) {
   spec.shading.shell_opacity = r.number("shell_opacity", spec.shading.shell_opacity, {0.0, 1.0, false});
   spec.shading.shell_edge_opacity =
       r.number("shell_edge_opacity", spec.shading.shell_edge_opacity, {0.0, 1.0, false});
+  spec.intersector = r.choice("intersector", spec.intersector,
+                              {{"sphere", Intersector::sphere}, {"exact", Intersector::exact}});
+  if (spec.intersector == Intersector::exact && !exact_crossing_supported(spec.surface.kernel, spec.surface.blend))
+    r.fail_at("intersector", "= \"exact\" needs surface.kernel \"wyvill\" or \"quartic\" (or surface.blend = \"max\"): "
+                             "blinn's exponential is not a polynomial along a ray");
   spec.min_step = r.number("min_step", spec.min_step, positive);
   spec.max_steps = r.integer("max_steps", spec.max_steps, 1);
   r.finish();

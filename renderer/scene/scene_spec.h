@@ -12,7 +12,7 @@
 #include "renderer/render/render_image.h"
 #include "renderer/render/shading.h"
 #include "renderer/surface/blob_field.h"
-#include "renderer/surface/sphere_tracer.h"
+#include "renderer/surface/field_ray.h"
 
 namespace hsb {
 
@@ -46,6 +46,7 @@ struct SceneSpec {
   std::optional<Vec3> camera_position, camera_look_at;  // nullopt: framed on the data
   ShadingSpec shading;  // background and box colours still in display terms
   RenderSettings render;
+  Intersector intersector = Intersector::sphere;
   double min_step = 1e-6;  // sphere tracer's smallest step, × domain diagonal
   int max_steps = 200000;
   OutputSpec output;

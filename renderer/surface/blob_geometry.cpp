@@ -89,7 +89,7 @@ void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
 }
 
 void BlobGeometry::collect_spans(const Vec3& o, const Vec3& d, double tmin, double tmax,
-                                 SphereTracer& tracer) const {
+                                 FieldRay& tracer) const {
   tracer.spans.clear();
   SpanQueryContext query;
   rtcInitIntersectContext(&query.embree);
@@ -110,7 +110,7 @@ void BlobGeometry::collect_spans(const Vec3& o, const Vec3& d, double tmin, doub
 }
 
 double BlobGeometry::first_crossing(const Vec3& o, const Vec3& d, double tmin, double tmax,
-                                    SphereTracer& tracer, TraceStats& stats) const {
+                                    FieldRay& tracer, TraceStats& stats) const {
   collect_spans(o, d, tmin, tmax, tracer);
   if (tracer.spans.empty()) return -1.0;
   return tracer.first_crossing(field_, tmin, tmax, settings_, stats);

@@ -13,7 +13,7 @@
 #include <embree3/rtcore.h>
 
 #include "renderer/surface/blob_field.h"
-#include "renderer/surface/sphere_tracer.h"
+#include "renderer/surface/field_ray.h"
 
 namespace hsb {
 
@@ -22,14 +22,14 @@ namespace hsb {
 // to the callbacks, so it has to be the first member.
 struct FieldRayContext {
   RTCIntersectContext embree;
-  SphereTracer* tracer = nullptr;  // per-thread scratch
+  FieldRay* tracer = nullptr;  // per-thread scratch
   TraceStats* stats = nullptr;     // per-thread counters
   // Filled when the field geometry accepts a hit (valid while the ray's
   // geomID is the field's).
   double t = 0.0;
   SurfaceSample surface;
 
-  FieldRayContext(SphereTracer& scratch, TraceStats& counters) : tracer(&scratch), stats(&counters) {
+  FieldRayContext(FieldRay& scratch, TraceStats& counters) : tracer(&scratch), stats(&counters) {
     rtcInitIntersectContext(&embree);
   }
 };
@@ -50,11 +50,11 @@ class BlobGeometry {
   // Collects into tracer.spans every source whose support the ray
   // o + t d crosses within [tmin, tmax]. Public for the tests.
   void collect_spans(const Vec3& o, const Vec3& d, double tmin, double tmax,
-                     SphereTracer& tracer) const;
+                     FieldRay& tracer) const;
 
   // The first crossing of F = C along the ray, or a negative value.
   double first_crossing(const Vec3& o, const Vec3& d, double tmin, double tmax,
-                        SphereTracer& tracer, TraceStats& stats) const;
+                        FieldRay& tracer, TraceStats& stats) const;
 
  private:
   static void span_bounds(const RTCBoundsFunctionArguments* args);

@@ -38,12 +38,18 @@ Mat3 random_rotation(std::mt19937& rng) {
 
 // Traces one ray through the scene; returns the field hit distance or −1.
 double trace(const RayScene& scene, const Vec3& o, const Vec3& d) {
-  SphereTracer tracer;
+  FieldRay tracer;
   TraceStats stats;
   FieldRayContext context(tracer, stats);
   RTCRayHit rh = make_embree_ray(o, d, 0.0f, INFINITY);
   rtcIntersect1(scene.get(), &context.embree, &rh);
   return rh.hit.geomID == scene.field_id() ? context.t : -1.0;
+}
+
+TraceSettings sphere_settings(double min_step) {
+  TraceSettings t;
+  t.min_step = min_step;
+  return t;
 }
 
 ShadingSpec no_context_geometry() {
@@ -73,7 +79,7 @@ TEST_P(IsolatedGlyph, SphereTracedHitIsTheExactEllipsoid) {
     field.kernel = kernel;
     field.isovalue = C;
     field.sources.push_back(make_blob_source(centre, axes, radii, R, {1, 1, 1}));
-    const RayScene scene(device, field, Box3{}, no_context_geometry(), TraceSettings{1e-6 * scene_size, 200000});
+    const RayScene scene(device, field, Box3{}, no_context_geometry(), sphere_settings(1e-6 * scene_size));
     const Vec3 semi_axes = R * kernel_level_radius(kernel, C) * radii;
 
     for (int i = 0; i < 500; ++i, ++rays) {
@@ -144,7 +150,7 @@ TEST(Blending, ColourIsTheInfluenceWeightedMixAndNormalIsTheGradient) {
   pair.sources.push_back(make_blob_source(Vec3(-0.55, 0, 0), Mat3::Identity(), Vec3::Ones(), 1.0, {1, 0, 0}));
   pair.sources.push_back(make_blob_source(Vec3(0.55, 0, 0), Mat3::Identity(), Vec3::Ones(), 1.0, {0, 0, 1}));
   const Vec3 o(-0.1, -5, 0), d(0, 1, 0);
-  SphereTracer tracer;
+  FieldRay tracer;
   TraceStats stats;
   for (std::uint32_t i = 0; i < 2; ++i) {
     RaySpan span;

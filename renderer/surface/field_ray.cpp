@@ -1,4 +1,4 @@
-#include "renderer/surface/sphere_tracer.h"
+#include "renderer/surface/field_ray.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 namespace hsb {
 
-double SphereTracer::value_at(const BlobField& field, double t, TraceStats& stats) const {
+double FieldRay::value_at(const BlobField& field, double t, TraceStats& stats) const {
   ++stats.field_evaluations;
   stats.kernel_evaluations += active_.size();
   double f = 0.0;
@@ -24,7 +24,7 @@ double SphereTracer::value_at(const BlobField& field, double t, TraceStats& stat
 // most √a. Past t_c a source only falls, whichever segment we are in, so
 // dropping it keeps the bound valid for the rest of the ray: it is one-sided,
 // which is all that stepping towards F = C from below needs.
-double SphereTracer::slope_bound_at(const BlobField& field, double t) const {
+double FieldRay::slope_bound_at(const BlobField& field, double t) const {
   double rate = 0.0;
   for (std::uint32_t i : active_) {
     const RaySpan& s = spans[i];
@@ -36,7 +36,7 @@ double SphereTracer::slope_bound_at(const BlobField& field, double t) const {
 
 // Illinois (modified regula falsi) on a bracket F(lo) < C ≤ F(hi): superlinear
 // like the secant method, yet it never leaves the bracket.
-double SphereTracer::refine(const BlobField& field, double lo, double hi, double f_lo,
+double FieldRay::refine(const BlobField& field, double lo, double hi, double f_lo,
                             double f_hi, TraceStats& stats) const {
   const double c = field.isovalue;
   double r_lo = f_lo - c, r_hi = f_hi - c;
@@ -59,67 +59,81 @@ double SphereTracer::refine(const BlobField& field, double lo, double hi, double
   return hi;
 }
 
-double SphereTracer::first_crossing(const BlobField& field, double tmin, double tmax,
-                                    const TraceSettings& settings, TraceStats& stats) {
+double FieldRay::first_crossing(const BlobField& field, double tmin, double tmax,
+                                const TraceSettings& settings, TraceStats& stats) {
+  return settings.intersector == Intersector::exact ? exact_crossing(field, tmin, tmax, stats)
+                                                    : sphere_trace(field, tmin, tmax, settings, stats);
+}
+
+void FieldRay::begin_segments(double tmin, TraceStats& stats) {
   ++stats.field_rays;
   stats.spans += spans.size();
-  std::sort(spans.begin(), spans.end(),
-            [](const RaySpan& x, const RaySpan& y) { return x.t0 < y.t0; });
+  std::sort(spans.begin(), spans.end(), [](const RaySpan& x, const RaySpan& y) { return x.t0 < y.t0; });
   active_.clear();
+  next_ = 0;
+  cursor_ = tmin;
+}
 
-  const double c = field.isovalue;
+bool FieldRay::next_segment(double tmax, double& start, double& end) {
   const std::size_t n = spans.size();
-  std::size_t next = 0;  // first span not yet activated
-  double t = tmin;
-  double t_prev = tmin, f_prev = 0.0;
-  bool have_prev = false;
-
-  for (int step = 0; step < settings.max_steps; ++step) {
-    if (active_.empty()) {
-      if (next == n) return -1.0;  // no support left: F = 0 < C for the rest
-      if (spans[next].t0 > t) {
-        // F is zero in the gap, so nothing can be crossed there.
-        t = spans[next].t0;
-        t_prev = t;
-        f_prev = 0.0;
-        have_prev = true;
-      }
-    }
-    while (next < n && spans[next].t0 <= t) active_.push_back(static_cast<std::uint32_t>(next++));
-
-    const double f = value_at(field, t, stats);
-    if (f >= c) {
-      if (!have_prev) return t;  // the ray starts inside the surface
-      return refine(field, t_prev, t, f_prev, f, stats);
-    }
-    if (t >= tmax) return -1.0;
-
-    // Sources whose support ends here contribute K(1) = 0 from now on.
+  double t = cursor_;
+  for (;;) {
+    // Sources whose support has ended contribute K(1) = 0 from here on.
     active_.erase(std::remove_if(active_.begin(), active_.end(),
                                  [&](std::uint32_t i) { return spans[i].t1 <= t; }),
                   active_.end());
-
-    // The bound holds until the active set grows (the next span starts);
-    // spans that end only make F smaller, but their ends are cheap to
-    // respect and keep each segment's set exact.
-    double segment_end = tmax;
-    if (next < n) segment_end = std::min(segment_end, spans[next].t0);
-    for (std::uint32_t i : active_) segment_end = std::min(segment_end, spans[i].t1);
-
-    const double rate = slope_bound_at(field, t);
-    double dt = rate > 0.0 ? (c - f) / rate : std::numeric_limits<double>::infinity();
-    dt = std::max(dt, settings.min_step);
-
-    t_prev = t;
-    f_prev = f;
-    have_prev = true;
-    t = std::min(t + dt, segment_end);
+    if (active_.empty()) {
+      if (next_ == n) return false;
+      t = std::max(t, spans[next_].t0);  // F is zero in the gap: skip it
+    }
+    while (next_ < n && spans[next_].t0 <= t) {
+      if (spans[next_].t1 > t) active_.push_back(static_cast<std::uint32_t>(next_));
+      ++next_;
+    }
+    if (t >= tmax) return false;
+    if (!active_.empty()) break;
   }
-  ++stats.step_limit_hits;
+  end = tmax;
+  if (next_ < n) end = std::min(end, spans[next_].t0);
+  for (std::uint32_t i : active_) end = std::min(end, spans[i].t1);
+  start = t;
+  cursor_ = end;
+  return true;
+}
+
+double FieldRay::sphere_trace(const BlobField& field, double tmin, double tmax,
+                              const TraceSettings& settings, TraceStats& stats) {
+  begin_segments(tmin, stats);
+  const double c = field.isovalue;
+  int steps = 0;
+  double start, end;
+  while (next_segment(tmax, start, end)) {
+    double t = start;
+    double f = value_at(field, t, stats);
+    // Each segment begins where the previous one was found outside (or F is
+    // zero before it), so this is the ray starting inside the surface, or a
+    // crossing exactly on a segment boundary.
+    if (f >= c) return t;
+    // Within a segment the active set, and so the slope bound, is fixed.
+    while (t < end) {
+      if (++steps > settings.max_steps) {
+        ++stats.step_limit_hits;
+        return -1.0;
+      }
+      const double rate = slope_bound_at(field, t);
+      double dt = rate > 0.0 ? (c - f) / rate : std::numeric_limits<double>::infinity();
+      dt = std::max(dt, settings.min_step);
+      const double t_next = std::min(t + dt, end);
+      const double f_next = value_at(field, t_next, stats);
+      if (f_next >= c) return refine(field, t, t_next, f, f_next, stats);
+      t = t_next;
+      f = f_next;
+    }
+  }
   return -1.0;
 }
 
-SurfaceSample SphereTracer::surface_at(const BlobField& field, const Vec3& origin,
+SurfaceSample FieldRay::surface_at(const BlobField& field, const Vec3& origin,
                                        const Vec3& direction, double t) const {
   const Vec3 x = origin + t * direction;
   Vec3 gradient = Vec3::Zero();

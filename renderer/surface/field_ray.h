@@ -1,7 +1,12 @@
 #pragma once
-// The first crossing F(t) = C along a ray, found by sphere tracing with the
-// directional step bound of design §5 (segment tracing specialised to
-// metaballs), and the surface's normal and colour there.
+// The blob field seen along one ray: the sources whose support the ray
+// crosses, the first crossing F(t) = C among them, and the surface's normal
+// and colour there. Two ways to find the crossing:
+//  - sphere tracing with the directional step bound of design §5 (segment
+//    tracing specialised to metaballs), field_ray.cpp; any kernel;
+//  - exactly, exact_crossing.cpp: between consecutive support endpoints F is
+//    one polynomial in t for the polynomial kernels, whose first root is
+//    isolated by Bernstein subdivision.
 
 #include <array>
 #include <vector>
@@ -12,7 +17,10 @@
 
 namespace hsb {
 
+enum class Intersector { sphere, exact };
+
 struct TraceSettings {
+  Intersector intersector = Intersector::sphere;
   // Smallest step the tracer takes, in world units. A crossing that enters
   // and leaves the surface within this distance can be missed; every other
   // crossing is found and then refined to full precision.
@@ -29,16 +37,23 @@ struct SurfaceSample {
 
 // Scratch space for one ray at a time; keep one per thread and reuse it so
 // the hot loop never allocates.
-class SphereTracer {
+class FieldRay {
  public:
   // The caller fills these with every source whose support the ray crosses
   // within [tmin, tmax] (in any order), then calls first_crossing().
   std::vector<RaySpan> spans;
 
   // Returns the smallest t in [tmin, tmax] with F(t) ≥ C (the ray's first
-  // entry into the surface), or a negative value when there is none.
+  // entry into the surface), or a negative value when there is none, by the
+  // method settings.intersector names.
   double first_crossing(const BlobField& field, double tmin, double tmax,
                         const TraceSettings& settings, TraceStats& stats);
+  double sphere_trace(const BlobField& field, double tmin, double tmax,
+                      const TraceSettings& settings, TraceStats& stats);
+  // Exact for `wyvill` and `quartic` under blend = "sum", and for every
+  // kernel under blend = "max" (a union of ellipsoids). Only crossings where
+  // F − C changes sign count: a surface the ray merely touches is no hit.
+  double exact_crossing(const BlobField& field, double tmin, double tmax, TraceStats& stats);
 
   // Normal and colour at ray parameter t; uses the spans of the last
   // first_crossing() call, which cover every source that is non-zero there.
@@ -46,12 +61,24 @@ class SphereTracer {
                            double t) const;
 
  private:
+  // The walk over segments shared by both methods: between consecutive
+  // support endpoints the set of active sources (active_) is fixed.
+  void begin_segments(double tmin, TraceStats& stats);
+  // The next segment [start, end] with at least one active source, ending
+  // at the next span entry or exit or at tmax; false when none is left.
+  bool next_segment(double tmax, double& start, double& end);
+
   double value_at(const BlobField& field, double t, TraceStats& stats) const;
   double slope_bound_at(const BlobField& field, double t) const;
   double refine(const BlobField& field, double lo, double hi, double f_lo, double f_hi,
                 TraceStats& stats) const;
 
   std::vector<std::uint32_t> active_;  // indices into spans
+  std::size_t next_ = 0;                 // first span not yet activated
+  double cursor_ = 0.0;                  // where the walk stands
 };
+
+// Whether exact_crossing() handles this field.
+bool exact_crossing_supported(KernelKind kernel, Blend blend);
 
 }  // namespace hsb
