@@ -92,11 +92,17 @@ int main(int argc, char** argv) {
   exporter->add_option("-o,--output", export_dir, "Folder for the files")->capture_default_str();
   exporter->add_option("--set", export_overrides, "Override a scene key, as for render")
       ->allow_extra_args(false);
-  exporter->add_option("--format", format, "Output format")->check(CLI::IsMember({"vtp"}))->capture_default_str();
+  exporter->add_option("--format", format,
+                       "vtp: trajectories and sources for ParaView; pov: the scene for POV-Ray 3.7 "
+                       "(quartic kernel), with an .ini for `povray FILE.ini`")
+      ->check(CLI::IsMember({"vtp", "pov"}))
+      ->capture_default_str();
   exporter->footer(
-      "Writes <scene>_trajectories.vtp (polylines, arc length) and <scene>_sources.vtp (points with\n"
-      "tensor, eigenvalues, radii, scalar, and active tensors \"glyph\" scaled so that ParaView's\n"
-      "Tensor Glyph filter draws the same ellipsoids as an isolated source here).");
+      "vtp: writes <scene>_trajectories.vtp (polylines, arc length) and <scene>_sources.vtp (points\n"
+      "with tensor, eigenvalues, radii, scalar, and active tensors \"glyph\" scaled so that\n"
+      "ParaView's Tensor Glyph filter draws the same ellipsoids as an isolated source here).\n"
+      "pov: writes <scene>.pov and <scene>.ini: the same sources as one POV-Ray blob, with the\n"
+      "scene's camera, key light, shadows, background and image size.");
 
   CLI11_PARSE(app, argc, argv);
 
@@ -139,7 +145,8 @@ int main(int argc, char** argv) {
   }
   if (*exporter) {
     return for_each(export_scenes, "scenes", [&](const std::string& scene) {
-      for (const std::string& path : hsb::run_export_job({scene, export_overrides, export_dir}))
+      const hsb::ExportFormat f = format == "pov" ? hsb::ExportFormat::pov : hsb::ExportFormat::vtp;
+      for (const std::string& path : hsb::run_export_job({scene, export_overrides, export_dir, f}))
         std::printf("%s\n", path.c_str());
     });
   }

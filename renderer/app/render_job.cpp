@@ -1,5 +1,7 @@
 #include "renderer/app/render_job.h"
 
+#include "renderer/app/prepared_scene.h"
+
 #include <OpenImageIO/hash.h>
 
 #include <chrono>
@@ -40,15 +42,6 @@ const char* scalar_title(ColorScalar scalar) {
   return "";
 }
 
-ColorScale color_scale(const ColorSpec& spec, const std::vector<GlyphSource>& sources) {
-  const Colormap& map = colormap_named(spec.map);
-  if (spec.range) return {&map, (*spec.range)[0], (*spec.range)[1]};
-  std::vector<double> values;
-  values.reserve(sources.size());
-  for (const GlyphSource& s : sources) values.push_back(s.scalar);
-  return auto_scale(map, values);
-}
-
 std::string sha1_hex(const std::string& text) {
   OIIO::SHA1 hash(text.data(), text.size());
   return hash.digest();
@@ -79,34 +72,19 @@ std::map<std::string, std::string> image_metadata(const SceneSpec& spec, const R
 
 RenderSummary run_render_job(const RenderJob& job) {
   const auto start = Clock::now();
-  const SceneSpec spec = load_scene(job.scene_path, job.overrides);
-  const ColorManagement color(spec.output.display, spec.output.view);
+  SceneSpec loaded = load_scene(job.scene_path, job.overrides);
+  const ColorManagement color(loaded.output.display, loaded.output.view);
+  const PreparedScene prepared = prepare_scene(std::move(loaded), color);
+  const SceneSpec& spec = prepared.spec;
+  const GlyphScene& glyphs = prepared.glyphs;
+  const BlobField& field = prepared.field;
+  const ColorScale& scale = prepared.scale;
 
-  // Field side: data set → trajectories → sources.
-  const GlyphScene glyphs = build_glyph_scene(spec.pipeline);
-  const ColorScale scale = color_scale(spec.color, glyphs.sources);
-  std::vector<std::array<float, 3>> colors;
-  colors.reserve(glyphs.sources.size());
-  for (const GlyphSource& s : glyphs.sources) colors.push_back(color.to_scene_linear(scale.srgb(s.scalar)));
-  const BlobField field =
-      make_blob_field(glyphs.sources, colors, spec.surface.influence_radius, spec.surface.kernel,
-                      spec.surface.blend, spec.surface.isovalue);
-
-  // Renderer side: Embree scene → film.
-  ShadingSpec shading = spec.shading;
-  shading.background = color.to_scene_linear(shading.background);
-  shading.box_color = color.to_scene_linear(shading.box_color);
-  const double diagonal = glyphs.domain.diagonal();
-  TraceSettings trace;
-  trace.intersector = spec.intersector;
-  trace.min_step = spec.min_step * diagonal;
-  trace.max_steps = spec.max_steps;
   static const EmbreeDevice device;
-  const RayScene scene(device, field, glyphs.domain, shading, trace,
+  const RayScene scene(device, field, glyphs.domain, prepared.shading, prepared.trace,
                        glyphs.boundary ? &*glyphs.boundary : nullptr);
   const double build_seconds = seconds_since(start);
-  RenderOutput rendered =
-      render_image(scene, glyphs.domain, resolve_camera(spec, glyphs.domain), shading, spec.render);
+  RenderOutput rendered = render_image(scene, glyphs.domain, prepared.camera, prepared.shading, spec.render);
 
   // Image: display transform (or scene-linear EXR), colour bar, metadata.
   const std::filesystem::path image_path = std::filesystem::path(job.output_dir) / spec.output.file;

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# hsb against POV-Ray's exact blob renderer on the same field.
+#
+#   tests/bench/povray_bench.sh [SIZE] [SCENE [OVERRIDES]]...
+#
+# For each scene: `hsb export --format pov` writes the same sources, kernel
+# (quartic, POV-Ray's blob density), threshold, camera, light with shadows,
+# background and image size as a POV-Ray scene; both programs render it on
+# both cores (POV-Ray with +WT2), without anti-aliasing, timed as whole
+# processes. Prints both times, their ratio and the fraction of pixels where
+# the two images agree on surface versus background. Not part of the test
+# suite: it measures, it does not judge.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+scripts/setup.sh > /dev/null
+if ! command -v povray > /dev/null; then
+  sudo=(); [[ $(id -u) -eq 0 ]] || sudo=(sudo)
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -q --no-install-recommends povray > /dev/null
+fi
+
+size=${1:-800}
+shift || true
+if (($# == 0)); then
+  set -- \
+    "scenes/fig09_point_load_hyperstreamsurface.toml" "glyphs.spacing=0.02" \
+    "scenes/fig07_point_load_normalized.toml" "" \
+    "scenes/fig13_cylinder_hyperstreamsurface.toml" ""
+fi
+
+common=(--set render.width="$size" --set render.height="$size" --set render.samples=1
+        --set 'surface.kernel="quartic"' --set output.colorbar=false --set render.box=false
+        --set render.shell=false --set 'render.background=[1,0,1]' --set light.shadows=true)
+now() { date +%s.%N; }
+
+printf '%-42s %8s %9s %9s %7s %10s\n' scene sources hsb_s povray_s ratio agreement
+while (($# >= 2)); do
+  scene=$1 extra=$2
+  shift 2
+  name=$(basename "$scene" .toml)
+  out=build/bench/povray/$name
+  mkdir -p "$out"
+  sets=("${common[@]}")
+  [[ -n $extra ]] && sets+=(--set "$extra")
+  ./build/hsb export --format pov "$scene" -o "$out" "${sets[@]}" > /dev/null
+
+  t0=$(now)
+  line=$(./build/hsb render "$scene" -o "$out" --set output.file=hsb.png "${sets[@]}")
+  t1=$(now)
+  povray +WT2 "$out/$name.ini" > "$out/povray.log" 2>&1
+  t2=$(now)
+
+  sources=$(sed -n 's/.*sources=\([0-9]*\).*/\1/p' <<< "$line")
+  agreement=$(./build/tests/bench/mask_agreement "$out/hsb.png" "$out/$name.povray.png" | awk '{print $2}')
+  awk -v n="$name" -v s="$sources" -v a="$t0" -v b="$t1" -v c="$t2" -v g="$agreement" \
+    'BEGIN { h = b - a; p = c - b; printf "%-42s %8d %9.2f %9.2f %6.1fx %10s\n", n, s, h, p, p / h, g }'
+done
+echo "(${size}x${size}, 1 sample per pixel, one light with shadows; times are whole processes on $(nproc) cores)"
