@@ -10,6 +10,7 @@
 
 #include "field/data_info.h"
 #include "renderer/app/export_job.h"
+#include "renderer/app/process_memory.h"
 #include "renderer/app/render_job.h"
 #include "renderer/scene/scene_spec.h"
 #include "renderer/scene/scene_error.h"
@@ -35,6 +36,9 @@ void print_summary(const hsb::RenderSummary& s, bool with_stats) {
     std::printf("  per field ray: %.2f support intervals, %.2f field evaluations, %.1f kernel evaluations\n",
                 double(s.stats.spans) / field_rays, double(s.stats.field_evaluations) / field_rays,
                 double(s.stats.kernel_evaluations) / field_rays);
+    const double peak = hsb::peak_resident_bytes();
+    std::printf("  peak memory %.0f MB (%.0f bytes per source, the film and program included)\n", peak * 1e-6,
+                peak / double(std::max<std::size_t>(1, s.sources)));
     if (s.stats.step_limit_hits)
       std::printf("  rays that hit the step limit: %llu\n", (unsigned long long)s.stats.step_limit_hits);
   }

@@ -52,7 +52,11 @@ class BlobGeometry {
   void collect_spans(const Vec3& o, const Vec3& d, double tmin, double tmax,
                      FieldRay& tracer) const;
 
-  // The first crossing of F = C along the ray, or a negative value.
+  // The first crossing of F = C along the ray, or a negative value. The
+  // span BVH is queried a window at a time in ray order, so a ray that meets
+  // the surface early never collects the sources behind it: the work per
+  // ray follows what is in front of the first hit, not the depth of the
+  // scene.
   double first_crossing(const Vec3& o, const Vec3& d, double tmin, double tmax,
                         FieldRay& tracer, TraceStats& stats) const;
 
@@ -66,6 +70,7 @@ class BlobGeometry {
   const BlobField& field_;
   TraceSettings settings_;
   Box3 bounds_;
+  double first_window_;  // length of the first query window along a ray
   RTCDevice device_;
   RTCScene span_scene_ = nullptr;
 };

@@ -108,10 +108,13 @@ double first_entry(const Coefficients& bernstein, int n, TraceStats& stats) {
     const bool ends_inside = b[std::size_t(n)] >= 0.0;
     if ((sign_changes(b, n) == 1 && ends_inside) || piece.hi - piece.lo < 1e-14 || top + 2 > int(stack.size())) {
       if (!ends_inside) continue;  // an even number of crossings too close to tell apart: a touch
-      // Exactly one root in (lo, hi): Illinois on the piece's own coefficients.
+      // Exactly one root in (lo, hi): Illinois on the piece's own coefficients,
+      // to 1e-13 of the segment (far below the 1e-5 of the scene asked for)
+      // or until F − C is at round-off level.
+      const double tolerance = 1e-13 / (piece.hi - piece.lo);
       double a = 0.0, c = 1.0, fa = b[0], fc = b[std::size_t(n)];
       int side = 0;
-      for (int i = 0; i < 100 && c - a > 1e-16; ++i) {
+      for (int i = 0; i < 60 && c - a > tolerance && fc > 1e-15; ++i) {
         const double u = (a * fc - c * fa) / (fc - fa);
         const double f = de_casteljau(b, n, u, nullptr, nullptr);
         ++stats.field_evaluations;
@@ -137,6 +140,30 @@ double first_entry(const Coefficients& bernstein, int n, TraceStats& stats) {
   return -1.0;
 }
 
+// g where an isolated source's K equals C; cached because the bisection
+// behind it is too slow to repeat for every ray.
+double level_g(KernelKind kind, double isovalue) {
+  thread_local KernelKind cached_kind = KernelKind::wyvill;
+  thread_local double cached_isovalue = -1.0, cached_g = 0.0;
+  if (kind != cached_kind || isovalue != cached_isovalue) {
+    const double u = kernel_level_radius(kind, isovalue);
+    cached_kind = kind;
+    cached_isovalue = isovalue;
+    cached_g = u * u;
+  }
+  return cached_g;
+}
+
+// Where the ray enters one source's own level surface g = g_level within
+// [lo, hi] (lo itself when it starts inside), or −1.
+double single_source_entry(const RaySpan& s, double g_level, double lo, double hi) {
+  if (s.g_min >= g_level) return -1.0;
+  const double half = std::sqrt((g_level - s.g_min) / s.a);
+  if (s.t_c + half < lo) return -1.0;
+  const double t = std::max(s.t_c - half, lo);
+  return t <= hi ? t : -1.0;
+}
+
 }  // namespace
 
 bool exact_crossing_supported(KernelKind kernel, Blend blend) {
@@ -147,17 +174,12 @@ double FieldRay::exact_crossing(const BlobField& field, double tmin, double tmax
   if (field.blend == Blend::max) {
     // A union of ellipsoids: each source's own surface is g = g_C, the
     // level where K = C, crossed at a quadratic's root.
-    ++stats.field_rays;
     stats.spans += spans.size();
-    const double level = kernel_level_radius(field.kernel, field.isovalue);
-    const double g_level = level * level;
+    const double g_level = level_g(field.kernel, field.isovalue);
     double best = -1.0;
     for (const RaySpan& s : spans) {
-      if (s.g_min >= g_level) continue;
-      const double half = std::sqrt((g_level - s.g_min) / s.a);
-      if (s.t_c + half < tmin) continue;
-      const double t = std::max(s.t_c - half, tmin);
-      if (t <= tmax && (best < 0.0 || t < best)) best = t;
+      const double t = single_source_entry(s, g_level, tmin, tmax);
+      if (t >= 0.0 && (best < 0.0 || t < best)) best = t;
     }
     return best;
   }
@@ -166,9 +188,18 @@ double FieldRay::exact_crossing(const BlobField& field, double tmin, double tmax
   const int k_degree = kernel_degree_in_g(field.kernel);
   const int degree = 2 * k_degree;
   const double c = field.isovalue;
+  const double g_level = level_g(field.kernel, c);
   begin_segments(tmin, stats);
   double start, end;
   while (next_segment(tmax, start, end)) {
+    if (active_.size() == 1) {
+      // One source alone: F = C is its own ellipsoid g = g_level.
+      ++stats.field_evaluations;
+      ++stats.kernel_evaluations;
+      const double t = single_source_entry(spans[active_[0]], g_level, start, end);
+      if (t >= 0.0) return t;
+      continue;
+    }
     const double h = end - start;
     // Skip a segment whose largest possible F cannot reach C: each source
     // peaks where g is smallest on the segment.

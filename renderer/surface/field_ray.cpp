@@ -66,7 +66,6 @@ double FieldRay::first_crossing(const BlobField& field, double tmin, double tmax
 }
 
 void FieldRay::begin_segments(double tmin, TraceStats& stats) {
-  ++stats.field_rays;
   stats.spans += spans.size();
   std::sort(spans.begin(), spans.end(), [](const RaySpan& x, const RaySpan& y) { return x.t0 < y.t0; });
   active_.clear();

@@ -7,7 +7,7 @@ namespace hsb {
 
 struct TraceStats {
   std::uint64_t field_rays = 0;       // rays that queried the blob field
-  std::uint64_t spans = 0;            // source supports those rays crossed
+  std::uint64_t spans = 0;            // source supports collected (per query window)
   std::uint64_t field_evaluations = 0;  // F(t) evaluations (steps + refinement)
   std::uint64_t kernel_evaluations = 0; // single-source K evaluations inside them
   std::uint64_t step_limit_hits = 0;    // rays that gave up (counted as misses)

@@ -161,6 +161,16 @@ TEST_F(SceneFile, BadOverrideNamesTheOverride) {
   EXPECT_NE(error_of(minimal, {"nonsense"}).find("expected key.path=value"), std::string::npos);
 }
 
+TEST_F(SceneFile, IntersectorIsExactWhereItAppliesElseSphere) {
+  EXPECT_EQ(load_scene(write(minimal)).intersector, Intersector::exact);
+  const std::string blinn = std::string(minimal) + "[surface]\nkernel = \"blinn\"\n";
+  EXPECT_EQ(load_scene(write(blinn)).intersector, Intersector::sphere);
+  EXPECT_EQ(load_scene(write(blinn + "blend = \"max\"\n")).intersector, Intersector::exact);
+  EXPECT_EQ(load_scene(write(minimal), {"render.intersector=sphere"}).intersector, Intersector::sphere);
+  EXPECT_NE(error_of(blinn + "[render]\nintersector = \"exact\"\n").find("render.intersector = \"exact\" needs"),
+            std::string::npos);
+}
+
 TEST_F(SceneFile, MissingFile) { EXPECT_THROW(load_scene("/nonexistent/scene.toml"), SceneError); }
 
 // A user's own data with nothing but its path: automatic seeds, lengths and

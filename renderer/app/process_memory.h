@@ -1,0 +1,12 @@
+#pragma once
+// This process's memory, from /proc/self/status (Linux); 0 where unknown.
+
+namespace hsb {
+
+double resident_bytes();       // VmRSS
+double peak_resident_bytes();  // VmHWM: the high-water mark
+// Starts a new high-water mark at the current resident size (Linux ≥ 4.0),
+// so a measurement's peak is its own.
+void reset_peak_resident();
+
+}  // namespace hsb
