@@ -14,6 +14,7 @@
 #include <cmath>
 
 #include "renderer/surface/field_ray.h"
+#include "renderer/surface/illinois.h"
 
 namespace hsb {
 namespace {
@@ -108,29 +109,16 @@ double first_entry(const Coefficients& bernstein, int n, TraceStats& stats) {
     const bool ends_inside = b[std::size_t(n)] >= 0.0;
     if ((sign_changes(b, n) == 1 && ends_inside) || piece.hi - piece.lo < 1e-14 || top + 2 > int(stack.size())) {
       if (!ends_inside) continue;  // an even number of crossings too close to tell apart: a touch
-      // Exactly one root in (lo, hi): Illinois on the piece's own coefficients,
-      // to 1e-13 of the segment (far below the 1e-5 of the scene asked for)
-      // or until F − C is at round-off level.
-      const double tolerance = 1e-13 / (piece.hi - piece.lo);
-      double a = 0.0, c = 1.0, fa = b[0], fc = b[std::size_t(n)];
-      int side = 0;
-      for (int i = 0; i < 60 && c - a > tolerance && fc > 1e-15; ++i) {
-        const double u = (a * fc - c * fa) / (fc - fa);
-        const double f = de_casteljau(b, n, u, nullptr, nullptr);
-        ++stats.field_evaluations;
-        if (f >= 0.0) {
-          c = u;
-          fc = f;
-          if (side == 1) fa *= 0.5;
-          side = 1;
-        } else {
-          a = u;
-          fa = f;
-          if (side == -1) fc *= 0.5;
-          side = -1;
-        }
-      }
-      return piece.lo + c * (piece.hi - piece.lo);
+      // Exactly one root in (lo, hi): Illinois on the piece's own
+      // coefficients, to 1e-13 of the segment (far below the 1e-5 of the
+      // scene asked for) or until F − C is at round-off level.
+      const double u = illinois(
+          [&](double x) {
+            ++stats.field_evaluations;
+            return de_casteljau(b, n, x, nullptr, nullptr);
+          },
+          0.0, 1.0, b[0], b[std::size_t(n)], 1e-13 / (piece.hi - piece.lo), 1e-15, 60);
+      return piece.lo + u * (piece.hi - piece.lo);
     }
     Piece left{{}, piece.lo, 0.5 * (piece.lo + piece.hi)}, right{{}, left.hi, piece.hi};
     de_casteljau(b, n, 0.5, &left.b, &right.b);

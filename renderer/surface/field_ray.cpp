@@ -1,5 +1,7 @@
 #include "renderer/surface/field_ray.h"
 
+#include "renderer/surface/illinois.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -34,29 +36,13 @@ double FieldRay::slope_bound_at(const BlobField& field, double t) const {
   return rate * kernel_max_du_slope(field.kernel);
 }
 
-// Illinois (modified regula falsi) on a bracket F(lo) < C ≤ F(hi): superlinear
-// like the secant method, yet it never leaves the bracket.
-double FieldRay::refine(const BlobField& field, double lo, double hi, double f_lo,
-                            double f_hi, TraceStats& stats) const {
+// The crossing inside a bracket F(lo) < C ≤ F(hi), to double precision.
+double FieldRay::refine(const BlobField& field, double lo, double hi, double f_lo, double f_hi,
+                        TraceStats& stats) const {
   const double c = field.isovalue;
-  double r_lo = f_lo - c, r_hi = f_hi - c;
-  int side = 0;
-  for (int i = 0; i < 100 && hi - lo > 1e-14 * (std::fabs(lo) + std::fabs(hi) + 1e-300); ++i) {
-    const double t = (lo * r_hi - hi * r_lo) / (r_hi - r_lo);
-    const double r = value_at(field, t, stats) - c;
-    if (r >= 0.0) {
-      hi = t;
-      r_hi = r;
-      if (side == 1) r_lo *= 0.5;
-      side = 1;
-    } else {
-      lo = t;
-      r_lo = r;
-      if (side == -1) r_hi *= 0.5;
-      side = -1;
-    }
-  }
-  return hi;
+  const double tolerance = 1e-14 * (std::fabs(lo) + std::fabs(hi)) + 1e-300;
+  return illinois([&](double t) { return value_at(field, t, stats) - c; }, lo, hi, f_lo - c, f_hi - c,
+                  tolerance, 0.0, 100);
 }
 
 double FieldRay::first_crossing(const BlobField& field, double tmin, double tmax,

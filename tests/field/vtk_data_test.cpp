@@ -147,6 +147,16 @@ vtkSmartPointer<vtkStructuredGrid> structured(int n) {
   return grid;
 }
 
+// Writes `data` as an XML unstructured grid in the test folder.
+fs::path write_vtu(vtkUnstructuredGrid* data, const std::string& name) {
+  const fs::path path = temp_dir() / name;
+  auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
+  writer->SetInputData(data);
+  writer->SetFileName(path.string().c_str());
+  EXPECT_EQ(writer->Write(), 1) << path;
+  return path;
+}
+
 VtkData load(const fs::path& path, const std::string& array = "", CellTensors cells = CellTensors::constant,
              TensorAssociation where = TensorAssociation::automatic) {
   return load_vtk_data({path.string(), array, where, cells});
@@ -226,11 +236,7 @@ TEST_P(LinearFieldOnMesh, IsReproducedExactlyAnywhereInside) {
   vtkSmartPointer<vtkUnstructuredGrid> mesh =
       GetParam() == "tets" ? tet_mesh(3) : GetParam() == "hexes" ? hex_mesh(3) : mixed_mesh();
   add_point_tensors(mesh, linear_tensor);
-  const fs::path path = temp_dir() / ("linear_" + GetParam() + ".vtu");
-  auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
-  writer->SetInputData(mesh);
-  writer->SetFileName(path.string().c_str());
-  ASSERT_EQ(writer->Write(), 1);
+  const fs::path path = write_vtu(mesh, ("linear_" + GetParam() + ".vtu"));
   const VtkData loaded = load(path);
 
   // Random points inside random cells (by random barycentric mixtures of
@@ -275,11 +281,7 @@ TEST(VtkData, SixAndNineComponentsGiveTheSameEigensystem) {
   }
   mesh->GetPointData()->AddArray(six);
   mesh->GetPointData()->AddArray(nine);
-  const fs::path path = temp_dir() / "six_nine.vtu";
-  auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
-  writer->SetInputData(mesh);
-  writer->SetFileName(path.string().c_str());
-  ASSERT_EQ(writer->Write(), 1);
+  const fs::path path = write_vtu(mesh, "six_nine.vtu");
   const VtkData a = load(path, "six"), b = load(path, "nine");
   for (double t = 0.1; t < 2; t += 0.13) {
     const Vec3 x(t, 2 - t, 0.5 + 0.3 * t);
@@ -294,11 +296,7 @@ TEST(VtkData, CellDataIsPiecewiseConstantOrAveragedOntoPoints) {
   auto cells = tensor_array("cellstress", 9, mesh->GetNumberOfCells());
   for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c) set_tensor(cells, c, (1.0 + double(c)) * Sym3{1, 2, 3, 0, 0, 0});
   mesh->GetCellData()->SetTensors(cells);
-  const fs::path path = temp_dir() / "cells.vtu";
-  auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
-  writer->SetInputData(mesh);
-  writer->SetFileName(path.string().c_str());
-  ASSERT_EQ(writer->Write(), 1);
+  const fs::path path = write_vtu(mesh, "cells.vtu");
 
   const VtkData constant = load(path);  // active tensors: the cell array
   for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c) {
@@ -331,11 +329,7 @@ TEST(VtkData, AsymmetricTensorsGiveTheirSymmetricPartAndOneWarning) {
     a->SetTuple(i, t);
   }
   mesh->GetPointData()->SetTensors(a);
-  const fs::path path = temp_dir() / "asym.vtu";
-  auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
-  writer->SetInputData(mesh);
-  writer->SetFileName(path.string().c_str());
-  ASSERT_EQ(writer->Write(), 1);
+  const fs::path path = write_vtu(mesh, "asym.vtu");
   const VtkData loaded = load(path);
   ASSERT_EQ(loaded.warnings.size(), 1u);
   EXPECT_NE(loaded.warnings[0].find("not symmetric"), std::string::npos);
@@ -349,11 +343,7 @@ TEST(VtkData, NonFiniteValueIsAnErrorNamingThePoint) {
   auto mesh = tet_mesh(1);
   add_point_tensors(mesh, linear_tensor);
   mesh->GetPointData()->GetTensors()->SetComponent(5, 4, std::nan(""));
-  const fs::path path = temp_dir() / "nan.vtu";
-  auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
-  writer->SetInputData(mesh);
-  writer->SetFileName(path.string().c_str());
-  ASSERT_EQ(writer->Write(), 1);
+  const fs::path path = write_vtu(mesh, "nan.vtu");
   try {
     load(path);
     FAIL() << "no error";
@@ -368,11 +358,7 @@ TEST(VtkData, MissingArrayListsTheArraysThereAre) {
   add_point_tensors(mesh, linear_tensor);
   auto other = tensor_array("displacement", 3, mesh->GetNumberOfPoints());
   mesh->GetPointData()->AddArray(other);
-  const fs::path path = temp_dir() / "arrays.vtu";
-  auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
-  writer->SetInputData(mesh);
-  writer->SetFileName(path.string().c_str());
-  ASSERT_EQ(writer->Write(), 1);
+  const fs::path path = write_vtu(mesh, "arrays.vtu");
   try {
     load(path, "strain");
     FAIL() << "no error";
@@ -405,11 +391,7 @@ TEST(VtkData, UnreadableFilesAreOneClearError) {
 TEST(VtkData, ZeroAndIsotropicTensorsAreLegalData) {
   auto mesh = hex_mesh(2);
   add_point_tensors(mesh, [](const Vec3& x) { return x.x() < 1.0 ? Sym3{} : Sym3{2, 2, 2, 0, 0, 0}; });
-  const fs::path path = temp_dir() / "zero.vtu";
-  auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
-  writer->SetInputData(mesh);
-  writer->SetFileName(path.string().c_str());
-  ASSERT_EQ(writer->Write(), 1);
+  const fs::path path = write_vtu(mesh, "zero.vtu");
   const VtkData loaded = load(path);
   const Trajectory t = trace_trajectory(*loaded.field, Vec3(0.5, 1, 1), TrajectoryOptions{});
   EXPECT_EQ(t.points.size(), 1u);  // stops at once: no direction there
@@ -439,11 +421,7 @@ TEST(VtkData, TrajectoryInAHollowCylinderNeverEntersTheHole) {
         mesh->InsertNextCell(VTK_HEXAHEDRON, 8, hex);
       }
   add_point_tensors(mesh, [](const Vec3&) { return Sym3{3, 2, 1, 0, 0, 0}; });
-  const fs::path path = temp_dir() / "hollow.vtu";
-  auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
-  writer->SetInputData(mesh);
-  writer->SetFileName(path.string().c_str());
-  ASSERT_EQ(writer->Write(), 1);
+  const fs::path path = write_vtu(mesh, "hollow.vtu");
   const VtkData loaded = load(path);
 
   TrajectoryOptions options;
@@ -466,11 +444,7 @@ TEST(VtkData, TrajectoryInAHollowCylinderNeverEntersTheHole) {
 TEST(VtkData, BoundarySurfaceIsTheOuterSkin) {
   auto mesh = hex_mesh(3);
   add_point_tensors(mesh, linear_tensor);
-  const fs::path path = temp_dir() / "skin.vtu";
-  auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
-  writer->SetInputData(mesh);
-  writer->SetFileName(path.string().c_str());
-  ASSERT_EQ(writer->Write(), 1);
+  const fs::path path = write_vtu(mesh, "skin.vtu");
   const VtkData loaded = load(path);
   // 6 faces × 9 quads × 2 triangles, no interior faces.
   EXPECT_EQ(loaded.boundary.triangles.size(), 6u * 9u * 2u);

@@ -8,6 +8,7 @@
 
 #include "field/glyph_pipeline.h"
 #include "renderer/render/ray_scene.h"
+#include "tests/renderer/blob_pair.h"
 
 namespace hsb {
 namespace {
@@ -125,22 +126,14 @@ TEST(ExactCrossing, IsolatedGlyphIsTheExactEllipsoid) {
 }
 
 TEST(ExactCrossing, TwoSourcesBlendExactly) {
-  BlobField pair;
-  pair.sources.push_back(make_blob_source(Vec3(-0.55, 0, 0), Mat3::Identity(), Vec3::Ones(), 1.0, {1, 0, 0}));
-  pair.sources.push_back(make_blob_source(Vec3(0.55, 0, 0), Mat3::Identity(), Vec3::Ones(), 1.0, {0, 0, 1}));
+  const BlobField pair = blob_pair();
   const EmbreeDevice device;
   const BlobGeometry blobs(device.get(), pair, settings_for(Intersector::exact, 1.0));
   FieldRay ray;
   TraceStats stats;
   blobs.collect_spans(Vec3(0, -5, 0), Vec3(0, 1, 0), 0.0, 1e30, ray);
   const double t = ray.first_crossing(pair, 0.0, 1e30, settings_for(Intersector::exact, 1.0), stats);
-  const double x0 = double(0.55f);
-  double lo = 0, hi = 1;
-  for (int k = 0; k < 200; ++k) {
-    const double y = 0.5 * (lo + hi);
-    (2 * kernel_value(KernelKind::wyvill, x0 * x0 + y * y) > 0.5 ? lo : hi) = y;
-  }
-  EXPECT_NEAR(t, 5.0 - lo, 1e-12);
+  EXPECT_NEAR(t, 5.0 - blob_pair_crossing_y(), 1e-12);
 }
 
 TEST(SphereAgainstExact, IsolatedGlyph) {

@@ -8,6 +8,7 @@
 
 #include "renderer/render/ray_scene.h"
 #include "renderer/surface/embree_ray.h"
+#include "tests/renderer/blob_pair.h"
 
 namespace hsb {
 namespace {
@@ -112,12 +113,7 @@ INSTANTIATE_TEST_SUITE_P(AllKernels, IsolatedGlyph,
 
 TEST(Blending, TwoNearbySourcesBlendWhereEachAloneWouldMiss) {
   const EmbreeDevice device;
-  // Two sources with R·r = 1 (each alone a sphere of radius ½) centred at
-  // x = ±0.55: each alone stops 0.05 short of x = 0, but there each
-  // contributes K(u = 0.55) ≈ 0.42, and the sum 0.84 exceeds C = ½.
-  BlobField pair;
-  pair.sources.push_back(make_blob_source(Vec3(-0.55, 0, 0), Mat3::Identity(), Vec3::Ones(), 1.0, {1, 0, 0}));
-  pair.sources.push_back(make_blob_source(Vec3(0.55, 0, 0), Mat3::Identity(), Vec3::Ones(), 1.0, {0, 0, 1}));
+  BlobField pair = blob_pair();
   const Vec3 o(0, -5, 0), d(0, 1, 0);
 
   for (int i = 0; i < 2; ++i) {
@@ -129,15 +125,7 @@ TEST(Blending, TwoNearbySourcesBlendWhereEachAloneWouldMiss) {
   const RayScene blended(device, pair, Box3{}, no_context_geometry(), TraceSettings{});
   const double t = trace(blended, o, d);
   ASSERT_GT(t, 0.0);
-  // The crossing on the y axis solves 2 K(x0² + y²) = ½, with x0 the centre
-  // as stored (single precision).
-  const double x0 = double(0.55f);
-  double lo = 0, hi = 1;
-  for (int k = 0; k < 100; ++k) {
-    const double y = 0.5 * (lo + hi);
-    (2 * kernel_value(KernelKind::wyvill, x0 * x0 + y * y) > 0.5 ? lo : hi) = y;
-  }
-  EXPECT_NEAR(t, 5.0 - lo, 1e-9);
+  EXPECT_NEAR(t, 5.0 - blob_pair_crossing_y(), 1e-9);
 
   // The same pair under blend = "max" is the plain union: the ray misses.
   pair.blend = Blend::max;
@@ -146,9 +134,7 @@ TEST(Blending, TwoNearbySourcesBlendWhereEachAloneWouldMiss) {
 }
 
 TEST(Blending, ColourIsTheInfluenceWeightedMixAndNormalIsTheGradient) {
-  BlobField pair;
-  pair.sources.push_back(make_blob_source(Vec3(-0.55, 0, 0), Mat3::Identity(), Vec3::Ones(), 1.0, {1, 0, 0}));
-  pair.sources.push_back(make_blob_source(Vec3(0.55, 0, 0), Mat3::Identity(), Vec3::Ones(), 1.0, {0, 0, 1}));
+  const BlobField pair = blob_pair();
   const Vec3 o(-0.1, -5, 0), d(0, 1, 0);
   FieldRay tracer;
   TraceStats stats;
