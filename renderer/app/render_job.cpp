@@ -1,13 +1,13 @@
 #include "renderer/app/render_job.h"
 
-#include "renderer/app/prepared_scene.h"
-
 #include <OpenImageIO/hash.h>
 
 #include <chrono>
 #include <filesystem>
+#include <map>
 #include <sstream>
 
+#include "renderer/app/prepared_scene.h"
 #include "renderer/image/color_management.h"
 #include "renderer/image/colorbar.h"
 #include "renderer/image/colormap.h"
