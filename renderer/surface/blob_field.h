@@ -19,8 +19,10 @@ enum class Blend { sum, max };
 // with M = WᵀW. Each row of W is a scaled unit vector, so single precision
 // keeps every axis accurate however thin the glyph; storing M itself would
 // lose the long axes of needles (M's condition number is the square of the
-// glyph's aspect ratio).
-struct BlobSource {
+// glyph's aspect ratio). One source per cache line: a ray tests sources in
+// no particular memory order, and a 60-byte record would straddle two lines
+// about half the time.
+struct alignas(64) BlobSource {
   std::array<float, 9> w;       // rows of W
   std::array<float, 3> centre;
   std::array<float, 3> color;   // scene-linear RGB
