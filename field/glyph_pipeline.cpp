@@ -60,6 +60,13 @@ std::vector<Vec3> all_seeds(const GlyphPipelineSpec& spec, const Box3& bounds) {
   return seeds;
 }
 
+// An empty picture deserves a reason.
+void warn_if_empty(GlyphScene& scene, std::size_t seeds) {
+  if (scene.sources.empty())
+    scene.warnings.push_back("no glyph sources: none of the " + std::to_string(seeds) +
+                             " seeds lies inside the data set where it can be sampled");
+}
+
 }  // namespace
 
 GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec_in) {
@@ -83,6 +90,7 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec_in) {
       if (const std::optional<Sym3> s = field->sample(seed))
         scene.sources.push_back(make_source(seed, *s, spec.mapping, spec.color));
     }
+    warn_if_empty(scene, seeds.size());
     return scene;
   }
 
@@ -97,6 +105,7 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec_in) {
   });
   for (const std::vector<GlyphSource>& sources : per_seed)
     scene.sources.insert(scene.sources.end(), sources.begin(), sources.end());
+  warn_if_empty(scene, seeds.size());
   return scene;
 }
 

@@ -51,6 +51,8 @@ void read_data(TableReader& data, DataSpec& spec, const std::string& scene_path)
     // Relative to the scene file, so scenes can be run from anywhere.
     const std::filesystem::path p(file);
     spec.file.path = p.is_absolute() ? file : (std::filesystem::path(scene_path).parent_path() / p).lexically_normal().string();
+    if (!std::filesystem::is_regular_file(spec.file.path))
+      data.fail_at("file", "names no file: " + spec.file.path + " (relative paths are relative to the scene file)");
     spec.file.array = data.string("array", "");
     spec.file.association = data.choice("association", TensorAssociation::automatic,
                                         {{"auto", TensorAssociation::automatic},
@@ -201,6 +203,11 @@ void read_render(TableReader& r, SceneSpec& spec) {
 
 void read_output(TableReader& o, OutputSpec& spec, const std::string& scene_path) {
   spec.file = o.string("file", std::filesystem::path(scene_path).stem().string() + ".png");
+  std::string extension = std::filesystem::path(spec.file).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  if (extension != ".png" && extension != ".tif" && extension != ".tiff" && extension != ".exr")
+    o.fail_at("file", "must end in .png, .tif, .tiff or .exr, got \"" + spec.file + "\"");
   spec.bit_depth = o.integer("bit_depth", spec.bit_depth, 8, 16);
   if (spec.bit_depth != 8 && spec.bit_depth != 16)
     o.fail_at("bit_depth", "must be 8 or 16");

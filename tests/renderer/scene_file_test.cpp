@@ -171,6 +171,24 @@ TEST_F(SceneFile, IntersectorIsExactWhereItAppliesElseSphere) {
             std::string::npos);
 }
 
+TEST_F(SceneFile, MissingDataFileAndBadImageTypeAreLocated) {
+  const std::string missing = error_of("[data]\nkind = \"vtk\"\nfile = \"nope.vtu\"\n");
+  EXPECT_EQ(missing,
+            path_ + ":3:8: data.file names no file: /tmp/hsb_scene_test/nope.vtu (relative paths are relative to "
+                    "the scene file)");
+  const std::string image = error_of(std::string(minimal) + "[output]\nfile = \"x.bmp\"\n");
+  EXPECT_EQ(image,
+            path_ + ":4:8: output.file must end in .png, .tif, .tiff or .exr, got \"x.bmp\"");
+}
+
+TEST_F(SceneFile, SeedsOutsideTheDataGiveAWarning) {
+  const SceneSpec spec = load_scene(write("[seeds]\npoints = [[5, 5, 5]]\n"));
+  const GlyphScene glyphs = build_glyph_scene(spec.pipeline);
+  EXPECT_TRUE(glyphs.sources.empty());
+  ASSERT_EQ(glyphs.warnings.size(), 1u);
+  EXPECT_NE(glyphs.warnings[0].find("no glyph sources"), std::string::npos);
+}
+
 TEST_F(SceneFile, MissingFile) { EXPECT_THROW(load_scene("/nonexistent/scene.toml"), SceneError); }
 
 // A user's own data with nothing but its path: automatic seeds, lengths and
