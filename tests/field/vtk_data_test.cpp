@@ -267,6 +267,62 @@ TEST_P(LinearFieldOnMesh, IsReproducedExactlyAnywhereInside) {
 
 INSTANTIATE_TEST_SUITE_P(CellKinds, LinearFieldOnMesh, ::testing::Values("tets", "hexes", "mixed"));
 
+// Quadratic cells carry quadratic fields through VTK's own interpolation
+// functions: a 10-node tetrahedron and a 20-node hexahedron. Not to round-off
+// as linear cells do: VTK finds the parametric coordinates in nonlinear cells
+// by a Newton iteration stopped at about 1e-3, so the field is reproduced to
+// about that; interpolating the corners linearly would miss by about 0.1.
+TEST(VtkData, QuadraticCellsReproduceQuadraticFields) {
+  auto quadratic = [](const Vec3& x) {
+    return Sym3{x.x() * x.x(), x.y() * x.z(), 1 + x.z() * x.z() - x.x(), x.x() * x.y(), 2 * x.y() * x.y(), x.z()};
+  };
+  auto mesh = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  // Tetrahedron: corners, then mid-edges 01, 12, 20, 03, 13, 23.
+  const Vec3 c[4] = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
+  const int edges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+  for (const Vec3& p : c) points->InsertNextPoint(p.x(), p.y(), p.z());
+  for (const auto& e : edges) {
+    const Vec3 m = 0.5 * (c[e[0]] + c[e[1]]);
+    points->InsertNextPoint(m.x(), m.y(), m.z());
+  }
+  vtkIdType tet[10];
+  for (int i = 0; i < 10; ++i) tet[i] = i;
+  // Hexahedron on [2,3]×[0,1]×[0,1]: corners, then mid-edges of the bottom,
+  // top and vertical edges (VTK's order).
+  const Vec3 h[8] = {Vec3(2, 0, 0), Vec3(3, 0, 0), Vec3(3, 1, 0), Vec3(2, 1, 0),
+                     Vec3(2, 0, 1), Vec3(3, 0, 1), Vec3(3, 1, 1), Vec3(2, 1, 1)};
+  const int hex_edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                                {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+  vtkIdType hex[20];
+  for (int i = 0; i < 8; ++i) hex[i] = points->InsertNextPoint(h[i].x(), h[i].y(), h[i].z());
+  for (int i = 0; i < 12; ++i) {
+    const Vec3 m = 0.5 * (h[hex_edges[i][0]] + h[hex_edges[i][1]]);
+    hex[8 + i] = points->InsertNextPoint(m.x(), m.y(), m.z());
+  }
+  mesh->SetPoints(points);
+  mesh->InsertNextCell(VTK_QUADRATIC_TETRA, 10, tet);
+  mesh->InsertNextCell(VTK_QUADRATIC_HEXAHEDRON, 20, hex);
+  add_point_tensors(mesh, quadratic);
+  const VtkData loaded = load(write_vtu(mesh, "quadratic.vtu"));
+
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int i = 0; i < 300; ++i) {
+    // Inside the tetrahedron: a random convex mixture of its corners.
+    double w[4], total = 0;
+    for (double& x : w) total += (x = u(rng));
+    Vec3 x = Vec3::Zero();
+    for (int k = 0; k < 4; ++k) x += w[k] / total * c[k];
+    ASSERT_TRUE(loaded.field->sample(x).has_value()) << x.transpose();
+    EXPECT_LT(distance(*loaded.field->sample(x), quadratic(x)), 2e-3) << x.transpose();
+    // Inside the hexahedron.
+    const Vec3 y(2 + u(rng), u(rng), u(rng));
+    ASSERT_TRUE(loaded.field->sample(y).has_value()) << y.transpose();
+    EXPECT_LT(distance(*loaded.field->sample(y), quadratic(y)), 2e-3) << y.transpose();
+  }
+}
+
 TEST(VtkData, SixAndNineComponentsGiveTheSameEigensystem) {
   auto mesh = tet_mesh(2);
   auto six = tensor_array("six", 6, mesh->GetNumberOfPoints());
