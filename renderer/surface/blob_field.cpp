@@ -34,6 +34,16 @@ BlobField make_blob_field(const std::vector<GlyphSource>& glyphs,
   return field;
 }
 
+Mat3 shape_matrix(const BlobSource& s) {
+  Mat3 w;
+  for (int i = 0; i < 9; ++i) w(i / 3, i % 3) = s.w[std::size_t(i)];
+  return w;
+}
+
+Vec3 scaled_offset(const BlobSource& s, const Mat3& w, const Vec3& x) {
+  return w * (x - Vec3(s.centre[0], s.centre[1], s.centre[2]));
+}
+
 Box3 influence_bounds(const BlobSource& s) {
   // The ellipsoid's semi-axis k is row k of W divided by its squared length
   // (W's rows are orthogonal), so the half-extent along world axis j is the
@@ -63,13 +73,7 @@ Box3 influence_bounds(const BlobField& field) {
 double field_value(const BlobField& field, const Vec3& x) {
   double f = 0.0;
   for (const BlobSource& s : field.sources) {
-    double g = 0.0;
-    for (int k = 0; k < 3; ++k) {
-      double row = 0.0;
-      for (int j = 0; j < 3; ++j) row += double(s.w[3 * k + j]) * (x[j] - double(s.centre[j]));
-      g += row * row;
-    }
-    const double k = kernel_value(field.kernel, g);
+    const double k = kernel_value(field.kernel, scaled_offset(s, shape_matrix(s), x).squaredNorm());
     f = field.blend == Blend::sum ? f + k : std::max(f, k);
   }
   return f;

@@ -45,6 +45,11 @@ BlobField make_blob_field(const std::vector<GlyphSource>& glyphs,
 BlobSource make_blob_source(const Vec3& centre, const Mat3& axes, const Vec3& radii,
                             double influence_radius, const std::array<float, 3>& color);
 
+// W as a matrix, and W (x − c): the point in the source's scaled frame,
+// where g(x) is its squared length.
+Mat3 shape_matrix(const BlobSource& s);
+Vec3 scaled_offset(const BlobSource& s, const Mat3& w, const Vec3& x);
+
 // The axis-aligned box of the influence ellipsoid g ≤ 1.
 Box3 influence_bounds(const BlobSource& s);
 

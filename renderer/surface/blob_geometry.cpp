@@ -1,12 +1,12 @@
 #include "renderer/surface/blob_geometry.h"
 
-#include "renderer/surface/embree_ray.h"
-
 #include <cmath>
 #include <limits>
-#include <utility>
 #include <stdexcept>
 #include <string>
+#include <utility>
+
+#include "renderer/surface/embree_ray.h"
 
 namespace hsb {
 namespace {
@@ -38,8 +38,6 @@ void check_device(RTCDevice device, const char* what) {
                              what);
 }
 
-}  // namespace
-
 // The parameter interval where the ray o + t d is inside `box`, intersected
 // with [tmin, tmax]; empty (lo > hi) when it misses.
 std::pair<double, double> clip_to_box(const Box3& box, const Vec3& o, const Vec3& d, double tmin, double tmax) {
@@ -63,6 +61,8 @@ double mean_influence_diagonal(const BlobField& field) {
   for (const BlobSource& s : field.sources) sum += influence_bounds(s).diagonal();
   return sum / double(field.sources.size());
 }
+
+}  // namespace
 
 BlobGeometry::BlobGeometry(RTCDevice device, const BlobField& field, const TraceSettings& settings)
     : field_(field),

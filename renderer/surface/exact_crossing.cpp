@@ -25,7 +25,7 @@ using Coefficients = std::array<double, max_degree + 1>;
 // K(g) as power coefficients in g.
 Coefficients kernel_polynomial(KernelKind kind) {
   switch (kind) {
-    case KernelKind::wyvill: return {1.0, -22.0 / 9.0, 17.0 / 9.0, -4.0 / 9.0, 0, 0, 0};
+    case KernelKind::wyvill: return {1.0, detail::wyvill_c, detail::wyvill_b, detail::wyvill_a, 0, 0, 0};
     case KernelKind::quartic: return {1.0, -2.0, 1.0, 0, 0, 0, 0};
     case KernelKind::blinn: break;
   }
@@ -104,10 +104,11 @@ double first_entry(const Coefficients& bernstein, int n, TraceStats& stats) {
   while (top > 0) {
     const Piece piece = stack[--top];
     const Coefficients& b = piece.b;
-    if (sign_changes(b, n) == 0) continue;  // one sign throughout: no root
-    if (b[0] >= 0.0) return piece.lo;        // starts inside
+    const int changes = sign_changes(b, n);
+    if (changes == 0) continue;        // one sign throughout: no root
+    if (b[0] >= 0.0) return piece.lo;  // starts inside
     const bool ends_inside = b[std::size_t(n)] >= 0.0;
-    if ((sign_changes(b, n) == 1 && ends_inside) || piece.hi - piece.lo < 1e-14 || top + 2 > int(stack.size())) {
+    if ((changes == 1 && ends_inside) || piece.hi - piece.lo < 1e-14 || top + 2 > int(stack.size())) {
       if (!ends_inside) continue;  // an even number of crossings too close to tell apart: a touch
       // Exactly one root in (lo, hi): Illinois on the piece's own
       // coefficients, to 1e-13 of the segment (far below the 1e-5 of the

@@ -126,13 +126,9 @@ SurfaceSample FieldRay::surface_at(const BlobField& field, const Vec3& origin,
   Vec3 color = Vec3::Zero();
   for (const RaySpan& span : spans) {
     const BlobSource& s = field.sources[span.source];
-    // W(x − c) and ∇g = 2 Wᵀ W (x − c).
-    Vec3 q;
-    Eigen::Matrix3d w;
-    for (int k = 0; k < 3; ++k) {
-      for (int j = 0; j < 3; ++j) w(k, j) = s.w[3 * k + j];
-    }
-    q = w * (x - Vec3(s.centre[0], s.centre[1], s.centre[2]));
+    // q = W(x − c), g = |q|² and ∇g = 2 Wᵀ q.
+    const Mat3 w = shape_matrix(s);
+    const Vec3 q = scaled_offset(s, w, x);
     const double g = q.squaredNorm();
     const double k = kernel_value(field.kernel, g);
     if (k <= 0.0) continue;
