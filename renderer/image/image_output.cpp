@@ -19,11 +19,16 @@ std::string lower_extension(const std::string& path) {
 
 }  // namespace
 
+bool is_supported_image_path(const std::string& path) {
+  const std::string ext = lower_extension(path);
+  return ext == ".png" || ext == ".tif" || ext == ".tiff" || ext == ".exr";
+}
+
 bool is_scene_linear_format(const std::string& path) { return lower_extension(path) == ".exr"; }
 
 void write_image(const ImageToWrite& image, const std::string& path) {
   const std::string ext = lower_extension(path);
-  if (ext != ".png" && ext != ".tif" && ext != ".tiff" && ext != ".exr")
+  if (!is_supported_image_path(path))
     throw std::runtime_error(path + ": unsupported image format \"" + ext +
                              "\" (expected .png, .tif, .tiff or .exr)");
   if (ext != ".exr" && image.bit_depth != 8 && image.bit_depth != 16)

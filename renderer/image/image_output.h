@@ -22,6 +22,10 @@ struct ImageToWrite {
 // std::runtime_error with OIIO's message on failure.
 void write_image(const ImageToWrite& image, const std::string& path);
 
+// True for the extensions write_image() accepts: .png, .tif, .tiff, .exr
+// (any case).
+bool is_supported_image_path(const std::string& path);
+
 // True for extensions whose images hold scene-linear data (EXR).
 bool is_scene_linear_format(const std::string& path);
 

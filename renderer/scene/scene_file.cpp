@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "renderer/image/image_output.h"
 #include "renderer/scene/scene_spec.h"
 #include "renderer/scene/toml_reader.h"
 
@@ -201,12 +202,9 @@ void read_render(TableReader& r, SceneSpec& spec) {
   r.finish();
 }
 
-void read_output(TableReader& o, OutputSpec& spec, const std::string& scene_path) {
-  spec.file = o.string("file", std::filesystem::path(scene_path).stem().string() + ".png");
-  std::string extension = std::filesystem::path(spec.file).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  if (extension != ".png" && extension != ".tif" && extension != ".tiff" && extension != ".exr")
+void read_output(TableReader& o, OutputSpec& spec) {
+  spec.file = o.string("file", spec.file);
+  if (!is_supported_image_path(spec.file))
     o.fail_at("file", "must end in .png, .tif, .tiff or .exr, got \"" + spec.file + "\"");
   spec.bit_depth = o.integer("bit_depth", spec.bit_depth, 8, 16);
   if (spec.bit_depth != 8 && spec.bit_depth != 16)
@@ -275,7 +273,7 @@ SceneSpec load_scene(const std::string& path, const std::vector<std::string>& ov
                                                                                         : Intersector::sphere;
   if (auto r = top.table("render")) read_render(*r, spec);
   spec.output.file = std::filesystem::path(path).stem().string() + ".png";
-  if (auto o = top.table("output")) read_output(*o, spec.output, path);
+  if (auto o = top.table("output")) read_output(*o, spec.output);
   top.finish();
 
   return spec;
