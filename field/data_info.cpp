@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "field/eigensystem.h"
+#include "field/eigenvalue_range.h"
 
 namespace hsb {
 
@@ -18,17 +18,12 @@ std::string describe_data(const DataSpec& spec) {
       << "), Poisson ratio " << spec.point_load.poisson_ratio << "\n"
       << "  singular  clamped within " << field.singular_radius() << " of the load\n";
   constexpr int n = 21;
-  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
+  EigenvalueRange range;
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        const Vec3 x = b.lo + b.size().cwiseProduct(Vec3(i, j, k) / double(n - 1));
-        const Vec3 values = decompose(*field.sample(x)).values;
-        lo = lo.cwiseMin(values);
-        hi = hi.cwiseMax(values);
-      }
-  const char* names[3] = {"λ1 (major) ", "λ2 (medium)", "λ3 (minor) "};
-  for (int k = 0; k < 3; ++k) out << "  " << names[k] << " [" << lo[k] << ", " << hi[k] << "]\n";
+      for (int i = 0; i < n; ++i)
+        range.add(*field.sample(b.lo + b.size().cwiseProduct(Vec3(i, j, k) / double(n - 1))));
+  out << range;
   return out.str();
 }
 

@@ -24,7 +24,7 @@
 #include <sstream>
 
 #include "field/data_error.h"
-#include "field/eigensystem.h"
+#include "field/eigenvalue_range.h"
 #include "field/mesh_field.h"
 #include "field/uniform_grid.h"
 
@@ -303,16 +303,11 @@ std::string describe_vtk_file(const VtkFileSpec& spec) {
   std::vector<std::string> warnings;
   const ChosenArray chosen = choose_tensor_array(data, spec);
   const std::vector<Sym3> tensors = read_tensors(chosen, spec.path, warnings);
-  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
-  for (const Sym3& s : tensors) {
-    const Vec3 values = decompose(s).values;
-    lo = lo.cwiseMin(values);
-    hi = hi.cwiseMax(values);
-  }
+  EigenvalueRange range;
+  for (const Sym3& s : tensors) range.add(s);
   out << "  tensors   \"" << chosen.name << "\" (" << chosen.array->GetNumberOfComponents() << " components, "
       << (chosen.on_points ? "point" : "cell") << " data)\n";
-  const char* names[3] = {"λ1 (major) ", "λ2 (medium)", "λ3 (minor) "};
-  for (int k = 0; k < 3; ++k) out << "  " << names[k] << " [" << lo[k] << ", " << hi[k] << "]\n";
+  out << range;
   for (const std::string& w : warnings) out << "  warning: " << w << "\n";
   return out.str();
 }
