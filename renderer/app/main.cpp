@@ -25,14 +25,16 @@ void print_summary(const hsb::RenderSummary& s, bool with_stats) {
   for (const std::string& warning : s.warnings) std::fprintf(stderr, "hsb: warning: %s\n", warning.c_str());
   const double rays = double(s.primary_rays + s.shadow_rays);
   const double mrays = s.render_seconds > 0.0 ? rays / s.render_seconds * 1e-6 : 0.0;
-  std::printf("%s  sources=%zu  trajectories=%zu  time=%.2fs (build %.2fs, render %.2fs)  %.2f Mrays/s\n",
+  std::printf("%s  sources=%zu  trajectories=%zu  time=%.2fs (build %.2fs, render %.2fs, output %.2fs)  %.2f Mrays/s\n",
               s.image_path.c_str(), s.sources, s.trajectories, s.total_seconds, s.build_seconds,
-              s.render_seconds, mrays);
+              s.render_seconds, s.output_seconds, mrays);
   if (with_stats) {
     const double field_rays = double(std::max<std::uint64_t>(1, s.stats.field_rays));
     std::printf("  primary rays %llu, shadow rays %llu, rays into the field %llu\n",
                 (unsigned long long)s.primary_rays, (unsigned long long)s.shadow_rays,
                 (unsigned long long)s.stats.field_rays);
+    std::printf("  per field ray: %.2f span queries testing %.1f influence boxes\n",
+                double(s.stats.span_queries) / field_rays, double(s.stats.span_candidates) / field_rays);
     std::printf("  per field ray: %.2f support intervals, %.2f field evaluations, %.1f kernel evaluations\n",
                 double(s.stats.spans) / field_rays, double(s.stats.field_evaluations) / field_rays,
                 double(s.stats.kernel_evaluations) / field_rays);

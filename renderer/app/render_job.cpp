@@ -87,6 +87,7 @@ RenderSummary run_render_job(const RenderJob& job) {
   RenderOutput rendered = render_image(scene, glyphs.domain, prepared.camera, prepared.shading, spec.render);
 
   // Image: display transform (or scene-linear EXR), colour bar, metadata.
+  const auto output_start = Clock::now();
   const std::filesystem::path image_path = std::filesystem::path(job.output_dir) / spec.output.file;
   std::filesystem::create_directories(image_path.parent_path());
   Film& film = rendered.film;
@@ -124,6 +125,7 @@ RenderSummary run_render_job(const RenderJob& job) {
   summary.sources = field.sources.size();
   summary.build_seconds = build_seconds;
   summary.render_seconds = rendered.seconds;
+  summary.output_seconds = seconds_since(output_start);
   summary.total_seconds = seconds_since(start);
   summary.primary_rays = rendered.primary_rays;
   summary.shadow_rays = rendered.shadow_rays;

@@ -20,7 +20,8 @@ struct RenderSummary {
   std::size_t sources = 0;
   double build_seconds = 0.0;   // data set, trajectories, sources, BVH
   double render_seconds = 0.0;  // rays and shading
-  double total_seconds = 0.0;   // including colour management and writing
+  double output_seconds = 0.0;  // colour management, colour bar, encoding and writing
+  double total_seconds = 0.0;
   std::uint64_t primary_rays = 0, shadow_rays = 0;
   TraceStats stats;
   std::vector<std::string> warnings;  // about the data; the image is still complete

@@ -7,6 +7,8 @@ namespace hsb {
 
 struct TraceStats {
   std::uint64_t field_rays = 0;       // rays that queried the blob field
+  std::uint64_t span_queries = 0;     // span BVH traversals (one per window along a ray)
+  std::uint64_t span_candidates = 0;  // influence boxes the traversals reached
   std::uint64_t spans = 0;            // source supports collected (per query window)
   std::uint64_t field_evaluations = 0;  // F(t) evaluations (steps + refinement)
   std::uint64_t kernel_evaluations = 0; // single-source K evaluations inside them
@@ -14,6 +16,8 @@ struct TraceStats {
 
   TraceStats& operator+=(const TraceStats& o) {
     field_rays += o.field_rays;
+    span_queries += o.span_queries;
+    span_candidates += o.span_candidates;
     spans += o.spans;
     field_evaluations += o.field_evaluations;
     kernel_evaluations += o.kernel_evaluations;
