@@ -6,6 +6,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -14,11 +15,16 @@ namespace hsb {
 namespace {
 
 struct ThreadState {
-  FieldRay tracer;
+  FieldRayLanes tracers;
   TraceStats stats;
   std::uint64_t primary_rays = 0;
   std::uint64_t shadow_rays = 0;
 };
+
+// Camera rays are traced a tile of pixels at a time, one packet per
+// sub-pixel sample: neighbouring rays meet the same sources.
+constexpr int kTile = 4;
+static_assert(kTile * kTile == kMaxPacket, "a tile fills one ray packet");
 
 // A stateless integer hash (the finaliser of MurmurHash3) turned into a
 // number in [0, 1): jitter that depends only on the pixel and sample.
@@ -37,32 +43,57 @@ struct Sample {
   double depth;
 };
 
-Sample trace_sample(const RayScene& scene, const ShadingSpec& shading, const Vec3& origin,
-                    const Vec3& direction, const Vec3& to_light, double shadow_offset,
-                    ThreadState& state) {
-  FieldRayContext context(state.tracer, state.stats);
-  RTCRayHit rh = make_embree_ray(origin, direction, 0.0f, INFINITY);
-  rtcIntersect1(scene.get(), &context.embree, &rh);
-  ++state.primary_rays;
-
-  const unsigned id = rh.hit.geomID;
-  if (id == RTC_INVALID_GEOMETRY_ID) return {shading.background, false, INFINITY};
-  if (id == scene.box_id()) return {shading.box_color, true, double(rh.ray.tfar)};
-
-  // The field's hit: the tracer kept t in double and the shading inputs.
-  const Vec3 x = origin + context.t * direction;
-  const Vec3& n = context.surface.normal;
-  double visibility = 1.0;
-  if (shading.shadows) {
-    const Vec3 start = x + shadow_offset * (n.dot(direction) < 0.0 ? n : Vec3(-n));
-    RTCRayHit shadow = make_embree_ray(start, to_light, 0.0f, INFINITY);
-    FieldRayContext shadow_context(state.tracer, state.stats);
-    rtcOccluded1(scene.get(), &shadow_context.embree, &shadow.ray);
-    ++state.shadow_rays;
-    if (shadow.ray.tfar < 0.0f) visibility = 0.0;
+// Traces `count` (at most kMaxPacket) camera rays from `origin` as one
+// packet, and their shadow rays as another.
+void trace_packet(const RayScene& scene, const ShadingSpec& shading, const Vec3& origin,
+                  const Vec3* directions, int count, const Vec3& to_light, double shadow_offset,
+                  ThreadState& state, Sample* samples) {
+  FieldRayContext context(state.tracers, state.stats);
+  context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  alignas(64) int valid[kMaxPacket];
+  alignas(64) RTCRayHit16 primary{};
+  auto* primary_n = reinterpret_cast<RTCRayHitN*>(&primary);
+  for (int i = 0; i < kMaxPacket; ++i) {
+    valid[i] = i < count ? -1 : 0;
+    if (i < count) set_embree_ray(primary_n, kMaxPacket, unsigned(i), origin, directions[i], 0.0f, INFINITY);
   }
-  return {shade_surface(shading, context.surface.color, n, -direction, to_light, visibility), true,
-          context.t};
+  rtcIntersect16(valid, scene.get(), &context.embree, &primary);
+  state.primary_rays += unsigned(count);
+
+  // The field's hits: the tracer kept t in double and the shading inputs.
+  alignas(64) int shadow_valid[kMaxPacket] = {};
+  alignas(64) RTCRayHit16 shadow{};
+  auto* shadow_n = reinterpret_cast<RTCRayHitN*>(&shadow);
+  int shadow_count = 0;
+  for (int i = 0; i < count; ++i) {
+    const unsigned id = primary.hit.geomID[i];
+    if (id == RTC_INVALID_GEOMETRY_ID) {
+      samples[i] = {shading.background, false, INFINITY};
+    } else if (id == scene.box_id()) {
+      samples[i] = {shading.box_color, true, double(primary.ray.tfar[i])};
+    } else if (shading.shadows) {
+      const Vec3 x = origin + context.t[std::size_t(i)] * directions[i];
+      const Vec3& n = context.surface[std::size_t(i)].normal;
+      const Vec3 start = x + shadow_offset * (n.dot(directions[i]) < 0.0 ? n : Vec3(-n));
+      set_embree_ray(shadow_n, kMaxPacket, unsigned(i), start, to_light, 0.0f, INFINITY);
+      shadow_valid[i] = -1;
+      ++shadow_count;
+    }
+  }
+  if (shadow_count > 0) {
+    FieldRayContext shadow_context(state.tracers, state.stats);
+    shadow_context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;  // parallel rays from nearby points
+    rtcOccluded16(shadow_valid, scene.get(), &shadow_context.embree, &shadow.ray);
+    state.shadow_rays += unsigned(shadow_count);
+  }
+  for (int i = 0; i < count; ++i) {
+    const unsigned id = primary.hit.geomID[i];
+    if (id == RTC_INVALID_GEOMETRY_ID || id == scene.box_id()) continue;
+    const SurfaceSample& surface = context.surface[std::size_t(i)];
+    const double visibility = shadow_valid[i] && shadow.ray.tfar[i] < 0.0f ? 0.0 : 1.0;
+    samples[i] = {shade_surface(shading, surface.color, surface.normal, -directions[i], to_light, visibility),
+                  true, context.t[std::size_t(i)]};
+  }
 }
 
 // The shell's layers between the camera and `behind` (at distance t_behind),
@@ -111,32 +142,55 @@ RenderOutput render_image(const RayScene& scene, const Box3& domain, const Camer
   RenderOutput out{Film(settings.width, settings.height), {}, 0, 0, 0.0};
   tbb::enumerable_thread_specific<ThreadState> states;
 
-  tbb::parallel_for(tbb::blocked_range<int>(0, settings.height), [&](const tbb::blocked_range<int>& rows) {
+  const int tiles_x = (settings.width + kTile - 1) / kTile;
+  const int tiles_y = (settings.height + kTile - 1) / kTile;
+  tbb::parallel_for(tbb::blocked_range<int>(0, tiles_y), [&](const tbb::blocked_range<int>& tile_rows) {
     ThreadState& state = states.local();
-    for (int y = rows.begin(); y < rows.end(); ++y) {
-      for (int x = 0; x < settings.width; ++x) {
-        double rgb[3] = {0, 0, 0};
-        double coverage = 0.0;
-        double depth = INFINITY;
-        const std::uint64_t pixel = std::uint64_t(y) * std::uint64_t(settings.width) + std::uint64_t(x);
+    for (int ty = tile_rows.begin(); ty < tile_rows.end(); ++ty) {
+      for (int tx = 0; tx < tiles_x; ++tx) {
+        // The tile's pixels (fewer at the image's right and bottom edges).
+        int px[kMaxPacket], py[kMaxPacket];
+        int count = 0;
+        for (int dy = 0; dy < kTile; ++dy)
+          for (int dx = 0; dx < kTile; ++dx) {
+            const int x = tx * kTile + dx, y = ty * kTile + dy;
+            if (x >= settings.width || y >= settings.height) continue;
+            px[count] = x;
+            py[count++] = y;
+          }
+        double rgb[kMaxPacket][3] = {};
+        double coverage[kMaxPacket] = {};
+        double depth[kMaxPacket];
+        std::fill(depth, depth + kMaxPacket, INFINITY);
         for (int sy = 0; sy < n; ++sy) {
           for (int sx = 0; sx < n; ++sx) {
-            const std::uint64_t key = (pixel * std::uint64_t(n * n) + std::uint64_t(sy * n + sx)) * 2;
-            const double jx = n == 1 ? 0.5 : (sx + hash_unit(key)) / n;
-            const double jy = n == 1 ? 0.5 : (sy + hash_unit(key + 1)) / n;
-            const Vec3 direction = camera.direction(x + jx, y + jy);
-            Sample s = trace_sample(scene, shading, camera.origin(), direction, to_light, shadow_offset, state);
-            if (scene.shell())
-              s.color = composite_shell(scene.shell(), shading, camera.origin(), direction, to_light, s.color, s.depth);
-            for (int c = 0; c < 3; ++c) rgb[c] += s.color[c];
-            coverage += s.covered ? 1.0 : 0.0;
-            depth = std::min(depth, s.depth);
+            Vec3 directions[kMaxPacket];
+            for (int i = 0; i < count; ++i) {
+              const std::uint64_t pixel = std::uint64_t(py[i]) * std::uint64_t(settings.width) + std::uint64_t(px[i]);
+              const std::uint64_t key = (pixel * std::uint64_t(n * n) + std::uint64_t(sy * n + sx)) * 2;
+              const double jx = n == 1 ? 0.5 : (sx + hash_unit(key)) / n;
+              const double jy = n == 1 ? 0.5 : (sy + hash_unit(key + 1)) / n;
+              directions[i] = camera.direction(px[i] + jx, py[i] + jy);
+            }
+            Sample samples[kMaxPacket];
+            trace_packet(scene, shading, camera.origin(), directions, count, to_light, shadow_offset, state, samples);
+            for (int i = 0; i < count; ++i) {
+              Sample& s = samples[i];
+              if (scene.shell())
+                s.color = composite_shell(scene.shell(), shading, camera.origin(), directions[i], to_light,
+                                          s.color, s.depth);
+              for (int c = 0; c < 3; ++c) rgb[i][c] += s.color[c];
+              coverage[i] += s.covered ? 1.0 : 0.0;
+              depth[i] = std::min(depth[i], s.depth);
+            }
           }
         }
-        float* p = out.film.pixel(x, y);
-        for (int c = 0; c < 3; ++c) p[c] = float(rgb[c] * inv_samples);
-        p[3] = float(coverage * inv_samples);
-        out.film.depth[pixel] = float(depth);
+        for (int i = 0; i < count; ++i) {
+          float* p = out.film.pixel(px[i], py[i]);
+          for (int c = 0; c < 3; ++c) p[c] = float(rgb[i][c] * inv_samples);
+          p[3] = float(coverage[i] * inv_samples);
+          out.film.depth[std::size_t(py[i]) * std::size_t(settings.width) + std::size_t(px[i])] = float(depth[i]);
+        }
       }
     }
   });

@@ -11,13 +11,16 @@
 namespace hsb {
 namespace {
 
-// The span query's context: where the span BVH's callback writes.
+// The span query's context: where the span BVH's callback writes. Lane i of
+// a packet query is ray `first_lane + i` of the batch (a single-ray query
+// has one lane, the batch's `first_lane`).
 struct SpanQueryContext {
   RTCIntersectContext embree;  // first member, see FieldRayContext
   const BlobField* field;
-  Vec3 origin, direction;
-  double tmin, tmax;
-  std::vector<RaySpan>* spans;
+  const RayInterval* rays;
+  FieldRay* tracers;
+  unsigned first_lane;
+  std::size_t candidates;
 };
 
 // Rounds a double box outwards to float so the BVH never clips an ellipsoid.
@@ -51,6 +54,28 @@ std::pair<double, double> clip_to_box(const Box3& box, const Vec3& o, const Vec3
     hi = std::min(hi, b);
   }
   return {lo, hi};
+}
+
+// The active lanes of a callback's ray packet, gathered in lane order.
+struct ValidLanes {
+  int count = 0;
+  std::array<RayInterval, kMaxPacket> rays;
+  std::array<unsigned, kMaxPacket> lane;
+};
+
+ValidLanes gather_lanes(const int* valid, RTCRayN* rays, unsigned n) {
+  if (n > unsigned(kMaxPacket)) throw std::logic_error("ray packets wider than kMaxPacket are not issued");
+  ValidLanes lanes;
+  for (unsigned i = 0; i < n; ++i) {
+    if (!valid[i]) continue;
+    RayInterval& ray = lanes.rays[std::size_t(lanes.count)];
+    ray.origin = Vec3(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i));
+    ray.direction = Vec3(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i));
+    ray.tmin = RTCRayN_tnear(rays, n, i);
+    ray.tmax = RTCRayN_tfar(rays, n, i);
+    lanes.lane[std::size_t(lanes.count++)] = i;
+  }
+  return lanes;
 }
 
 // A typical influence diameter: windows of a few of them hold a few layers
@@ -116,55 +141,104 @@ void BlobGeometry::span_bounds(const RTCBoundsFunctionArguments* args) {
 }
 
 void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
-  if (!args->valid[0]) return;
   auto* query = reinterpret_cast<SpanQueryContext*>(args->context);
-  RaySpan span;
-  if (ray_span(query->field->sources[args->primID], args->primID, query->origin, query->direction,
-               query->tmin, query->tmax, span))
-    query->spans->push_back(span);
+  const BlobSource& source = query->field->sources[args->primID];
+  for (unsigned lane = 0; lane < args->N; ++lane) {
+    if (!args->valid[lane]) continue;
+    ++query->candidates;
+    const RayInterval& ray = query->rays[query->first_lane + lane];
+    RaySpan span;
+    if (ray_span(source, args->primID, ray.origin, ray.direction, ray.tmin, ray.tmax, span))
+      query->tracers[query->first_lane + lane].spans.push_back(span);
+  }
   // No hit is reported: traversal goes on and visits every crossed box.
 }
 
-void BlobGeometry::collect_spans(const Vec3& o, const Vec3& d, double tmin, double tmax,
-                                 FieldRay& tracer) const {
-  tracer.spans.clear();
+std::size_t BlobGeometry::collect_spans(const RayInterval* rays, int count, FieldRay* tracers) const {
+  return query_spans(rays, tracers, count >= 32 ? ~0u : (1u << count) - 1u);
+}
+
+std::size_t BlobGeometry::query_spans(const RayInterval* rays, FieldRay* tracers, unsigned lanes) const {
   SpanQueryContext query;
   rtcInitIntersectContext(&query.embree);
   query.field = &field_;
-  query.origin = o;
-  query.direction = d;
-  query.tmin = tmin;
-  query.tmax = tmax;
-  query.spans = &tracer.spans;
+  query.rays = rays;
+  query.tracers = tracers;
+  query.first_lane = 0;
+  query.candidates = 0;
+  for (unsigned i = 0; i < unsigned(kMaxPacket); ++i)
+    if (lanes & (1u << i)) tracers[i].spans.clear();
 
   // Widen the float interval by a hair: the spans are clipped exactly to
   // [tmin, tmax] in double by ray_span, and Embree's float boxes must not
   // cull a source that touches the interval's ends.
   constexpr float inf = std::numeric_limits<float>::infinity();
-  RTCRayHit rayhit = make_embree_ray(o, d, std::nextafter(float(tmin), 0.0f),
-                                     std::isinf(tmax) ? inf : std::nextafter(float(tmax), inf));
-  rtcIntersect1(span_scene_, &query.embree, &rayhit);
+  auto float_interval = [&](const RayInterval& ray) {
+    return std::pair<float, float>(std::nextafter(float(ray.tmin), 0.0f),
+                                   std::isinf(ray.tmax) ? inf : std::nextafter(float(ray.tmax), inf));
+  };
+  if ((lanes & (lanes - 1)) == 0) {  // one ray: a packet would only add overhead
+    query.first_lane = unsigned(__builtin_ctz(lanes));
+    const RayInterval& ray = rays[query.first_lane];
+    const auto [tnear, tfar] = float_interval(ray);
+    RTCRayHit rayhit = make_embree_ray(ray.origin, ray.direction, tnear, tfar);
+    rtcIntersect1(span_scene_, &query.embree, &rayhit);
+    return query.candidates;
+  }
+  query.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  alignas(64) int valid[kMaxPacket];
+  alignas(64) RTCRayHit16 packet{};
+  for (int i = 0; i < kMaxPacket; ++i) {
+    valid[i] = (lanes & (1u << i)) ? -1 : 0;
+    if (!valid[i]) continue;
+    const auto [tnear, tfar] = float_interval(rays[i]);
+    set_embree_ray(reinterpret_cast<RTCRayHitN*>(&packet), kMaxPacket, unsigned(i), rays[i].origin,
+                   rays[i].direction, tnear, tfar);
+  }
+  rtcIntersect16(valid, span_scene_, &query.embree, &packet);
+  return query.candidates;
 }
 
-double BlobGeometry::first_crossing(const Vec3& o, const Vec3& d, double tmin, double tmax,
-                                    FieldRay& tracer, TraceStats& stats) const {
-  ++stats.field_rays;
-  auto [t, t_end] = clip_to_box(bounds_, o, d, tmin, tmax);
+void BlobGeometry::first_crossings(const RayInterval* rays, int count, FieldRay* tracers,
+                                   TraceStats& stats, double* hits) const {
   // Each window's spans are clipped to it, and they are all the sources
   // that are non-zero in it, so F there is exact. A crossing at a window's
-  // end is found by that window (segment ends are evaluated).
-  double window = first_window_ / d.norm();  // a length, in units of t
-  while (t < t_end) {
-    const double t_next = std::min(t + window, t_end);
-    collect_spans(o, d, t, t_next, tracer);
-    if (!tracer.spans.empty()) {
-      const double hit = tracer.first_crossing(field_, t, t_next, settings_, stats);
-      if (hit >= 0.0) return hit;
-    }
-    t = t_next;
-    window *= 2.0;  // long empty stretches cost a logarithmic number of queries
+  // end is found by that window (segment ends are evaluated). All rays of a
+  // batch step through their windows together, so each step is one packet
+  // query for the rays still looking.
+  std::array<RayInterval, kMaxPacket> window;
+  std::array<double, kMaxPacket> t_end, length;
+  unsigned looking = 0;
+  for (int i = 0; i < count; ++i) {
+    ++stats.field_rays;
+    hits[i] = -1.0;
+    const auto [t, end] = clip_to_box(bounds_, rays[i].origin, rays[i].direction, rays[i].tmin, rays[i].tmax);
+    window[i] = {rays[i].origin, rays[i].direction, t, t};
+    t_end[i] = end;
+    length[i] = first_window_ / rays[i].direction.norm();  // in units of t
+    if (t < end) looking |= 1u << i;
   }
-  return -1.0;
+  while (looking) {
+    for (int i = 0; i < count; ++i)
+      if (looking & (1u << i)) window[i].tmax = std::min(window[i].tmin + length[i], t_end[i]);
+    stats.span_queries += unsigned(__builtin_popcount(looking));
+    stats.span_candidates += query_spans(window.data(), tracers, looking);
+    for (int i = 0; i < count; ++i) {
+      const unsigned bit = 1u << i;
+      if (!(looking & bit)) continue;
+      if (!tracers[i].spans.empty()) {
+        const double hit = tracers[i].first_crossing(field_, window[i].tmin, window[i].tmax, settings_, stats);
+        if (hit >= 0.0) {
+          hits[i] = hit;
+          looking &= ~bit;
+          continue;
+        }
+      }
+      window[i].tmin = window[i].tmax;
+      length[i] *= 2.0;  // long empty stretches cost a logarithmic number of queries
+      if (!(window[i].tmin < t_end[i])) looking &= ~bit;
+    }
+  }
 }
 
 void BlobGeometry::field_bounds(const RTCBoundsFunctionArguments* args) {
@@ -173,37 +247,39 @@ void BlobGeometry::field_bounds(const RTCBoundsFunctionArguments* args) {
 }
 
 void BlobGeometry::field_intersect(const RTCIntersectFunctionNArguments* args) {
-  if (!args->valid[0]) return;
   const auto* self = static_cast<const BlobGeometry*>(args->geometryUserPtr);
   auto* context = reinterpret_cast<FieldRayContext*>(args->context);
-  RTCRayHit* rayhit = reinterpret_cast<RTCRayHit*>(args->rayhit);
-  RTCRay& ray = rayhit->ray;
-  const Vec3 o(ray.org_x, ray.org_y, ray.org_z);
-  const Vec3 d(ray.dir_x, ray.dir_y, ray.dir_z);
-  const double t = self->first_crossing(o, d, ray.tnear, ray.tfar, *context->tracer, *context->stats);
-  if (t < 0.0) return;
-
-  context->t = t;
-  context->surface = context->tracer->surface_at(self->field_, o, d, t);
-  ray.tfar = static_cast<float>(t);
-  rayhit->hit.Ng_x = static_cast<float>(context->surface.normal.x());
-  rayhit->hit.Ng_y = static_cast<float>(context->surface.normal.y());
-  rayhit->hit.Ng_z = static_cast<float>(context->surface.normal.z());
-  rayhit->hit.u = rayhit->hit.v = 0.0f;
-  rayhit->hit.primID = args->primID;
-  rayhit->hit.geomID = args->geomID;
-  rayhit->hit.instID[0] = args->context->instID[0];
+  RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, args->N);
+  RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, args->N);
+  const ValidLanes lanes = gather_lanes(args->valid, rays, args->N);
+  double t[kMaxPacket];
+  self->first_crossings(lanes.rays.data(), lanes.count, context->tracers->data(), *context->stats, t);
+  for (int j = 0; j < lanes.count; ++j) {
+    if (t[j] < 0.0) continue;
+    const unsigned i = lanes.lane[j];
+    const RayInterval& ray = lanes.rays[j];
+    context->t[i] = t[j];
+    const SurfaceSample& surface = context->surface[i] =
+        (*context->tracers)[j].surface_at(self->field_, ray.origin, ray.direction, t[j]);
+    RTCRayN_tfar(rays, args->N, i) = static_cast<float>(t[j]);
+    RTCHitN_Ng_x(hits, args->N, i) = static_cast<float>(surface.normal.x());
+    RTCHitN_Ng_y(hits, args->N, i) = static_cast<float>(surface.normal.y());
+    RTCHitN_Ng_z(hits, args->N, i) = static_cast<float>(surface.normal.z());
+    RTCHitN_u(hits, args->N, i) = RTCHitN_v(hits, args->N, i) = 0.0f;
+    RTCHitN_primID(hits, args->N, i) = args->primID;
+    RTCHitN_geomID(hits, args->N, i) = args->geomID;
+    RTCHitN_instID(hits, args->N, i, 0) = args->context->instID[0];
+  }
 }
 
 void BlobGeometry::field_occluded(const RTCOccludedFunctionNArguments* args) {
-  if (!args->valid[0]) return;
   const auto* self = static_cast<const BlobGeometry*>(args->geometryUserPtr);
   auto* context = reinterpret_cast<FieldRayContext*>(args->context);
-  RTCRay* ray = reinterpret_cast<RTCRay*>(args->ray);
-  const Vec3 o(ray->org_x, ray->org_y, ray->org_z);
-  const Vec3 d(ray->dir_x, ray->dir_y, ray->dir_z);
-  if (self->first_crossing(o, d, ray->tnear, ray->tfar, *context->tracer, *context->stats) >= 0.0)
-    ray->tfar = -std::numeric_limits<float>::infinity();
+  const ValidLanes lanes = gather_lanes(args->valid, args->ray, args->N);
+  double t[kMaxPacket];
+  self->first_crossings(lanes.rays.data(), lanes.count, context->tracers->data(), *context->stats, t);
+  for (int j = 0; j < lanes.count; ++j)
+    if (t[j] >= 0.0) RTCRayN_tfar(args->ray, args->N, lanes.lane[j]) = -std::numeric_limits<float>::infinity();
 }
 
 }  // namespace hsb

@@ -12,26 +12,42 @@
 
 #include <embree3/rtcore.h>
 
+#include <array>
+
 #include "renderer/surface/blob_field.h"
 #include "renderer/surface/field_ray.h"
 
 namespace hsb {
 
-// The per-ray context every rtcIntersect1/rtcOccluded1 on a scene holding a
-// BlobGeometry must pass. Embree hands the RTCIntersectContext pointer back
-// to the callbacks, so it has to be the first member.
+// Rays traced together: Embree's 16-wide packets, a 4×4 tile of camera rays
+// or their shadow rays. Coherent rays share each traversal of the span BVH,
+// and their support intervals are computed side by side.
+constexpr int kMaxPacket = 16;
+
+// Per-thread scratch for the field's callbacks: one FieldRay per packet lane.
+using FieldRayLanes = std::array<FieldRay, kMaxPacket>;
+
+// The context every rtcIntersect/rtcOccluded (1, 4, 8 or 16 wide) on a scene
+// holding a BlobGeometry must pass. Embree hands the RTCIntersectContext
+// pointer back to the callbacks, so it has to be the first member.
 struct FieldRayContext {
   RTCIntersectContext embree;
-  FieldRay* tracer = nullptr;  // per-thread scratch
-  TraceStats* stats = nullptr;     // per-thread counters
-  // Filled when the field geometry accepts a hit (valid while the ray's
-  // geomID is the field's).
-  double t = 0.0;
-  SurfaceSample surface;
+  FieldRayLanes* tracers = nullptr;  // per-thread scratch
+  TraceStats* stats = nullptr;       // per-thread counters
+  // Filled for each lane whose hit the field geometry accepts (valid while
+  // that lane's geomID is the field's).
+  std::array<double, kMaxPacket> t{};
+  std::array<SurfaceSample, kMaxPacket> surface{};
 
-  FieldRayContext(FieldRay& scratch, TraceStats& counters) : tracer(&scratch), stats(&counters) {
+  FieldRayContext(FieldRayLanes& scratch, TraceStats& counters) : tracers(&scratch), stats(&counters) {
     rtcInitIntersectContext(&embree);
   }
+};
+
+// A ray and the parameter interval of it that is asked about.
+struct RayInterval {
+  Vec3 origin, direction;
+  double tmin, tmax;
 };
 
 class BlobGeometry {
@@ -47,22 +63,27 @@ class BlobGeometry {
 
   const BlobField& field() const { return field_; }
 
-  // Collects into tracer.spans every source whose support the ray
-  // o + t d crosses within [tmin, tmax]. Public for the tests.
-  void collect_spans(const Vec3& o, const Vec3& d, double tmin, double tmax,
-                     FieldRay& tracer) const;
+  // For each of `count` rays (at most kMaxPacket), collects into
+  // tracers[i].spans every source whose support ray i crosses within its
+  // interval, in one traversal of the span BVH. Returns how many influence
+  // boxes were tested, summed over the rays. Public for the tests.
+  std::size_t collect_spans(const RayInterval* rays, int count, FieldRay* tracers) const;
 
-  // The first crossing of F = C along the ray, or a negative value. The
-  // span BVH is queried a window at a time in ray order, so a ray that meets
-  // the surface early never collects the sources behind it: the work per
-  // ray follows what is in front of the first hit, not the depth of the
-  // scene.
-  double first_crossing(const Vec3& o, const Vec3& d, double tmin, double tmax,
-                        FieldRay& tracer, TraceStats& stats) const;
+  // For each of `count` rays (at most kMaxPacket), the first crossing of
+  // F = C in its interval, or a negative value; tracers[i] then holds the
+  // spans around ray i's crossing for surface_at(). The span BVH is queried
+  // a window at a time in ray order, so a ray that meets the surface early
+  // never collects the sources behind it: the work per ray follows what is
+  // in front of the first hit, not the depth of the scene.
+  void first_crossings(const RayInterval* rays, int count, FieldRay* tracers, TraceStats& stats,
+                       double* hits) const;
 
  private:
   static void span_bounds(const RTCBoundsFunctionArguments* args);
   static void span_intersect(const RTCIntersectFunctionNArguments* args);
+  // collect_spans for the rays whose bit is set in `lanes`: one traversal,
+  // a packet one when there are several.
+  std::size_t query_spans(const RayInterval* rays, FieldRay* tracers, unsigned lanes) const;
   static void field_bounds(const RTCBoundsFunctionArguments* args);
   static void field_intersect(const RTCIntersectFunctionNArguments* args);
   static void field_occluded(const RTCOccludedFunctionNArguments* args);

@@ -1,5 +1,5 @@
 #pragma once
-// An Embree ray from double-precision origin and direction.
+// Embree rays from double-precision origin and direction.
 
 #include <embree3/rtcore.h>
 
@@ -7,19 +7,30 @@
 
 namespace hsb {
 
+// Lane i of an N-wide ray packet; a single RTCRayHit is the packet with N = 1.
+inline void set_embree_ray(RTCRayHitN* rayhit, unsigned n, unsigned i, const Vec3& o, const Vec3& d,
+                           float tnear, float tfar) {
+  RTCRayN* ray = RTCRayHitN_RayN(rayhit, n);
+  RTCHitN* hit = RTCRayHitN_HitN(rayhit, n);
+  RTCRayN_org_x(ray, n, i) = float(o.x());
+  RTCRayN_org_y(ray, n, i) = float(o.y());
+  RTCRayN_org_z(ray, n, i) = float(o.z());
+  RTCRayN_dir_x(ray, n, i) = float(d.x());
+  RTCRayN_dir_y(ray, n, i) = float(d.y());
+  RTCRayN_dir_z(ray, n, i) = float(d.z());
+  RTCRayN_tnear(ray, n, i) = tnear;
+  RTCRayN_tfar(ray, n, i) = tfar;
+  RTCRayN_time(ray, n, i) = 0.0f;
+  RTCRayN_mask(ray, n, i) = 0xFFFFFFFFu;
+  RTCRayN_id(ray, n, i) = 0;
+  RTCRayN_flags(ray, n, i) = 0;
+  RTCHitN_geomID(hit, n, i) = RTC_INVALID_GEOMETRY_ID;
+  RTCHitN_instID(hit, n, i, 0) = RTC_INVALID_GEOMETRY_ID;
+}
+
 inline RTCRayHit make_embree_ray(const Vec3& o, const Vec3& d, float tnear, float tfar) {
   RTCRayHit rh{};
-  rh.ray.org_x = float(o.x());
-  rh.ray.org_y = float(o.y());
-  rh.ray.org_z = float(o.z());
-  rh.ray.dir_x = float(d.x());
-  rh.ray.dir_y = float(d.y());
-  rh.ray.dir_z = float(d.z());
-  rh.ray.tnear = tnear;
-  rh.ray.tfar = tfar;
-  rh.ray.mask = 0xFFFFFFFFu;
-  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  set_embree_ray(reinterpret_cast<RTCRayHitN*>(&rh), 1, 0, o, d, tnear, tfar);
   return rh;
 }
 

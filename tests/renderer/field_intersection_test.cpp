@@ -39,12 +39,12 @@ Mat3 random_rotation(std::mt19937& rng) {
 
 // Traces one ray through the scene; returns the field hit distance or −1.
 double trace(const RayScene& scene, const Vec3& o, const Vec3& d) {
-  FieldRay tracer;
+  FieldRayLanes tracers;
   TraceStats stats;
-  FieldRayContext context(tracer, stats);
+  FieldRayContext context(tracers, stats);
   RTCRayHit rh = make_embree_ray(o, d, 0.0f, INFINITY);
   rtcIntersect1(scene.get(), &context.embree, &rh);
-  return rh.hit.geomID == scene.field_id() ? context.t : -1.0;
+  return rh.hit.geomID == scene.field_id() ? context.t[0] : -1.0;
 }
 
 TraceSettings sphere_settings(double min_step) {
@@ -162,6 +162,68 @@ TEST(Blending, ColourIsTheInfluenceWeightedMixAndNormalIsTheGradient) {
   }
   EXPECT_LT((s.normal + grad.normalized()).norm(), 1e-6);
   EXPECT_LT(s.normal.dot(d), 0.0);  // faces the viewer
+}
+
+// Camera and shadow rays are traced 16 at a time; each lane must get the
+// answer its ray gets alone, whichever lanes are active.
+TEST(Packets, EachLaneAnswersAsItsRayAlone) {
+  std::mt19937 rng(77);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  BlobField field;
+  for (int i = 0; i < 400; ++i) {
+    const Vec3 radii(0.15, 0.15 * std::pow(10.0, -0.5 * (unit(rng) + 1)), 0.04);
+    field.sources.push_back(make_blob_source(Vec3(unit(rng), unit(rng), unit(rng)), random_rotation(rng),
+                                             radii, 1.3, {1, 1, 1}));
+  }
+  const EmbreeDevice device;
+  for (Intersector method : {Intersector::sphere, Intersector::exact}) {
+    TraceSettings settings;
+    settings.intersector = method;
+    const RayScene scene(device, field, Box3{}, no_context_geometry(), settings);
+    int hits = 0, occluded = 0;
+    for (int packet = 0; packet < 300; ++packet) {
+      // Alternate coherent packets (a small cone from one point) and
+      // scattered ones; leave some lanes inactive.
+      const bool coherent = packet % 2 == 0;
+      const Vec3 eye = 4.0 * Vec3(unit(rng), unit(rng), unit(rng)).normalized();
+      const Vec3 aim = 0.5 * Vec3(unit(rng), unit(rng), unit(rng));
+      alignas(64) int valid[kMaxPacket];
+      alignas(64) RTCRayHit16 rays{};
+      Vec3 origin[kMaxPacket], direction[kMaxPacket];
+      for (int i = 0; i < kMaxPacket; ++i) {
+        origin[i] = coherent ? eye : 4.0 * Vec3(unit(rng), unit(rng), unit(rng)).normalized();
+        const Vec3 scatter(unit(rng), unit(rng), unit(rng));
+        const Vec3 target = coherent ? Vec3(aim + 0.1 * scatter) : Vec3(0.8 * scatter);
+        direction[i] = (target - origin[i]).normalized().cast<float>().cast<double>();
+        origin[i] = origin[i].cast<float>().cast<double>();
+        valid[i] = unit(rng) > -0.7 ? -1 : 0;
+        set_embree_ray(reinterpret_cast<RTCRayHitN*>(&rays), kMaxPacket, unsigned(i), origin[i], direction[i],
+                       0.0f, INFINITY);
+      }
+      alignas(64) RTCRayHit16 shadows = rays;
+      FieldRayLanes tracers;
+      TraceStats stats;
+      FieldRayContext context(tracers, stats);
+      rtcIntersect16(valid, scene.get(), &context.embree, &rays);
+      FieldRayContext shadow_context(tracers, stats);
+      rtcOccluded16(valid, scene.get(), &shadow_context.embree, &shadows.ray);
+
+      for (int i = 0; i < kMaxPacket; ++i) {
+        if (!valid[i]) continue;
+        const double alone = trace(scene, origin[i], direction[i]);
+        const bool hit = rays.hit.geomID[i] == scene.field_id();
+        ASSERT_EQ(hit, alone >= 0.0) << "packet " << packet << " lane " << i;
+        ASSERT_EQ(shadows.ray.tfar[i] < 0.0f, hit) << "packet " << packet << " lane " << i;
+        if (!hit) continue;
+        ++hits;
+        EXPECT_NEAR(context.t[std::size_t(i)], alone, 1e-12) << "packet " << packet << " lane " << i;
+        EXPECT_EQ(rays.ray.tfar[i], float(alone));
+        occluded += shadows.ray.tfar[i] < 0.0f;
+      }
+    }
+    EXPECT_GT(hits, 1000);
+    EXPECT_EQ(occluded, hits);
+  }
 }
 
 }  // namespace
