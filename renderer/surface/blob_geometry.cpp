@@ -12,14 +12,12 @@ namespace hsb {
 namespace {
 
 // The span query's context: where the span BVH's callback writes. Lane i of
-// a packet query is ray `first_lane + i` of the batch (a single-ray query
-// has one lane, the batch's `first_lane`).
+// the query is rays lane i, and its spans go to tracers[i].
 struct SpanQueryContext {
   RTCIntersectContext embree;  // first member, see FieldRayContext
   const BlobField* field;
-  const RayInterval* rays;
+  RayLanes rays;
   FieldRay* tracers;
-  unsigned first_lane;
   std::size_t candidates;
 };
 
@@ -142,14 +140,16 @@ void BlobGeometry::span_bounds(const RTCBoundsFunctionArguments* args) {
 
 void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
   auto* query = reinterpret_cast<SpanQueryContext*>(args->context);
-  const BlobSource& source = query->field->sources[args->primID];
-  for (unsigned lane = 0; lane < args->N; ++lane) {
-    if (!args->valid[lane]) continue;
-    ++query->candidates;
-    const RayInterval& ray = query->rays[query->first_lane + lane];
-    RaySpan span;
-    if (ray_span(source, args->primID, ray.origin, ray.direction, ray.tmin, ray.tmax, span))
-      query->tracers[query->first_lane + lane].spans.push_back(span);
+  const int n = int(args->N);
+  unsigned valid = 0;
+  for (int i = 0; i < n; ++i) valid |= unsigned(args->valid[i] != 0) << i;
+  query->candidates += unsigned(__builtin_popcount(valid));
+  SpanLanes spans;
+  unsigned entered = valid & ray_spans(query->field->sources[args->primID], query->rays, n, spans);
+  for (; entered; entered &= entered - 1) {
+    const int i = __builtin_ctz(entered);
+    query->tracers[i].spans.push_back(
+        RaySpan{spans.t0[i], spans.t1[i], spans.a[i], spans.t_c[i], spans.g_min[i], args->primID});
   }
   // No hit is reported: traversal goes on and visits every crossed box.
 }
@@ -162,15 +162,13 @@ std::size_t BlobGeometry::query_spans(const RayInterval* rays, FieldRay* tracers
   SpanQueryContext query;
   rtcInitIntersectContext(&query.embree);
   query.field = &field_;
-  query.rays = rays;
   query.tracers = tracers;
-  query.first_lane = 0;
   query.candidates = 0;
   for (unsigned i = 0; i < unsigned(kMaxPacket); ++i)
     if (lanes & (1u << i)) tracers[i].spans.clear();
 
   // Widen the float interval by a hair: the spans are clipped exactly to
-  // [tmin, tmax] in double by ray_span, and Embree's float boxes must not
+  // [tmin, tmax] in double by ray_spans, and Embree's float boxes must not
   // cull a source that touches the interval's ends.
   constexpr float inf = std::numeric_limits<float>::infinity();
   auto float_interval = [&](const RayInterval& ray) {
@@ -178,8 +176,10 @@ std::size_t BlobGeometry::query_spans(const RayInterval* rays, FieldRay* tracers
                                    std::isinf(ray.tmax) ? inf : std::nextafter(float(ray.tmax), inf));
   };
   if ((lanes & (lanes - 1)) == 0) {  // one ray: a packet would only add overhead
-    query.first_lane = unsigned(__builtin_ctz(lanes));
-    const RayInterval& ray = rays[query.first_lane];
+    const int lane = __builtin_ctz(lanes);
+    const RayInterval& ray = rays[lane];
+    query.rays.set(0, ray.origin, ray.direction, ray.tmin, ray.tmax);
+    query.tracers = tracers + lane;
     const auto [tnear, tfar] = float_interval(ray);
     RTCRayHit rayhit = make_embree_ray(ray.origin, ray.direction, tnear, tfar);
     rtcIntersect1(span_scene_, &query.embree, &rayhit);
@@ -190,10 +190,12 @@ std::size_t BlobGeometry::query_spans(const RayInterval* rays, FieldRay* tracers
   alignas(64) RTCRayHit16 packet{};
   for (int i = 0; i < kMaxPacket; ++i) {
     valid[i] = (lanes & (1u << i)) ? -1 : 0;
+    const RayInterval& ray = valid[i] ? rays[i] : rays[__builtin_ctz(lanes)];  // idle lanes stay finite
+    query.rays.set(i, ray.origin, ray.direction, ray.tmin, ray.tmax);
     if (!valid[i]) continue;
-    const auto [tnear, tfar] = float_interval(rays[i]);
-    set_embree_ray(reinterpret_cast<RTCRayHitN*>(&packet), kMaxPacket, unsigned(i), rays[i].origin,
-                   rays[i].direction, tnear, tfar);
+    const auto [tnear, tfar] = float_interval(ray);
+    set_embree_ray(reinterpret_cast<RTCRayHitN*>(&packet), kMaxPacket, unsigned(i), ray.origin,
+                   ray.direction, tnear, tfar);
   }
   rtcIntersect16(valid, span_scene_, &query.embree, &packet);
   return query.candidates;

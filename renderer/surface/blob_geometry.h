@@ -19,11 +19,6 @@
 
 namespace hsb {
 
-// Rays traced together: Embree's 16-wide packets, a 4×4 tile of camera rays
-// or their shadow rays. Coherent rays share each traversal of the span BVH,
-// and their support intervals are computed side by side.
-constexpr int kMaxPacket = 16;
-
 // Per-thread scratch for the field's callbacks: one FieldRay per packet lane.
 using FieldRayLanes = std::array<FieldRay, kMaxPacket>;
 

@@ -1,14 +1,18 @@
 #pragma once
-// One source seen along one ray: g(t) along the ray and the t-interval where
-// g ≤ 1 (the source's support on the ray).
+// One source seen along a ray: g(t) along the ray and the t-interval where
+// g ≤ 1 (the source's support on the ray). Computed for a whole packet of
+// rays at once, because that is how the span BVH asks.
 
-#include <cmath>
 #include <cstdint>
 
 #include "field/sym3.h"
 #include "renderer/surface/blob_field.h"
 
 namespace hsb {
+
+// Rays traced together: Embree's 16-wide packets, a 4×4 tile of camera rays
+// or their shadow rays.
+constexpr int kMaxPacket = 16;
 
 // g is kept in vertex form g(t) = a (t − t_c)² + g_min rather than expanded,
 // which would cancel catastrophically for a distant camera.
@@ -22,34 +26,31 @@ struct RaySpan {
   double g(double t) const { return a * (t - t_c) * (t - t_c) + g_min; }
 };
 
-// Fills `span` and returns true when the ray o + t d, t ∈ [tmin, tmax],
-// enters the influence ellipsoid of `s`.
-inline bool ray_span(const BlobSource& s, std::uint32_t index, const Vec3& o, const Vec3& d,
-                     double tmin, double tmax, RaySpan& span) {
-  // In the source's scaled frame q(t) = W(o − c) + t W d, g = |q|².
-  double wp[3], wd[3];
-  for (int k = 0; k < 3; ++k) {
-    const double w0 = s.w[3 * k], w1 = s.w[3 * k + 1], w2 = s.w[3 * k + 2];
-    wp[k] = w0 * (o[0] - s.centre[0]) + w1 * (o[1] - s.centre[1]) + w2 * (o[2] - s.centre[2]);
-    wd[k] = w0 * d[0] + w1 * d[1] + w2 * d[2];
+// Up to kMaxPacket rays o + t d, t ∈ [tmin, tmax], as structure of arrays:
+// one source is tested against all of them in SIMD lanes.
+struct RayLanes {
+  alignas(64) double ox[kMaxPacket], oy[kMaxPacket], oz[kMaxPacket];
+  alignas(64) double dx[kMaxPacket], dy[kMaxPacket], dz[kMaxPacket];
+  alignas(64) double tmin[kMaxPacket], tmax[kMaxPacket];
+
+  void set(int lane, const Vec3& o, const Vec3& d, double t_min, double t_max) {
+    ox[lane] = o.x(), oy[lane] = o.y(), oz[lane] = o.z();
+    dx[lane] = d.x(), dy[lane] = d.y(), dz[lane] = d.z();
+    tmin[lane] = t_min, tmax[lane] = t_max;
   }
-  const double a = wd[0] * wd[0] + wd[1] * wd[1] + wd[2] * wd[2];
-  const double half_b = wd[0] * wp[0] + wd[1] * wp[1] + wd[2] * wp[2];
-  if (!(a > 0.0)) return false;
-  // g(t) = a t² + 2 half_b t + |Wp|². Whether the ray enters at
-  // all is decided by g at the closest approach t_c; it is computed as |q(t_c)|²
-  // rather than |Wp|² − half_b²/a, which cancels catastrophically when the
-  // camera is far from a small glyph.
-  const double tc = -half_b / a;
-  const double q0 = wp[0] + tc * wd[0], q1 = wp[1] + tc * wd[1], q2 = wp[2] + tc * wd[2];
-  const double g_min = q0 * q0 + q1 * q1 + q2 * q2;
-  if (!(g_min < 1.0)) return false;
-  const double half_width = std::sqrt((1.0 - g_min) / a);
-  const double t0 = std::fmax(tc - half_width, tmin);
-  const double t1 = std::fmin(tc + half_width, tmax);
-  if (!(t0 < t1)) return false;
-  span = RaySpan{t0, t1, a, tc, g_min, index};
-  return true;
-}
+};
+
+// The spans of one source on lanes [0, count) of `rays`, in `spans`
+// (fields t0, t1, a, t_c, g_min; `source` is left to the caller). Returns a
+// bit mask of the lanes whose ray enters the source's support.
+struct SpanLanes {
+  alignas(64) double t0[kMaxPacket], t1[kMaxPacket], a[kMaxPacket], t_c[kMaxPacket], g_min[kMaxPacket];
+};
+unsigned ray_spans(const BlobSource& s, const RayLanes& rays, int count, SpanLanes& spans);
+
+// The same for one ray: fills `span` and returns true when the ray enters
+// the support of `s`.
+bool ray_span(const BlobSource& s, std::uint32_t index, const Vec3& o, const Vec3& d, double tmin,
+              double tmax, RaySpan& span);
 
 }  // namespace hsb
