@@ -30,8 +30,9 @@ void print_summary(const hsb::RenderSummary& s, bool with_stats) {
               s.render_seconds, s.output_seconds, mrays);
   if (with_stats) {
     const double field_rays = double(std::max<std::uint64_t>(1, s.stats.field_rays));
-    std::printf("  primary rays %llu, shadow rays %llu, rays into the field %llu\n",
-                (unsigned long long)s.primary_rays, (unsigned long long)s.shadow_rays,
+    std::printf("  primary rays %llu (%.2f Mrays/s), shadow rays %llu (%.2f Mrays/s), rays into the field %llu\n",
+                (unsigned long long)s.primary_rays, s.primary_mrays_per_second,
+                (unsigned long long)s.shadow_rays, s.shadow_mrays_per_second,
                 (unsigned long long)s.stats.field_rays);
     std::printf("  per field ray: %.2f span queries testing %.1f influence boxes\n",
                 double(s.stats.span_queries) / field_rays, double(s.stats.span_candidates) / field_rays);

@@ -129,6 +129,8 @@ RenderSummary run_render_job(const RenderJob& job) {
   summary.total_seconds = seconds_since(start);
   summary.primary_rays = rendered.primary_rays;
   summary.shadow_rays = rendered.shadow_rays;
+  summary.primary_mrays_per_second = rendered.primary_mrays_per_second();
+  summary.shadow_mrays_per_second = rendered.shadow_mrays_per_second();
   summary.stats = rendered.stats;
   return summary;
 }

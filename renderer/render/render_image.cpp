@@ -19,7 +19,14 @@ struct ThreadState {
   TraceStats stats;
   std::uint64_t primary_rays = 0;
   std::uint64_t shadow_rays = 0;
+  double primary_seconds = 0.0, shadow_seconds = 0.0;
 };
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
 // Camera rays are traced a tile of pixels at a time, one packet per
 // sub-pixel sample: neighbouring rays meet the same sources.
@@ -57,7 +64,9 @@ void trace_packet(const RayScene& scene, const ShadingSpec& shading, const Vec3&
     valid[i] = i < count ? -1 : 0;
     if (i < count) set_embree_ray(primary_n, kMaxPacket, unsigned(i), origin, directions[i], 0.0f, INFINITY);
   }
+  const auto primary_start = Clock::now();
   rtcIntersect16(valid, scene.get(), &context.embree, &primary);
+  state.primary_seconds += seconds_since(primary_start);
   state.primary_rays += unsigned(count);
 
   // The field's hits: the tracer kept t in double and the shading inputs.
@@ -83,7 +92,9 @@ void trace_packet(const RayScene& scene, const ShadingSpec& shading, const Vec3&
   if (shadow_count > 0) {
     FieldRayContext shadow_context(state.tracers, state.stats);
     shadow_context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;  // parallel rays from nearby points
+    const auto shadow_start = Clock::now();
     rtcOccluded16(shadow_valid, scene.get(), &shadow_context.embree, &shadow.ray);
+    state.shadow_seconds += seconds_since(shadow_start);
     state.shadow_rays += unsigned(shadow_count);
   }
   for (int i = 0; i < count; ++i) {
@@ -132,7 +143,7 @@ Rgb composite_shell(RTCScene shell, const ShadingSpec& shading, const Vec3& orig
 
 RenderOutput render_image(const RayScene& scene, const Box3& domain, const CameraSpec& camera_spec,
                           const ShadingSpec& shading, const RenderSettings& settings) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   const Camera camera(camera_spec, settings.width, settings.height);
   const Vec3 to_light = shading.light_from.normalized();
   const double shadow_offset = settings.shadow_offset * domain.diagonal();
@@ -199,8 +210,11 @@ RenderOutput render_image(const RayScene& scene, const Box3& domain, const Camer
     out.stats += state.stats;
     out.primary_rays += state.primary_rays;
     out.shadow_rays += state.shadow_rays;
+    out.primary_seconds += state.primary_seconds;
+    out.shadow_seconds += state.shadow_seconds;
   }
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.threads = std::max<int>(1, int(states.size()));
+  out.seconds = seconds_since(start);
   return out;
 }
 

@@ -28,6 +28,19 @@ struct RenderOutput {
   std::uint64_t primary_rays = 0;
   std::uint64_t shadow_rays = 0;
   double seconds = 0.0;
+  // Time inside camera-ray and shadow-ray queries, summed over the threads
+  // that rendered, and their number: the rates are what all threads
+  // together achieve on that kind of ray.
+  double primary_seconds = 0.0, shadow_seconds = 0.0;
+  int threads = 1;
+
+  double primary_mrays_per_second() const { return rate(primary_rays, primary_seconds); }
+  double shadow_mrays_per_second() const { return rate(shadow_rays, shadow_seconds); }
+
+ private:
+  double rate(std::uint64_t rays, double thread_seconds) const {
+    return thread_seconds > 0.0 ? double(rays) * threads / thread_seconds * 1e-6 : 0.0;
+  }
 };
 
 RenderOutput render_image(const RayScene& scene, const Box3& domain, const CameraSpec& camera,
