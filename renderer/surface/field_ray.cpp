@@ -53,15 +53,7 @@ double FieldRay::first_crossing(const BlobField& field, double tmin, double tmax
 
 void FieldRay::begin_segments(double tmin, TraceStats& stats) {
   stats.spans += spans.size();
-  // The span BVH is traversed nearest box first, so the spans arrive almost
-  // in order: insertion sort is linear on them, where std::sort is not.
-  for (std::size_t i = 1; i < spans.size(); ++i) {
-    if (!(spans[i].t0 < spans[i - 1].t0)) continue;
-    const RaySpan moving = spans[i];
-    std::size_t j = i;
-    for (; j > 0 && moving.t0 < spans[j - 1].t0; --j) spans[j] = spans[j - 1];
-    spans[j] = moving;
-  }
+  std::sort(spans.begin(), spans.end(), [](const RaySpan& x, const RaySpan& y) { return x.t0 < y.t0; });
   active_.clear();
   next_ = 0;
   cursor_ = tmin;
