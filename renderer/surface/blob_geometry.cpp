@@ -1,6 +1,8 @@
 #include "renderer/surface/blob_geometry.h"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -62,7 +64,13 @@ struct ValidLanes {
 };
 
 ValidLanes gather_lanes(const int* valid, RTCRayN* rays, unsigned n) {
-  if (n > unsigned(kMaxPacket)) throw std::logic_error("ray packets wider than kMaxPacket are not issued");
+  // Embree calls back with the width of the caller's query, and no caller
+  // issues packets wider than kMaxPacket. (An exception must not cross
+  // Embree's C frames, hence the abort.)
+  if (n > unsigned(kMaxPacket)) {
+    std::fprintf(stderr, "hsb: internal error: a %u-ray packet reached the field geometry\n", n);
+    std::abort();
+  }
   ValidLanes lanes;
   for (unsigned i = 0; i < n; ++i) {
     if (!valid[i]) continue;
@@ -155,7 +163,9 @@ void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
 }
 
 std::size_t BlobGeometry::collect_spans(const RayInterval* rays, int count, FieldRay* tracers) const {
-  return query_spans(rays, tracers, count >= 32 ? ~0u : (1u << count) - 1u);
+  if (count < 1 || count > kMaxPacket)
+    throw std::invalid_argument("collect_spans takes 1 to " + std::to_string(kMaxPacket) + " rays");
+  return query_spans(rays, tracers, (1u << count) - 1u);
 }
 
 std::size_t BlobGeometry::query_spans(const RayInterval* rays, FieldRay* tracers, unsigned lanes) const {
@@ -208,6 +218,8 @@ void BlobGeometry::first_crossings(const RayInterval* rays, int count, FieldRay*
   // end is found by that window (segment ends are evaluated). All rays of a
   // batch step through their windows together, so each step is one packet
   // query for the rays still looking.
+  if (count > kMaxPacket)
+    throw std::invalid_argument("first_crossings takes at most " + std::to_string(kMaxPacket) + " rays");
   std::array<RayInterval, kMaxPacket> window;
   std::array<double, kMaxPacket> t_end, length;
   unsigned looking = 0;
