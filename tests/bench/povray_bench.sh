@@ -65,4 +65,5 @@ while (($# >= 2)); do
   awk -v n="$name" -v s="$sources" -v h="$hsb_s" -v p="$povray_s" -v g="$agreement" \
     'BEGIN { printf "%-42s %8d %9.2f %9.2f %6.1fx %10s\n", n, s, h, p, p / h, g }'
 done
-echo "(${size}x${size}, 1 sample per pixel, one light with shadows; median whole-process times of 3 runs on $(nproc) cores)"
+commit=$(git rev-parse --short HEAD 2> /dev/null || echo unknown)
+echo "(${size}x${size}, 1 sample per pixel, one light with shadows; median whole-process times of 3 runs on $(nproc) cores; hsb at $commit)"
