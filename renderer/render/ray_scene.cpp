@@ -39,6 +39,7 @@ RTCGeometry make_box_edges(RTCDevice device, const Box3& box, double radius) {
       ++edge;
     }
   }
+  rtcSetGeometryMask(geometry, RayScene::kContextMask);
   rtcCommitGeometry(geometry);
   return geometry;
 }
@@ -75,7 +76,12 @@ RayScene::RayScene(const EmbreeDevice& device, const BlobField& field, const Box
                    const TriangleMesh* shell) {
   scene_ = rtcNewScene(device.get());
   blobs_ = std::make_unique<BlobGeometry>(device.get(), field, settings);
-  if (!field.sources.empty()) field_id_ = blobs_->attach_to(scene_);
+  if (!field.sources.empty()) {
+    field_id_ = blobs_->attach_to(scene_);
+    RTCGeometry field_geometry = rtcGetGeometry(scene_, field_id_);
+    rtcSetGeometryMask(field_geometry, kFieldMask);
+    rtcCommitGeometry(field_geometry);
+  }
   if (shading.box) {
     const double radius = shading.box_radius > 0.0 ? shading.box_radius : domain.diagonal() / 500.0;
     RTCGeometry edges = make_box_edges(device.get(), domain, radius);

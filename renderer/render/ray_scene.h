@@ -27,8 +27,16 @@ class EmbreeDevice {
 
 class RayScene {
  public:
+  // Embree geometry masks. The field casts shadows; the domain's edges are
+  // context like the shell: drawn, but a shadow ray passes them, because a
+  // thin dark line across a glyph reads as a feature of the data.
+  static constexpr unsigned kFieldMask = 1u;
+  static constexpr unsigned kContextMask = 2u;
+  static constexpr unsigned kShadowRayMask = kFieldMask;
+
   // `field` must outlive the scene. The domain box edges are added as thin
-  // round curves when `shading.box` is set. `shell`, when given and
+  // round curves when `shading.box` is set; they cast no shadow (shadow
+  // rays carry kShadowRayMask). `shell`, when given and
   // `shading.shell` is set, becomes a separate scene of triangles: it is
   // composited over what the rays hit, casts no shadow and hides nothing.
   RayScene(const EmbreeDevice& device, const BlobField& field, const Box3& domain,

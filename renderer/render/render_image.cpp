@@ -84,7 +84,8 @@ void trace_packet(const RayScene& scene, const ShadingSpec& shading, const Vec3&
       const Vec3 x = origin + context.t[std::size_t(i)] * directions[i];
       const Vec3& n = context.surface[std::size_t(i)].normal;
       const Vec3 start = x + shadow_offset * (n.dot(directions[i]) < 0.0 ? n : Vec3(-n));
-      set_embree_ray(shadow_n, kMaxPacket, unsigned(i), start, to_light, 0.0f, INFINITY);
+      set_embree_ray(shadow_n, kMaxPacket, unsigned(i), start, to_light, 0.0f, INFINITY,
+                     RayScene::kShadowRayMask);
       shadow_valid[i] = -1;
       ++shadow_count;
     }

@@ -8,8 +8,9 @@
 namespace hsb {
 
 // Lane i of an N-wide ray packet; a single RTCRayHit is the packet with N = 1.
+// The ray meets the geometries whose mask shares a bit with `mask`.
 inline void set_embree_ray(RTCRayHitN* rayhit, unsigned n, unsigned i, const Vec3& o, const Vec3& d,
-                           float tnear, float tfar) {
+                           float tnear, float tfar, unsigned mask = 0xFFFFFFFFu) {
   RTCRayN* ray = RTCRayHitN_RayN(rayhit, n);
   RTCHitN* hit = RTCRayHitN_HitN(rayhit, n);
   RTCRayN_org_x(ray, n, i) = float(o.x());
@@ -21,7 +22,7 @@ inline void set_embree_ray(RTCRayHitN* rayhit, unsigned n, unsigned i, const Vec
   RTCRayN_tnear(ray, n, i) = tnear;
   RTCRayN_tfar(ray, n, i) = tfar;
   RTCRayN_time(ray, n, i) = 0.0f;
-  RTCRayN_mask(ray, n, i) = 0xFFFFFFFFu;
+  RTCRayN_mask(ray, n, i) = mask;
   RTCRayN_id(ray, n, i) = 0;
   RTCRayN_flags(ray, n, i) = 0;
   RTCHitN_geomID(hit, n, i) = RTC_INVALID_GEOMETRY_ID;
