@@ -9,6 +9,7 @@
 #include "renderer/render/ray_scene.h"
 #include "renderer/surface/embree_ray.h"
 #include "tests/renderer/blob_pair.h"
+#include "tests/renderer/camera_ray.h"
 
 namespace hsb {
 namespace {
@@ -39,12 +40,8 @@ Mat3 random_rotation(std::mt19937& rng) {
 
 // Traces one ray through the scene; returns the field hit distance or −1.
 double trace(const RayScene& scene, const Vec3& o, const Vec3& d) {
-  FieldRayLanes tracers;
-  TraceStats stats;
-  FieldRayContext context(tracers, stats);
-  RTCRayHit rh = make_embree_ray(o, d, 0.0f, INFINITY);
-  rtcIntersect1(scene.get(), &context.embree, &rh);
-  return rh.hit.geomID == scene.field_id() ? context.t[0] : -1.0;
+  const CameraHit hit = trace_camera_ray(scene, o, d);
+  return hit.geom_id == scene.field_id() ? hit.t : -1.0;
 }
 
 TraceSettings sphere_settings(double min_step) {

@@ -7,6 +7,7 @@
 #include "renderer/render/ray_scene.h"
 #include "renderer/surface/embree_ray.h"
 #include "tests/renderer/blob_pair.h"
+#include "tests/renderer/camera_ray.h"
 
 namespace hsb {
 namespace {
@@ -19,14 +20,11 @@ struct Traced {
 Traced trace_both(const RayScene& scene, const Vec3& o, const Vec3& d) {
   FieldRayLanes tracers;
   TraceStats stats;
-  FieldRayContext camera_context(tracers, stats);
-  RTCRayHit camera = make_embree_ray(o, d, 0.0f, INFINITY);
-  rtcIntersect1(scene.get(), &camera_context.embree, &camera);
   FieldRayContext shadow_context(tracers, stats);
   RTCRayHit shadow{};
   set_embree_ray(reinterpret_cast<RTCRayHitN*>(&shadow), 1, 0, o, d, 0.0f, INFINITY, RayScene::kShadowRayMask);
   rtcOccluded1(scene.get(), &shadow_context.embree, &shadow.ray);
-  return {camera.hit.geomID, shadow.ray.tfar < 0.0f};
+  return {trace_camera_ray(scene, o, d).geom_id, shadow.ray.tfar < 0.0f};
 }
 
 // The domain's edges are drawn but cast no shadow: a thin dark line across
