@@ -74,13 +74,19 @@ void trace_packet(const RayScene& scene, const ShadingSpec& shading, const Vec3&
   alignas(64) RTCRayHit16 shadow{};
   auto* shadow_n = reinterpret_cast<RTCRayHitN*>(&shadow);
   int shadow_count = 0;
+  bool on_field[kMaxPacket] = {};
   for (int i = 0; i < count; ++i) {
     const unsigned id = primary.hit.geomID[i];
     if (id == RTC_INVALID_GEOMETRY_ID) {
       samples[i] = {shading.background, false, INFINITY};
-    } else if (id == scene.box_id()) {
+      continue;
+    }
+    if (id == scene.box_id()) {
       samples[i] = {shading.box_color, true, double(primary.ray.tfar[i])};
-    } else if (shading.shadows) {
+      continue;
+    }
+    on_field[i] = true;
+    if (shading.shadows) {
       const Vec3 x = origin + context.t[std::size_t(i)] * directions[i];
       const Vec3& n = context.surface[std::size_t(i)].normal;
       const Vec3 start = x + shadow_offset * (n.dot(directions[i]) < 0.0 ? n : Vec3(-n));
@@ -99,8 +105,7 @@ void trace_packet(const RayScene& scene, const ShadingSpec& shading, const Vec3&
     state.shadow_rays += unsigned(shadow_count);
   }
   for (int i = 0; i < count; ++i) {
-    const unsigned id = primary.hit.geomID[i];
-    if (id == RTC_INVALID_GEOMETRY_ID || id == scene.box_id()) continue;
+    if (!on_field[i]) continue;
     const SurfaceSample& surface = context.surface[std::size_t(i)];
     const double visibility = shadow_valid[i] && shadow.ray.tfar[i] < 0.0f ? 0.0 : 1.0;
     samples[i] = {shade_surface(shading, surface.color, surface.normal, -directions[i], to_light, visibility),
@@ -162,13 +167,15 @@ RenderOutput render_image(const RayScene& scene, const Box3& domain, const Camer
       for (int tx = 0; tx < tiles_x; ++tx) {
         // The tile's pixels (fewer at the image's right and bottom edges).
         int px[kMaxPacket], py[kMaxPacket];
+        std::uint64_t pixel[kMaxPacket];  // index into the film
         int count = 0;
         for (int dy = 0; dy < kTile; ++dy)
           for (int dx = 0; dx < kTile; ++dx) {
             const int x = tx * kTile + dx, y = ty * kTile + dy;
             if (x >= settings.width || y >= settings.height) continue;
             px[count] = x;
-            py[count++] = y;
+            py[count] = y;
+            pixel[count++] = std::uint64_t(y) * std::uint64_t(settings.width) + std::uint64_t(x);
           }
         double rgb[kMaxPacket][3] = {};
         double coverage[kMaxPacket] = {};
@@ -178,8 +185,7 @@ RenderOutput render_image(const RayScene& scene, const Box3& domain, const Camer
           for (int sx = 0; sx < n; ++sx) {
             Vec3 directions[kMaxPacket];
             for (int i = 0; i < count; ++i) {
-              const std::uint64_t pixel = std::uint64_t(py[i]) * std::uint64_t(settings.width) + std::uint64_t(px[i]);
-              const std::uint64_t key = (pixel * std::uint64_t(n * n) + std::uint64_t(sy * n + sx)) * 2;
+              const std::uint64_t key = (pixel[i] * std::uint64_t(n * n) + std::uint64_t(sy * n + sx)) * 2;
               const double jx = n == 1 ? 0.5 : (sx + hash_unit(key)) / n;
               const double jy = n == 1 ? 0.5 : (sy + hash_unit(key + 1)) / n;
               directions[i] = camera.direction(px[i] + jx, py[i] + jy);
@@ -201,7 +207,7 @@ RenderOutput render_image(const RayScene& scene, const Box3& domain, const Camer
           float* p = out.film.pixel(px[i], py[i]);
           for (int c = 0; c < 3; ++c) p[c] = float(rgb[i][c] * inv_samples);
           p[3] = float(coverage[i] * inv_samples);
-          out.film.depth[std::size_t(py[i]) * std::size_t(settings.width) + std::size_t(px[i])] = float(depth[i]);
+          out.film.depth[pixel[i]] = float(depth[i]);
         }
       }
     }
