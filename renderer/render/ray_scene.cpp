@@ -76,12 +76,7 @@ RayScene::RayScene(const EmbreeDevice& device, const BlobField& field, const Box
                    const TriangleMesh* shell) {
   scene_ = rtcNewScene(device.get());
   blobs_ = std::make_unique<BlobGeometry>(device.get(), field, settings);
-  if (!field.sources.empty()) {
-    field_id_ = blobs_->attach_to(scene_);
-    RTCGeometry field_geometry = rtcGetGeometry(scene_, field_id_);
-    rtcSetGeometryMask(field_geometry, kFieldMask);
-    rtcCommitGeometry(field_geometry);
-  }
+  if (!field.sources.empty()) field_id_ = blobs_->attach_to(scene_, kFieldMask);
   if (shading.box) {
     const double radius = shading.box_radius > 0.0 ? shading.box_radius : domain.diagonal() / 500.0;
     RTCGeometry edges = make_box_edges(device.get(), domain, radius);

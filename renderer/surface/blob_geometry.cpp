@@ -127,9 +127,10 @@ BlobGeometry::~BlobGeometry() {
   if (span_scene_) rtcReleaseScene(span_scene_);
 }
 
-unsigned BlobGeometry::attach_to(RTCScene scene) {
+unsigned BlobGeometry::attach_to(RTCScene scene, unsigned mask) {
   RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
   rtcSetGeometryUserPrimitiveCount(geometry, field_.sources.empty() ? 0u : 1u);
+  rtcSetGeometryMask(geometry, mask);
   rtcSetGeometryUserData(geometry, this);
   rtcSetGeometryBoundsFunction(geometry, field_bounds, nullptr);
   rtcSetGeometryIntersectFunction(geometry, field_intersect);

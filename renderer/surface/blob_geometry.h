@@ -53,8 +53,9 @@ class BlobGeometry {
   BlobGeometry(const BlobGeometry&) = delete;
   BlobGeometry& operator=(const BlobGeometry&) = delete;
 
-  // Adds the field's user geometry to `scene` and returns its geometry ID.
-  unsigned attach_to(RTCScene scene);
+  // Adds the field's user geometry to `scene`, with Embree geometry mask
+  // `mask`, and returns its geometry ID.
+  unsigned attach_to(RTCScene scene, unsigned mask);
 
   const BlobField& field() const { return field_; }
 
