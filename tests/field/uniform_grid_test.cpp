@@ -40,6 +40,12 @@ UniformGridField affine_grid(const Vec3& origin, const Vec3& spacing,
   return UniformGridField(origin, spacing, dims, std::move(values));
 }
 
+// A point drawn uniformly from the box.
+Vec3 random_point_in(const Box3& b, std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  return b.lo + Vec3(u(rng), u(rng), u(rng)).cwiseProduct(b.size());
+}
+
 double max_diff(const Sym3& a, const Sym3& b) {
   return (a.matrix() - b.matrix()).cwiseAbs().maxCoeff();
 }
@@ -71,11 +77,9 @@ TEST(UniformGrid, ExactAtNodes) {
 
 TEST(UniformGrid, ReproducesAffineFieldsInside) {
   const UniformGridField g = affine_grid(kOrigin, kSpacing, kDims);
-  const Box3 b = g.bounds();
   std::mt19937 rng(5);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int i = 0; i < 1000; ++i) {
-    const Vec3 p = b.lo + Vec3(u(rng), u(rng), u(rng)).cwiseProduct(b.size());
+    const Vec3 p = random_point_in(g.bounds(), rng);
     const std::optional<Sym3> s = g.sample(p);
     ASSERT_TRUE(s.has_value());
     EXPECT_LE(max_diff(*s, affine(p)), 1e-12) << p.transpose();
@@ -86,10 +90,9 @@ TEST(UniformGrid, FarFacesAreInside) {
   const UniformGridField g = affine_grid(kOrigin, kSpacing, kDims);
   const Box3 b = g.bounds();
   std::mt19937 rng(6);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int a = 0; a < 3; ++a) {
     for (int i = 0; i < 50; ++i) {
-      Vec3 p = b.lo + Vec3(u(rng), u(rng), u(rng)).cwiseProduct(b.size());
+      Vec3 p = random_point_in(b, rng);
       p(a) = b.hi(a);
       const std::optional<Sym3> s = g.sample(p);
       ASSERT_TRUE(s.has_value()) << "axis " << a;
@@ -161,9 +164,8 @@ TEST(UniformGrid, SampledFromAffineIsExact) {
     EXPECT_LE(max_diff(*g.sample(corner), affine(corner)), 1e-12);
   }
   std::mt19937 rng(8);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int i = 0; i < 200; ++i) {
-    const Vec3 p = f.box.lo + Vec3(u(rng), u(rng), u(rng)).cwiseProduct(f.box.size());
+    const Vec3 p = random_point_in(f.box, rng);
     ASSERT_TRUE(g.sample(p).has_value());
     EXPECT_LE(max_diff(*g.sample(p), affine(p)), 1e-12);
   }
