@@ -5,6 +5,7 @@
 // anisotropic distance of eq. 11, because g is what a ray gives cheaply
 // (a quadratic in t) and the polynomial kernels are polynomials in g.
 
+#include <array>
 #include <cmath>
 
 namespace hsb {
@@ -58,26 +59,35 @@ inline double kernel_slope(KernelKind kind, double g) {
   return 0.0;
 }
 
-// max over u ∈ [0, 1] of |dK/du|. Along a ray u(t) = |M^½(p + t d)| changes
-// at most at rate √(dᵀMd), so this times √(dᵀMd) bounds the slope of one
-// source's contribution (the directional step bound of design §5).
-// tests/renderer/kernel_test.cpp checks these against dense sampling.
-inline double kernel_max_du_slope(KernelKind kind) {
-  switch (kind) {
-    case KernelKind::wyvill:
-      return 1.5834297477401706;  // at u ≈ 0.50347, where d²K/du² = 0
-    case KernelKind::quartic:
-      return 1.5396007178390020;  // 8 / (3√3), at u = 1/√3
-    case KernelKind::blinn:
-      return 1.4674055850147556;  // √(2s)·e^(−½)/(1 − e^(−s)), at u = 1/√(2s)
-  }
-  return 0.0;
-}
+// What the scene reader, the intersectors and the exporters know about a
+// kernel, in one table (kernel.cpp).
+struct KernelTraits {
+  KernelKind kind;
+  const char* name;
+  // max over u ∈ [0, 1] of |dK/du|. Along a ray u(t) = |M^½(p + t d)|
+  // changes at most at rate √(dᵀMd), so this times √(dᵀMd) bounds the slope
+  // of one source's contribution (the directional step bound of design §5).
+  // tests/renderer/kernel_test.cpp checks it against dense sampling.
+  double max_du_slope;
+  // Power coefficients in g of a polynomial P(g) of degree `degree_in_g`
+  // with P ≥ K on g ∈ [0, 1]. Where `exact` P is K itself (wyvill, quartic),
+  // so the field along a ray is a polynomial between support endpoints;
+  // otherwise (blinn) P is a close upper bound, still good for proving
+  // that F stays below C.
+  int degree_in_g;
+  std::array<double, 4> polynomial;
+  bool exact;
+};
+
+const KernelTraits& kernel_traits(KernelKind kind);
+// Every kernel, in the order the scene reference lists them.
+const std::array<KernelTraits, 3>& all_kernel_traits();
+
+inline const char* kernel_name(KernelKind kind) { return kernel_traits(kind).name; }
+inline double kernel_max_du_slope(KernelKind kind) { return kernel_traits(kind).max_du_slope; }
 
 // The u at which an isolated source's kernel equals the isovalue C, i.e. the
 // fraction of R·r_k that an isolated glyph's semi-axes measure.
 double kernel_level_radius(KernelKind kind, double isovalue);
-
-const char* kernel_name(KernelKind kind);
 
 }  // namespace hsb
