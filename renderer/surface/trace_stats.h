@@ -10,6 +10,8 @@ struct TraceStats {
   std::uint64_t span_queries = 0;     // span BVH traversals (one per window along a ray)
   std::uint64_t span_candidates = 0;  // influence boxes the traversals reached
   std::uint64_t spans = 0;            // source supports collected (per query window)
+  std::uint64_t segments = 0;         // stretches between support endpoints walked
+  std::uint64_t segments_skipped = 0; // of those, proven F < C by the running bound
   std::uint64_t field_evaluations = 0;  // F(t) evaluations (steps + refinement)
   std::uint64_t kernel_evaluations = 0; // single-source K evaluations inside them
   std::uint64_t step_limit_hits = 0;    // rays that gave up (counted as misses)
@@ -19,6 +21,8 @@ struct TraceStats {
     span_queries += o.span_queries;
     span_candidates += o.span_candidates;
     spans += o.spans;
+    segments += o.segments;
+    segments_skipped += o.segments_skipped;
     field_evaluations += o.field_evaluations;
     kernel_evaluations += o.kernel_evaluations;
     step_limit_hits += o.step_limit_hits;

@@ -1,0 +1,141 @@
+// The renderer on the scenes that hurt: rays that cross many supports.
+//
+//   pathological_bench [SOURCE_DIR]      (default: the source tree it was built from)
+//
+// Rows:
+//  - pile N, N = 10, 100, 1000: N glyphs far too large for their spacing,
+//    all overlapping (every ray through the pile crosses all N supports);
+//  - pile 100, camera inside: the same pile seen from its centre, where
+//    every camera ray starts inside the surface;
+//  - fig06: the paper's square-root point-load figure, whose dense cap at
+//    the load has hundreds of overlapping sources;
+//  - fig09: the reference, an ordinary dense figure.
+// Each at 320×320, one sample per pixel, one light with shadows. Prints
+// primary and shadow Mrays/s, supports crossed, segments walked and kernel
+// evaluations per field ray, and each ray kind's rate as a fraction of
+// fig09's primary rate. Measures; never fails on a number.
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+
+#include "renderer/app/prepared_scene.h"
+#include "renderer/render/ray_scene.h"
+#include "renderer/render/render_image.h"
+
+namespace {
+
+using namespace hsb;
+
+#ifndef HSB_SOURCE_DIR
+#define HSB_SOURCE_DIR "."
+#endif
+
+constexpr int kSize = 320;
+
+struct Row {
+  std::string name;
+  std::size_t sources = 0;
+  RenderOutput out;
+};
+
+BlobField pile(int n) {
+  std::mt19937 rng(7);
+  std::normal_distribution<double> normal;
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  BlobField field;
+  for (int i = 0; i < n; ++i) {
+    Vec3 centre(normal(rng), normal(rng), normal(rng));
+    centre *= 0.25 * std::cbrt(unit(rng)) / centre.norm();
+    const Mat3 axes = Eigen::Quaterniond(normal(rng), normal(rng), normal(rng), normal(rng)).normalized().toRotationMatrix();
+    // Influence semi-axes 1.2 to 2: every support holds the pile's centre.
+    const Vec3 radii(2.0, 1.2 + 0.8 * unit(rng), 1.2 + 0.8 * unit(rng));
+    field.sources.push_back(make_blob_source(centre, axes, radii, 1.0, {0.6f, 0.5f, 0.3f}));
+  }
+  // So many overlapping sources sum far above any isovalue; a high C keeps
+  // the surface inside the supports, where the work is.
+  field.isovalue = 0.9 * double(n) * kernel_value(field.kernel, 0.15);
+  field.isovalue = std::min(field.isovalue, 0.5 * double(n));
+  return field;
+}
+
+RenderOutput render_field(const EmbreeDevice& device, const BlobField& field, const CameraSpec& camera,
+                          Intersector intersector) {
+  const Box3 domain{Vec3(-2, -2, -2), Vec3(2, 2, 2)};
+  ShadingSpec shading;
+  shading.box = false;
+  TraceSettings trace;
+  trace.intersector = intersector;
+  trace.min_step = 1e-6 * domain.diagonal();
+  RenderSettings render;
+  render.width = render.height = kSize;
+  render.samples = 1;
+  const RayScene scene(device, field, domain, shading, trace);
+  return render_image(scene, domain, camera, shading, render);
+}
+
+RenderOutput render_scene_file(const EmbreeDevice& device, const std::string& path, Intersector intersector) {
+  SceneSpec spec = load_scene(path, {"render.width=" + std::to_string(kSize), "render.height=" + std::to_string(kSize),
+                                     "render.samples=1"});
+  const ColorManagement color(spec.output.display, spec.output.view);
+  PreparedScene p = prepare_scene(std::move(spec), color);
+  p.trace.intersector = intersector;
+  const RayScene scene(device, p.field, p.glyphs.domain, p.shading, p.trace,
+                       p.glyphs.boundary ? &*p.glyphs.boundary : nullptr);
+  return render_image(scene, p.glyphs.domain, p.camera, p.shading, p.spec.render);
+}
+
+void print(const Row& row, double reference) {
+  const RenderOutput& o = row.out;
+  const double rays = double(std::max<std::uint64_t>(1, o.stats.field_rays));
+  const double primary = o.primary_mrays_per_second(), shadow = o.shadow_mrays_per_second();
+  std::printf("%-22s %7zu %9.2f %9.2f %8.1f %9.1f %10.1f %7.2f %7.2f\n", row.name.c_str(), row.sources, primary,
+              shadow, double(o.stats.spans) / rays, double(o.stats.segments) / rays,
+              double(o.stats.kernel_evaluations) / rays, primary / reference,
+              o.shadow_rays ? shadow / reference : 0.0);
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string source_dir = argc > 1 ? argv[1] : HSB_SOURCE_DIR;
+  const EmbreeDevice device;
+  CameraSpec outside;
+  outside.position = Vec3(4.0, -6.0, 3.0);
+  outside.look_at = Vec3::Zero();
+  outside.fov_degrees = 40;
+  CameraSpec inside = outside;
+  inside.position = Vec3(0.01, -0.02, 0.015);
+  inside.look_at = Vec3(1, -1, 0.5);
+  inside.fov_degrees = 90;
+
+  for (const Intersector intersector : {Intersector::exact, Intersector::sphere}) {
+    std::printf("\nintersector: %s  (%dx%d, 1 sample per pixel, shadows)\n",
+                intersector == Intersector::exact ? "exact" : "sphere", kSize, kSize);
+    std::printf("%-22s %7s %9s %9s %8s %9s %10s %7s %7s\n", "scene", "sources", "primary", "shadow", "supports",
+                "segments", "kernel", "primary", "shadow");
+    std::printf("%-22s %7s %9s %9s %8s %9s %10s %7s %7s\n", "", "", "Mrays/s", "Mrays/s", "/ray", "/ray",
+                "evals/ray", "/fig09", "/fig09");
+    const Row reference{"fig09", 0,
+                        render_scene_file(device, source_dir + "/scenes/fig09_point_load_hyperstreamsurface.toml",
+                                          intersector)};
+    const double base = reference.out.primary_mrays_per_second();
+    for (const int n : {10, 100, 1000}) {
+      const BlobField field = pile(n);
+      print({"pile " + std::to_string(n), field.sources.size(), render_field(device, field, outside, intersector)},
+            base);
+    }
+    const BlobField field = pile(100);
+    print({"pile 100, camera inside", field.sources.size(), render_field(device, field, inside, intersector)}, base);
+    print({"fig06 (dense cap)", 816,
+           render_scene_file(device, source_dir + "/scenes/fig06_point_load_sqrt.toml", intersector)},
+          base);
+    print(reference, base);
+  }
+  std::printf("\n(supports: source supports a field ray crosses; segments: stretches between support\n"
+              " endpoints it walks; kernel evals: single-source kernel evaluations; /fig09: the rate as a\n"
+              " fraction of fig09's primary rate)\n");
+  return 0;
+}
