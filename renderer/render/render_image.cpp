@@ -86,10 +86,12 @@ void trace_packet(const RayScene& scene, const ShadingSpec& shading, const Vec3&
       continue;
     }
     on_field[i] = true;
-    if (shading.shadows) {
+    const Vec3& n = context.surface[std::size_t(i)].normal;
+    const Vec3 facing = n.dot(directions[i]) < 0.0 ? n : Vec3(-n);  // the side the camera sees
+    // A side facing away from the light is unlit whatever lies between.
+    if (shading.shadows && facing.dot(to_light) > 0.0) {
       const Vec3 x = origin + context.t[std::size_t(i)] * directions[i];
-      const Vec3& n = context.surface[std::size_t(i)].normal;
-      const Vec3 start = x + shadow_offset * (n.dot(directions[i]) < 0.0 ? n : Vec3(-n));
+      const Vec3 start = x + shadow_offset * facing;
       set_embree_ray(shadow_n, kMaxPacket, unsigned(i), start, to_light, 0.0f, INFINITY,
                      RayScene::kShadowRayMask);
       shadow_valid[i] = -1;
