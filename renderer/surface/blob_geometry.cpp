@@ -213,7 +213,7 @@ std::size_t BlobGeometry::query_spans(const RayInterval* rays, FieldRay* tracers
 }
 
 void BlobGeometry::first_crossings(const RayInterval* rays, int count, FieldRay* tracers,
-                                   TraceStats& stats, double* hits) const {
+                                   TraceStats& stats, double* hits, CrossingQuery query) const {
   // Each window's spans are clipped to it, and they are all the sources
   // that are non-zero in it, so F there is exact. A crossing at a window's
   // end is found by that window (segment ends are evaluated). All rays of a
@@ -242,7 +242,7 @@ void BlobGeometry::first_crossings(const RayInterval* rays, int count, FieldRay*
       const unsigned bit = 1u << i;
       if (!(looking & bit)) continue;
       if (!tracers[i].spans.empty()) {
-        const double hit = tracers[i].first_crossing(field_, window[i].tmin, window[i].tmax, settings_, stats);
+        const double hit = tracers[i].first_crossing(field_, window[i].tmin, window[i].tmax, settings_, stats, query);
         if (hit >= 0.0) {
           hits[i] = hit;
           looking &= ~bit;
@@ -292,7 +292,8 @@ void BlobGeometry::field_occluded(const RTCOccludedFunctionNArguments* args) {
   auto* context = reinterpret_cast<FieldRayContext*>(args->context);
   const ValidLanes lanes = gather_lanes(args->valid, args->ray, args->N);
   double t[kMaxPacket];
-  self->first_crossings(lanes.rays.data(), lanes.count, context->tracers->data(), *context->stats, t);
+  self->first_crossings(lanes.rays.data(), lanes.count, context->tracers->data(), *context->stats, t,
+                        CrossingQuery::any);
   for (int j = 0; j < lanes.count; ++j)
     if (t[j] >= 0.0) RTCRayN_tfar(args->ray, args->N, lanes.lane[j]) = -std::numeric_limits<float>::infinity();
 }

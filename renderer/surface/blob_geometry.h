@@ -71,8 +71,9 @@ class BlobGeometry {
   // a window at a time in ray order, so a ray that meets the surface early
   // never collects the sources behind it: the work per ray follows what is
   // in front of the first hit, not the depth of the scene.
+  // With CrossingQuery::any (shadow rays) a ray stops at any crossing.
   void first_crossings(const RayInterval* rays, int count, FieldRay* tracers, TraceStats& stats,
-                       double* hits) const;
+                       double* hits, CrossingQuery query = CrossingQuery::first) const;
 
  private:
   static void span_bounds(const RTCBoundsFunctionArguments* args);

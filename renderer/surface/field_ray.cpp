@@ -1,6 +1,7 @@
 #include "renderer/surface/field_ray.h"
 
 #include "renderer/surface/illinois.h"
+#include "renderer/surface/single_source.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,13 +10,14 @@
 namespace hsb {
 
 double FieldRay::value_at(const BlobField& field, double t, TraceStats& stats) const {
+  const std::vector<std::uint32_t>& active = sweep_.active();
   ++stats.field_evaluations;
-  stats.kernel_evaluations += active_.size();
+  stats.kernel_evaluations += active.size();
   double f = 0.0;
   if (field.blend == Blend::sum) {
-    for (std::uint32_t i : active_) f += kernel_value(field.kernel, spans[i].g(t));
+    for (std::uint32_t i : active) f += kernel_value(field.kernel, spans[i].g(t));
   } else {
-    for (std::uint32_t i : active_) f = std::max(f, kernel_value(field.kernel, spans[i].g(t)));
+    for (std::uint32_t i : active) f = std::max(f, kernel_value(field.kernel, spans[i].g(t)));
   }
   return f;
 }
@@ -28,7 +30,7 @@ double FieldRay::value_at(const BlobField& field, double t, TraceStats& stats) c
 // which is all that stepping towards F = C from below needs.
 double FieldRay::slope_bound_at(const BlobField& field, double t) const {
   double rate = 0.0;
-  for (std::uint32_t i : active_) {
+  for (std::uint32_t i : sweep_.active()) {
     const RaySpan& s = spans[i];
     if (t >= s.t_c) continue;
     rate = field.blend == Blend::sum ? rate + std::sqrt(s.a) : std::max(rate, std::sqrt(s.a));
@@ -46,58 +48,89 @@ double FieldRay::refine(const BlobField& field, double lo, double hi, double f_l
 }
 
 double FieldRay::first_crossing(const BlobField& field, double tmin, double tmax,
-                                const TraceSettings& settings, TraceStats& stats) {
-  return settings.intersector == Intersector::exact ? exact_crossing(field, tmin, tmax, stats)
-                                                    : sphere_trace(field, tmin, tmax, settings, stats);
-}
-
-void FieldRay::begin_segments(double tmin, TraceStats& stats) {
-  stats.spans += spans.size();
-  std::sort(spans.begin(), spans.end(), [](const RaySpan& x, const RaySpan& y) { return x.t0 < y.t0; });
-  active_.clear();
-  next_ = 0;
-  cursor_ = tmin;
-}
-
-bool FieldRay::next_segment(double tmax, double& start, double& end) {
-  const std::size_t n = spans.size();
-  double t = cursor_;
-  for (;;) {
-    // Sources whose support has ended contribute K(1) = 0 from here on.
-    active_.erase(std::remove_if(active_.begin(), active_.end(),
-                                 [&](std::uint32_t i) { return spans[i].t1 <= t; }),
-                  active_.end());
-    if (active_.empty()) {
-      if (next_ == n) return false;
-      t = std::max(t, spans[next_].t0);  // F is zero in the gap: skip it
-    }
-    while (next_ < n && spans[next_].t0 <= t) {
-      if (spans[next_].t1 > t) active_.push_back(static_cast<std::uint32_t>(next_));
-      ++next_;
-    }
-    if (t >= tmax) return false;
-    if (!active_.empty()) break;
+                                const TraceSettings& settings, TraceStats& stats, CrossingQuery query) {
+  // Bounds from the sources one at a time, before anything is ordered, in
+  // one pass. The earliest entry into a single source's own level surface:
+  // F ≥ C there whatever the others add. F at tmin: a ray that starts
+  // inside the surface crosses at once. The sum of each source's largest
+  // value on the ray: when even that is below C, so is F.
+  const double c = field.isovalue;
+  const double g_level = level_g(field.kernel, c);
+  double upper = -1.0, at_start = 0.0, peaks = 0.0, weighted = 0.0;
+  peaks_.resize(spans.size());
+  for (std::size_t i = 0; i < spans.size(); ++i) {
+    const RaySpan& s = spans[i];
+    const double t = single_source_entry(s, g_level, tmin, tmax);
+    if (t >= 0.0 && (upper < 0.0 || t < upper)) upper = t;
+    if (s.t0 <= tmin) at_start += kernel_value(field.kernel, s.g(tmin));
+    const double t_peak = std::clamp(s.t_c, s.t0, s.t1);  // g is smallest there
+    peaks_[i] = kernel_value(field.kernel, s.g(t_peak));
+    peaks += peaks_[i];
+    weighted += peaks_[i] * t_peak;
   }
-  end = tmax;
-  if (next_ < n) end = std::min(end, spans[next_].t0);
-  for (std::uint32_t i : active_) end = std::min(end, spans[i].t1);
-  start = t;
-  cursor_ = end;
-  return true;
+  stats.kernel_evaluations += 2 * spans.size();
+  stats.spans += spans.size();
+  // For a union of glyphs the single sources are the whole answer.
+  if (field.blend == Blend::max || (upper >= 0.0 && query == CrossingQuery::any)) return upper;
+  if (at_start >= c) return tmin;
+  if (peaks < c) return -1.0;
+  // A crowd of sources that no single one reaches C in (a blended cap)
+  // is most likely to lift F over C where they peak together: F there,
+  // if it is C or more, bounds the first crossing too.
+  const double t_crowd = weighted / peaks;
+  if (upper < 0.0 || t_crowd < upper) {
+    double f = 0.0;
+    for (const RaySpan& s : spans)
+      if (s.t0 <= t_crowd && t_crowd <= s.t1) f += kernel_value(field.kernel, s.g(t_crowd));
+    stats.kernel_evaluations += spans.size();
+    if (f >= c) {
+      if (query == CrossingQuery::any) return t_crowd;
+      upper = t_crowd;
+    }
+  }
+
+  const double end = upper >= 0.0 ? upper : tmax;
+  const double t = settings.intersector == Intersector::exact ? exact_crossing(field, tmin, end, stats)
+                                                              : sphere_trace(field, tmin, end, settings, stats);
+  // Short of the bound only by round-off: the bound itself is on the surface.
+  return t >= 0.0 ? t : upper;
+}
+
+void FieldRay::begin_segments(const BlobField& field, double tmin, double tmax) {
+  sweep_.begin(spans, tmin, tmax);
+  bound_.reset(kernel_traits(field.kernel), spans, peaks_, tmin);
+}
+
+bool FieldRay::next_segment(const BlobField& field, double tmax, double& start, double& end, TraceStats& stats) {
+  const auto entered = [&](std::uint32_t i) { bound_.add(spans[i]); };
+  const auto left = [&](std::uint32_t i) { bound_.remove(spans[i]); };
+  while (sweep_.next(tmax, start, end, entered, left)) {
+    ++stats.segments;
+    if (bound_.proves_rest_below(field.isovalue, start, spans, sweep_.active())) return false;
+    if (bound_.proves_below(field.isovalue, start, end, spans, sweep_.active())) {
+      ++stats.segments_skipped;
+      continue;
+    }
+    // Sums over the active set in entry order: the answer must not depend
+    // on the order of the walk's updates.
+    sweep_.sort_active();
+    return true;
+  }
+  return false;
 }
 
 double FieldRay::sphere_trace(const BlobField& field, double tmin, double tmax,
                               const TraceSettings& settings, TraceStats& stats) {
-  begin_segments(tmin, stats);
+  begin_segments(field, tmin, tmax);
   const double c = field.isovalue;
   int steps = 0;
   double start, end;
-  while (next_segment(tmax, start, end)) {
+  while (next_segment(field, tmax, start, end, stats)) {
     double t = start;
     double f = value_at(field, t, stats);
-    // Each segment begins where the previous one was found outside (or F is
-    // zero before it), so this is the ray starting inside the surface, or a
-    // crossing exactly on a segment boundary.
+    // F < C just before every segment (below it, F was either proven under
+    // C or traced under it, or is zero), so this is the ray starting inside
+    // the surface, or a crossing exactly on a segment boundary.
     if (f >= c) return t;
     // Within a segment the active set, and so the slope bound, is fixed.
     while (t < end) {

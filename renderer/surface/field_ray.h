@@ -12,7 +12,9 @@
 #include <vector>
 
 #include "renderer/surface/blob_field.h"
+#include "renderer/surface/field_bound.h"
 #include "renderer/surface/ray_span.h"
+#include "renderer/surface/support_sweep.h"
 #include "renderer/surface/trace_stats.h"
 
 namespace hsb {
@@ -30,6 +32,10 @@ struct TraceSettings {
   int max_steps = 200000;
 };
 
+// What a ray asks of the field: its first crossing (camera rays), or
+// whether it crosses at all (shadow rays, which need no particular one).
+enum class CrossingQuery { first, any };
+
 struct SurfaceSample {
   Vec3 normal = Vec3::UnitZ();           // unit, pointing out of the surface
   std::array<float, 3> color{0, 0, 0};   // influence-weighted, scene-linear
@@ -45,15 +51,16 @@ class FieldRay {
 
   // Returns the smallest t in [tmin, tmax] with F(t) ≥ C (the ray's first
   // entry into the surface), or a negative value when there is none, by the
-  // method settings.intersector names.
-  double first_crossing(const BlobField& field, double tmin, double tmax,
-                        const TraceSettings& settings, TraceStats& stats);
-  double sphere_trace(const BlobField& field, double tmin, double tmax,
-                      const TraceSettings& settings, TraceStats& stats);
-  // Exact for `wyvill` and `quartic` under blend = "sum", and for every
-  // kernel under blend = "max" (a union of ellipsoids). Only crossings where
-  // F − C changes sign count: a surface the ray merely touches is no hit.
-  double exact_crossing(const BlobField& field, double tmin, double tmax, TraceStats& stats);
+  // method settings.intersector names. With CrossingQuery::any it returns
+  // some t where F ≥ C, not necessarily the first, as soon as one is known.
+  //
+  // Every kernel is non-negative, so a single source whose own value
+  // reaches C bounds the first crossing from above (and for `any` settles
+  // the question); the walk stops there. Segments where the running bound
+  // (field_bound.h) proves F < C are skipped without summing their sources,
+  // so a ray through k supports costs about k log k, not k².
+  double first_crossing(const BlobField& field, double tmin, double tmax, const TraceSettings& settings,
+                        TraceStats& stats, CrossingQuery query = CrossingQuery::first);
 
   // Normal and colour at ray parameter t; uses the spans of the last
   // first_crossing() call, which cover every source that is non-zero there.
@@ -61,21 +68,28 @@ class FieldRay {
                            double t) const;
 
  private:
-  // The walk over segments shared by both methods: between consecutive
-  // support endpoints the set of active sources (active_) is fixed.
-  void begin_segments(double tmin, TraceStats& stats);
-  // The next segment [start, end] with at least one active source, ending
-  // at the next span entry or exit or at tmax; false when none is left.
-  bool next_segment(double tmax, double& start, double& end);
+  double sphere_trace(const BlobField& field, double tmin, double tmax, const TraceSettings& settings,
+                      TraceStats& stats);
+  // Exact for `wyvill` and `quartic` under blend = "sum", and for every
+  // kernel under blend = "max" (a union of ellipsoids). Only crossings where
+  // F − C changes sign count: a surface the ray merely touches is no hit.
+  double exact_crossing(const BlobField& field, double tmin, double tmax, TraceStats& stats);
+
+  // The walk over segments shared by both methods (support_sweep.h), with
+  // the running bound kept up to date.
+  void begin_segments(const BlobField& field, double tmin, double tmax);
+  // The next segment [start, end] that may hold a crossing: at least one
+  // active source, and F < C not proven. False when none is left.
+  bool next_segment(const BlobField& field, double tmax, double& start, double& end, TraceStats& stats);
 
   double value_at(const BlobField& field, double t, TraceStats& stats) const;
   double slope_bound_at(const BlobField& field, double t) const;
   double refine(const BlobField& field, double lo, double hi, double f_lo, double f_hi,
                 TraceStats& stats) const;
 
-  std::vector<std::uint32_t> active_;  // indices into spans
-  std::size_t next_ = 0;                 // first span not yet activated
-  double cursor_ = 0.0;                  // where the walk stands
+  SupportSweep sweep_;
+  FieldUpperBound bound_;
+  std::vector<double> peaks_;  // each span's largest value on its interval
 };
 
 // Whether exact_crossing() handles this field.

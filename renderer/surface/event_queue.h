@@ -1,0 +1,47 @@
+#pragma once
+// Events along a ray (a support's entry, a source's closest approach),
+// taken in order of t. They are binned by t into as many equal stretches as
+// there are events, and each bin is sorted only when it is reached: about
+// O(k) for k events spread along the ray, O(k log k) at worst, and a walk
+// that stops early pays only for the bins it reached.
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+namespace hsb {
+
+struct RayEvent {
+  double t;
+  std::uint32_t index;
+  // Ties go by index, so the order never depends on how events arrived.
+  bool operator<(const RayEvent& o) const { return t < o.t || (t == o.t && index < o.index); }
+};
+
+class RayEventQueue {
+ public:
+  // Takes the events (any order); all must lie at or after `lo`.
+  void assign(std::vector<RayEvent>& events, double lo);
+
+  // The next event, false when none is left.
+  bool peek(RayEvent& next) {
+    while (next_ == sorted_until_) {
+      if (next_bin_ + 1 >= bin_start_.size()) return false;
+      const std::size_t from = bin_start_[next_bin_], to = bin_start_[next_bin_ + 1];
+      ++next_bin_;
+      std::sort(events_.begin() + std::ptrdiff_t(from), events_.begin() + std::ptrdiff_t(to));
+      sorted_until_ = to;
+    }
+    next = events_[next_];
+    return true;
+  }
+  void pop() { ++next_; }
+
+ private:
+  std::vector<RayEvent> events_;          // grouped by bin, each bin sorted once reached
+  std::vector<std::uint32_t> bin_start_;  // bin b holds events_[bin_start_[b], bin_start_[b + 1])
+  std::vector<std::uint32_t> bin_fill_;   // where each bin is being filled (assign() only)
+  std::size_t next_ = 0, sorted_until_ = 0, next_bin_ = 0;
+};
+
+}  // namespace hsb
