@@ -9,7 +9,6 @@
 #include <vtkDataSetSurfaceFilter.h>
 #include <vtkImageData.h>
 #include <vtkMatrix3x3.h>
-#include <vtkOutputWindow.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
@@ -20,39 +19,16 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
-#include <mutex>
 #include <sstream>
 
 #include "field/data_error.h"
 #include "field/eigenvalue_range.h"
 #include "field/mesh_field.h"
 #include "field/uniform_grid.h"
+#include "field/vtk_messages.h"
 
 namespace hsb {
 namespace {
-
-// VTK reports problems as text to its output window. This one keeps the last
-// error instead of printing it, so a bad file becomes one DataError.
-class CapturingOutputWindow : public vtkOutputWindow {
- public:
-  static CapturingOutputWindow* New() { return new CapturingOutputWindow; }
-  void DisplayErrorText(const char* text) override { last_error = text ? text : ""; }
-  void DisplayWarningText(const char*) override {}
-  void DisplayGenericWarningText(const char*) override {}
-  void DisplayDebugText(const char*) override {}
-  std::string last_error;
-};
-
-// VTK's messages start with the source file and object address; the last
-// line is the part a user can act on.
-std::string last_line(const std::string& text) {
-  std::string s = text;
-  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
-  const std::size_t nl = s.rfind('\n');
-  s = nl == std::string::npos ? s : s.substr(nl + 1);
-  const std::size_t colon = s.find("): ");
-  return colon == std::string::npos ? s : s.substr(colon + 3);
-}
 
 std::string lower_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -60,16 +36,9 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
-vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path) {
+// The data set in `path`; VTK's complaints end up in `capture`.
+vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkErrorCapture& capture) {
   if (!std::filesystem::is_regular_file(path)) throw DataError(path + ": no such data file");
-  static std::mutex mutex;  // the output window is global
-  std::lock_guard<std::mutex> lock(mutex);
-  static vtkSmartPointer<CapturingOutputWindow> window = [] {
-    auto w = vtkSmartPointer<CapturingOutputWindow>::New();
-    vtkOutputWindow::SetInstance(w);
-    return w;
-  }();
-  window->last_error.clear();
 
   const std::string ext = lower_extension(path);
   vtkSmartPointer<vtkAlgorithm> reader;
@@ -91,10 +60,9 @@ vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path) {
   }
   reader->Update();
   vtkSmartPointer<vtkDataSet> data = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
-  if (!window->last_error.empty() || !data || data->GetNumberOfPoints() == 0) {
-    const std::string why = window->last_error.empty() ? "no points in it" : last_line(window->last_error);
-    throw DataError(path + ": cannot read it as a VTK data set: " + why);
-  }
+  const std::string error = capture.last_error();
+  if (!error.empty() || !data || data->GetNumberOfPoints() == 0)
+    throw DataError(path + ": cannot read it as a VTK data set: " + (error.empty() ? "no points in it" : error));
   return data;
 }
 
@@ -247,7 +215,8 @@ TriangleMesh boundary_surface(vtkDataSet* data) {
 }  // namespace
 
 VtkData load_vtk_data(const VtkFileSpec& spec) {
-  const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path);
+  const VtkErrorCapture capture;
+  const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path, capture);
   VtkData out;
   ChosenArray chosen = choose_tensor_array(data, spec);
   vtkSmartPointer<vtkDataSet> averaged;
@@ -281,7 +250,8 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
 }
 
 std::string describe_vtk_file(const VtkFileSpec& spec) {
-  const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path);
+  const VtkErrorCapture capture;
+  const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path, capture);
   std::ostringstream out;
   double b[6];
   data->GetBounds(b);

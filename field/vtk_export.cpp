@@ -13,6 +13,7 @@
 #include <filesystem>
 
 #include "field/data_error.h"
+#include "field/vtk_messages.h"
 
 namespace hsb {
 namespace {
@@ -35,6 +36,7 @@ void set_matrix(vtkDoubleArray* a, vtkIdType i, const Mat3& m) {
 void write_polydata(vtkPolyData* poly, const std::string& path) {
   const std::filesystem::path final_path(path);
   const std::filesystem::path temp = final_path.parent_path() / ("." + final_path.filename().string() + ".partial");
+  const VtkErrorCapture capture;
   auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
   writer->SetFileName(temp.string().c_str());
   writer->SetInputData(poly);
@@ -43,7 +45,8 @@ void write_polydata(vtkPolyData* poly, const std::string& path) {
   std::error_code error;
   if (writer->Write() != 1) {
     std::filesystem::remove(temp, error);
-    throw DataError(path + ": cannot write the file");
+    const std::string why = capture.last_error();
+    throw DataError(path + ": cannot write the file" + (why.empty() ? "" : ": " + why));
   }
   std::filesystem::rename(temp, final_path, error);
   if (error) {
@@ -61,6 +64,7 @@ vtkSmartPointer<vtkPolyData> trajectories_polydata(const GlyphScene& scene) {
   id->SetName("trajectory");
   for (std::size_t t = 0; t < scene.trajectories.size(); ++t) {
     const std::vector<Vec3>& p = scene.trajectories[t].points;
+    if (p.size() < 2) continue;  // a seed where no curve starts: nothing to draw
     lines->InsertNextCell(int(p.size()));
     double s = 0.0;
     for (std::size_t i = 0; i < p.size(); ++i) {

@@ -9,8 +9,9 @@
 namespace hsb {
 
 // Writes two XML PolyData files (each complete or not at all):
-//  - `trajectories_path`: one polyline per trajectory, with point data
-//    "arc_length" and cell data "trajectory";
+//  - `trajectories_path`: one polyline per trajectory of two points or
+//    more, with point data "arc_length" and cell data "trajectory" (its
+//    index among all trajectories, single-point ones included);
 //  - `sources_path`: one vertex per source with point data "tensor" (the
 //    tensor, V diag(λ) Vᵀ, 9 components), "eigenvalues", "radii" (r_k of the
 //    mapping), "scalar" (the colour scalar) and the active tensors "glyph" =
