@@ -25,7 +25,7 @@
 #include "field/eigenvalue_range.h"
 #include "field/mesh_field.h"
 #include "field/uniform_grid.h"
-#include "field/vtk_messages.h"
+#include "field/vtk_session.h"
 
 namespace hsb {
 namespace {
@@ -36,8 +36,8 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
-// The data set in `path`; VTK's complaints end up in `capture`.
-vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkErrorCapture& capture) {
+// The data set in `path`; VTK's complaints end up in `vtk`.
+vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSession& vtk) {
   if (!std::filesystem::is_regular_file(path)) throw DataError(path + ": no such data file");
 
   const std::string ext = lower_extension(path);
@@ -60,7 +60,7 @@ vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkError
   }
   reader->Update();
   vtkSmartPointer<vtkDataSet> data = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
-  const std::string error = capture.last_error();
+  const std::string error = vtk.last_error();
   if (!error.empty() || !data || data->GetNumberOfPoints() == 0)
     throw DataError(path + ": cannot read it as a VTK data set: " + (error.empty() ? "no points in it" : error));
   return data;
@@ -215,8 +215,8 @@ TriangleMesh boundary_surface(vtkDataSet* data) {
 }  // namespace
 
 VtkData load_vtk_data(const VtkFileSpec& spec) {
-  const VtkErrorCapture capture;
-  const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path, capture);
+  const VtkSession vtk;
+  const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path, vtk);
   VtkData out;
   ChosenArray chosen = choose_tensor_array(data, spec);
   vtkSmartPointer<vtkDataSet> averaged;
@@ -250,8 +250,8 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
 }
 
 std::string describe_vtk_file(const VtkFileSpec& spec) {
-  const VtkErrorCapture capture;
-  const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path, capture);
+  const VtkSession vtk;
+  const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path, vtk);
   std::ostringstream out;
   double b[6];
   data->GetBounds(b);

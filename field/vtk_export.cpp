@@ -13,7 +13,7 @@
 #include <filesystem>
 
 #include "field/data_error.h"
-#include "field/vtk_messages.h"
+#include "field/vtk_session.h"
 
 namespace hsb {
 namespace {
@@ -36,7 +36,7 @@ void set_matrix(vtkDoubleArray* a, vtkIdType i, const Mat3& m) {
 void write_polydata(vtkPolyData* poly, const std::string& path) {
   const std::filesystem::path final_path(path);
   const std::filesystem::path temp = final_path.parent_path() / ("." + final_path.filename().string() + ".partial");
-  const VtkErrorCapture capture;
+  const VtkSession vtk;
   auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
   writer->SetFileName(temp.string().c_str());
   writer->SetInputData(poly);
@@ -45,7 +45,7 @@ void write_polydata(vtkPolyData* poly, const std::string& path) {
   std::error_code error;
   if (writer->Write() != 1) {
     std::filesystem::remove(temp, error);
-    const std::string why = capture.last_error();
+    const std::string why = vtk.last_error();
     throw DataError(path + ": cannot write the file" + (why.empty() ? "" : ": " + why));
   }
   std::filesystem::rename(temp, final_path, error);

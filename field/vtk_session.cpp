@@ -1,14 +1,15 @@
-#include "field/vtk_messages.h"
+#include "field/vtk_session.h"
 
 #include <vtkLogger.h>
 #include <vtkOutputWindow.h>
+#include <vtkSMPTools.h>
 #include <vtkSmartPointer.h>
 
 namespace hsb {
 namespace {
 
-std::mutex capture_mutex;
-std::string last_message;  // guarded by capture_mutex while a capture lives
+std::mutex session_mutex;
+std::string last_message;  // guarded by session_mutex while a session lives
 
 class CapturingOutputWindow : public vtkOutputWindow {
  public:
@@ -24,9 +25,11 @@ void on_log(void*, const vtkLogger::Message& message) {
   if (message.verbosity <= vtkLogger::VERBOSITY_ERROR) last_message = message.message ? message.message : "";
 }
 
-// Once: every VTK message goes to the capture, none to the terminal.
+// Once: every VTK message goes to the session, none to the terminal, and
+// VTK's own loops run in order.
 void install() {
   static const bool installed = [] {
+    vtkSMPTools::SetBackend("Sequential");
     vtkOutputWindow::SetInstance(vtkSmartPointer<CapturingOutputWindow>::New());
     vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
     vtkLogger::AddCallback("hsb-capture", on_log, nullptr, vtkLogger::VERBOSITY_ERROR);
@@ -37,14 +40,14 @@ void install() {
 
 }  // namespace
 
-VtkErrorCapture::VtkErrorCapture() : lock_(capture_mutex) {
+VtkSession::VtkSession() : lock_(session_mutex) {
   install();
   last_message.clear();
 }
 
-VtkErrorCapture::~VtkErrorCapture() = default;
+VtkSession::~VtkSession() = default;
 
-std::string VtkErrorCapture::last_error() const {
+std::string VtkSession::last_error() const {
   std::string s = last_message;
   while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
   const std::size_t nl = s.rfind('\n');
