@@ -1,9 +1,11 @@
 #include "field/glyph_pipeline.h"
 
 #include <algorithm>
+#include <sstream>
 
 #include <tbb/parallel_for.h>
 
+#include "field/automatic_values.h"
 #include "field/seeding.h"
 #include "field/uniform_grid.h"
 
@@ -27,85 +29,111 @@ LoadedField make_field(const DataSpec& spec) {
 
 namespace {
 
-// The default seeding: 5×5 on the middle cross-section across the longest
-// axis of the bounds, in bounds fractions.
-SeedGridSpec default_seed_grid(const Box3& bounds) {
-  Eigen::Index longest = 0;
-  bounds.size().maxCoeff(&longest);
-  const Eigen::Index u = (longest + 1) % 3, v = (longest + 2) % 3;
-  SeedGridSpec grid;
-  grid.corner = Vec3::Zero();
-  grid.corner[longest] = 0.5;
-  grid.edge_u = Vec3::Unit(u);
-  grid.edge_v = Vec3::Unit(v);
-  grid.n = grid.m = 5;
-  return grid;
-}
-
-std::vector<Vec3> all_seeds(const GlyphPipelineSpec& spec, const Box3& bounds) {
-  std::vector<Vec3> seeds = spec.seed_points;
-  std::vector<SeedGridSpec> grids = spec.seed_grids;
-  SeedFrame frame = spec.seed_frame;
-  if (seeds.empty() && grids.empty()) {
-    grids.push_back(default_seed_grid(bounds));
-    frame = SeedFrame::bounds;
-  }
-  for (const SeedGridSpec& g : grids) {
+std::vector<Vec3> all_seeds(const SeedSpec& spec, const Box3& bounds) {
+  std::vector<Vec3> seeds = spec.points;
+  for (const SeedGridSpec& g : spec.grids) {
     const std::vector<Vec3> grid = grid_seeds(g.corner, g.edge_u, g.edge_v, g.n, g.m);
     seeds.insert(seeds.end(), grid.begin(), grid.end());
   }
-  if (frame == SeedFrame::bounds) {
+  if (spec.frame == SeedFrame::bounds) {
     for (Vec3& s : seeds) s = bounds.lo + bounds.size().cwiseProduct(s);
   }
   return seeds;
 }
 
-// An empty picture deserves a reason.
-void warn_if_empty(GlyphScene& scene, std::size_t seeds) {
-  if (scene.sources.empty())
+// The field-side values that depend on the data set's size only.
+GlyphValues resolve_lengths(const GlyphPipelineSpec& spec, const Box3& domain) {
+  GlyphValues v;
+  v.seeds = spec.seeds.automatic() ? automatic_seeds(domain) : spec.seeds;
+  TrajectoryOptions& t = v.trajectory;
+  t.family = spec.trajectory.family;
+  t.step = spec.trajectory.step.value_or(automatic_step(domain));
+  t.max_length = spec.trajectory.max_length.value_or(automatic_max_length(domain));
+  t.degeneracy_tolerance = spec.trajectory.degeneracy_tolerance;
+  t.min_magnitude = spec.trajectory.min_magnitude;
+  t.max_steps = spec.trajectory.max_steps;
+  v.spacing = spec.spacing.value_or(automatic_spacing(domain, spec.size.mapping));
+  return v;
+}
+
+const char* stop_name(StopReason r) {
+  switch (r) {
+    case StopReason::boundary: return "the boundary";
+    case StopReason::max_length: return "trajectories.max_length";
+    case StopReason::degenerate: return "a degenerate point (repeated eigenvalues)";
+    case StopReason::low_magnitude: return "trajectories.min_magnitude";
+    case StopReason::max_steps: return "trajectories.max_steps";
+  }
+  return "?";
+}
+
+// An empty or nearly empty picture deserves a reason.
+void warn_about_the_result(GlyphScene& scene, std::size_t seeds) {
+  if (scene.sources.empty()) {
     scene.warnings.push_back("no glyph sources: none of the " + std::to_string(seeds) +
                              " seeds lies inside the data set where it can be sampled");
+    return;
+  }
+  if (scene.trajectories.empty()) return;
+  const double step = scene.values.trajectory.step;
+  const bool any_long = std::any_of(scene.trajectories.begin(), scene.trajectories.end(),
+                                    [&](const Trajectory& t) { return t.length() > step; });
+  if (any_long) return;
+  // Say where they stopped: the most common reason is the one to act on.
+  std::array<int, 5> reasons{};
+  for (const Trajectory& t : scene.trajectories) {
+    ++reasons[std::size_t(t.backward_stop)];
+    ++reasons[std::size_t(t.forward_stop)];
+  }
+  const auto most = std::size_t(std::max_element(reasons.begin(), reasons.end()) - reasons.begin());
+  std::ostringstream text;
+  text << "no trajectory is longer than one step (" << step << "); most stop at "
+       << stop_name(StopReason(most)) << ": each glyph stands alone at its seed";
+  scene.warnings.push_back(text.str());
 }
 
 }  // namespace
 
-GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec_in) {
-  LoadedField loaded = make_field(spec_in.data);
+GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent) {
+  DataSpec data = spec.data;
+  if (data.kind == DataKind::point_load && !data.point_load.singular_radius)
+    data.point_load.singular_radius = default_singular_radius(data.point_load.bounds);
+  LoadedField loaded = make_field(data);
   const TensorField* field = loaded.field.get();
   GlyphScene scene;
   scene.domain = field->bounds();
-  const std::vector<Vec3> seeds = all_seeds(spec_in, scene.domain);
   scene.boundary = std::move(loaded.boundary);
   scene.warnings = std::move(loaded.warnings);
-
-  // Resolve the automatic lengths against the data set's size.
-  GlyphPipelineSpec spec = spec_in;
-  const double diagonal = scene.domain.diagonal();
-  if (spec.trajectory.step <= 0.0) spec.trajectory.step = diagonal / 400.0;
-  if (spec.trajectory.max_length <= 0.0) spec.trajectory.max_length = 2.0 * diagonal;
-  if (spec.spacing <= 0.0) spec.spacing = diagonal / 40.0;
+  scene.values = resolve_lengths(spec, scene.domain);
+  if (data.kind == DataKind::point_load) scene.values.singular_radius = data.point_load.singular_radius;
+  const GlyphValues& values = scene.values;
+  const std::vector<Vec3> seeds = all_seeds(values.seeds, scene.domain);
 
   if (spec.placement == SourcePlacement::at_seeds) {
     for (const Vec3& seed : seeds) {
       if (const std::optional<Sym3> s = field->sample(seed))
-        scene.sources.push_back(make_source(seed, *s, spec.mapping, spec.color));
+        scene.sources.push_back(make_source(seed, *s, spec.color));
     }
-    warn_if_empty(scene, seeds.size());
-    return scene;
+  } else {
+    // Each seed writes only its own slots, and the slots are concatenated in
+    // seed order afterwards, so the result is independent of scheduling.
+    scene.trajectories.resize(seeds.size());
+    std::vector<std::vector<GlyphSource>> per_seed(seeds.size());
+    tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t i) {
+      scene.trajectories[i] = trace_trajectory(*field, seeds[i], values.trajectory);
+      per_seed[i] = place_sources(*field, scene.trajectories[i], values.spacing, spec.color);
+    });
+    for (const std::vector<GlyphSource>& sources : per_seed)
+      scene.sources.insert(scene.sources.end(), sources.begin(), sources.end());
   }
 
-  // Each seed writes only its own slots, and the slots are concatenated in
-  // seed order afterwards, so the result is independent of scheduling.
-  scene.trajectories.resize(seeds.size());
-  std::vector<std::vector<GlyphSource>> per_seed(seeds.size());
-  tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t i) {
-    scene.trajectories[i] = trace_trajectory(*field, seeds[i], spec.trajectory);
-    per_seed[i] = place_sources(*field, scene.trajectories[i], spec.spacing, spec.mapping,
-                                spec.color);
-  });
-  for (const std::vector<GlyphSource>& sources : per_seed)
-    scene.sources.insert(scene.sources.end(), sources.begin(), sources.end());
-  warn_if_empty(scene, seeds.size());
+  // The glyph size comes from the tensors the glyphs will show.
+  std::vector<Vec3> eigenvalues;
+  eigenvalues.reserve(scene.sources.size());
+  for (const GlyphSource& s : scene.sources) eigenvalues.push_back(s.eigenvalues);
+  scene.values.mapping = automatic_glyph_mapping(spec.size, eigenvalues, scene.domain, glyph_extent);
+  size_sources(scene.sources, scene.values.mapping);
+  warn_about_the_result(scene, seeds.size());
   return scene;
 }
 

@@ -2,6 +2,12 @@
 // The whole field side of a scene in one call: data set → seeds →
 // trajectories → sources. The renderer fills a GlyphPipelineSpec from a scene
 // file and receives sources; it never touches a data set itself.
+//
+// A spec says what the scene file says: a value it leaves out is
+// std::nullopt, "automatic", never a magic number. build_glyph_scene()
+// resolves every automatic value from the data and the trajectories, by the
+// rules of automatic_values.h, and hands back the values it used
+// (GlyphValues), so they can be shown and pinned.
 
 #include <array>
 #include <memory>
@@ -43,27 +49,55 @@ enum class SeedFrame {
            // (1,1,1) its high corner, so a scene fits any data set
 };
 
+// Neither points nor grids: automatic.
+struct SeedSpec {
+  std::vector<Vec3> points;
+  std::vector<SeedGridSpec> grids;
+  SeedFrame frame = SeedFrame::world;
+
+  bool automatic() const { return points.empty() && grids.empty(); }
+};
+
+// The scene's [trajectories]; what it leaves out is automatic.
+struct TrajectorySpec {
+  EigenFamily family = EigenFamily::major;
+  std::optional<double> step, max_length;
+  double degeneracy_tolerance = 1e-3;
+  double min_magnitude = 0.0;
+  int max_steps = 100000;
+};
+
+// How eigenvalues become radii; scale, floor and ceiling left out are
+// automatic. The square root by default: on data nobody has looked at yet,
+// it shows the small stresses as well as the large (the paper's Figure 6
+// against Figure 5) while large ones still blend and small ones separate.
+struct GlyphSizeSpec {
+  RadiusMapping mapping = RadiusMapping::sqrt;
+  std::optional<double> scale, floor, ceiling;
+};
+
 enum class SourcePlacement {
   along_trajectories,  // hyperstreamballs: sources spaced along tensor lines
   at_seeds,            // one glyph per seed point: classic ellipsoid glyphs
 };
 
-// Lengths given as 0 are "automatic": fractions of the data set's diagonal D,
-// known only once the data set is read (trajectory.step = D/400,
-// trajectory.max_length = 2 D, spacing = D/40).
 struct GlyphPipelineSpec {
   DataSpec data;
-  // With neither points nor grids, a 5×5 grid on the cross-section through
-  // the middle of the bounding box, across its longest axis: trajectories
-  // along the body of a bar, beam or rail.
-  std::vector<Vec3> seed_points;
-  std::vector<SeedGridSpec> seed_grids;
-  SeedFrame seed_frame = SeedFrame::world;
-  TrajectoryOptions trajectory;
+  SeedSpec seeds;
+  TrajectorySpec trajectory;
   SourcePlacement placement = SourcePlacement::along_trajectories;
+  std::optional<double> spacing;  // arc length between sources
+  GlyphSizeSpec size;
+  ColorScalar color = ColorScalar::lambda3;
+};
+
+// Every field-side value the pipeline used, automatic ones resolved.
+struct GlyphValues {
+  std::optional<double> singular_radius;  // the point load's; none for files
+  SeedSpec seeds;
+  TrajectoryOptions trajectory;
   double spacing = 0.0;
   GlyphMapping mapping;
-  ColorScalar color = ColorScalar::lambda3;
 };
 
 struct GlyphScene {
@@ -71,6 +105,7 @@ struct GlyphScene {
   std::vector<Trajectory> trajectories;
   std::vector<GlyphSource> sources;
   std::optional<TriangleMesh> boundary;  // a mesh's outer surface (none for analytic data)
+  GlyphValues values;
   std::vector<std::string> warnings;     // about the data, for the user
 };
 
@@ -84,8 +119,12 @@ struct LoadedField {
 // unusable data files.
 LoadedField make_field(const DataSpec& spec);
 
-// Runs the pipeline. Trajectories are traced in parallel-safe order and the
-// result does not depend on thread count.
-GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec);
+// Runs the pipeline. `glyph_extent` is an isolated glyph's largest
+// semi-axis for a largest radius of 1 (the renderer's influence radius R
+// times its kernel's level radius): the automatic glyph size is a length in
+// the data's units, so it must know how radii turn into lengths.
+// Trajectories are traced in parallel and the result does not depend on the
+// thread count.
+GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent);
 
 }  // namespace hsb

@@ -8,21 +8,29 @@
 
 namespace hsb {
 
-GlyphSource make_source(const Vec3& centre, const Sym3& tensor, const GlyphMapping& mapping,
-                        ColorScalar color) {
+GlyphSource make_source(const Vec3& centre, const Sym3& tensor, ColorScalar color) {
   const Eigensystem es = decompose(tensor);
   GlyphSource source;
   source.centre = centre;
   source.axes = es.vectors;
   source.eigenvalues = es.values;
-  source.radii = map_radii(es.values, mapping);
   source.scalar = color_scalar(es.values, color);
   return source;
 }
 
+GlyphSource make_source(const Vec3& centre, const Sym3& tensor, const GlyphMapping& mapping,
+                        ColorScalar color) {
+  GlyphSource source = make_source(centre, tensor, color);
+  source.radii = map_radii(source.eigenvalues, mapping);
+  return source;
+}
+
+void size_sources(std::vector<GlyphSource>& sources, const GlyphMapping& mapping) {
+  for (GlyphSource& s : sources) s.radii = map_radii(s.eigenvalues, mapping);
+}
+
 std::vector<GlyphSource> place_sources(const TensorField& field, const Trajectory& trajectory,
-                                       double spacing, const GlyphMapping& mapping,
-                                       ColorScalar color) {
+                                       double spacing, ColorScalar color) {
   if (!(spacing > 0.0) || !std::isfinite(spacing))
     throw std::invalid_argument("glyph sources: spacing must be finite and > 0");
   std::vector<GlyphSource> sources;
@@ -54,7 +62,7 @@ std::vector<GlyphSource> place_sources(const TensorField& field, const Trajector
       ++segment;
     }
     const std::optional<Sym3> s = field.sample(p);
-    if (s) sources.push_back(make_source(p, *s, mapping, color));
+    if (s) sources.push_back(make_source(p, *s, color));
   }
   return sources;
 }

@@ -22,14 +22,19 @@ struct GlyphSource {
 
 // Sources at arc-length `spacing` along `trajectory` (the paper's sample
 // ratio), the run of them centred on the curve's length. Each takes the
-// tensor sampled at its centre. Points where the field cannot be sampled are
-// skipped.
+// tensor sampled at its centre; points where the field cannot be sampled
+// are skipped. Radii are left for size_sources(), once the mapping is
+// known: its automatic scale depends on all the sources' eigenvalues.
 std::vector<GlyphSource> place_sources(const TensorField& field, const Trajectory& trajectory,
-                                       double spacing, const GlyphMapping& mapping,
-                                       ColorScalar color);
+                                       double spacing, ColorScalar color);
 
-// A source for one tensor at one point (discrete glyphs, tests).
+// A source for one tensor at one point, radii not yet set.
+GlyphSource make_source(const Vec3& centre, const Sym3& tensor, ColorScalar color);
+// The same with radii (discrete glyphs, tests).
 GlyphSource make_source(const Vec3& centre, const Sym3& tensor, const GlyphMapping& mapping,
                         ColorScalar color);
+
+// Sets every source's radii from its eigenvalues.
+void size_sources(std::vector<GlyphSource>& sources, const GlyphMapping& mapping);
 
 }  // namespace hsb

@@ -17,11 +17,13 @@ void validate(const PointLoadSpec& spec) {
   if (!std::isfinite(spec.load)) throw std::invalid_argument("point load: load must be finite");
   if (!std::isfinite(spec.poisson_ratio))
     throw std::invalid_argument("point load: poisson_ratio must be finite");
-  if (!std::isfinite(spec.singular_radius) || spec.singular_radius < 0.0)
-    throw std::invalid_argument("point load: singular_radius must be finite and >= 0");
+  if (spec.singular_radius && (!std::isfinite(*spec.singular_radius) || *spec.singular_radius <= 0.0))
+    throw std::invalid_argument("point load: singular_radius must be finite and > 0");
 }
 
 }  // namespace
+
+double default_singular_radius(const Box3& bounds) { return 1e-3 * bounds.diagonal(); }
 
 PointLoadField::PointLoadField(const PointLoadSpec& spec)
     : spec_(spec),
@@ -30,8 +32,7 @@ PointLoadField::PointLoadField(const PointLoadSpec& spec)
   validate(spec_);
   const Vec3 c = spec_.bounds.centre();
   load_point_ = Vec3(c.x(), c.y(), spec_.bounds.hi.z());
-  singular_radius_ =
-      spec_.singular_radius > 0.0 ? spec_.singular_radius : 1e-3 * spec_.bounds.diagonal();
+  singular_radius_ = spec_.singular_radius.value_or(default_singular_radius(spec_.bounds));
 }
 
 Sym3 PointLoadField::stress(const Vec3& p) const {

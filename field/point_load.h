@@ -2,6 +2,8 @@
 // Boussinesq's point load on an elastic half-space: the paper's synthetic
 // data set, with the conventions of VTK's vtkPointLoad.
 
+#include <optional>
+
 #include "field/tensor_field.h"
 
 namespace hsb {
@@ -15,10 +17,14 @@ struct PointLoadSpec {
   double poisson_ratio = 0.3;
   // The stress is singular at the load point. Within this distance of it the
   // field returns the stress at this distance in the same direction (straight
-  // down at the point itself), so it stays finite everywhere. 0 means
-  // 1e-3 of the domain's diagonal.
-  double singular_radius = 0.0;
+  // down at the point itself), so it stays finite everywhere. Automatic:
+  // default_singular_radius(bounds).
+  std::optional<double> singular_radius;
 };
+
+// 1e-3 of the domain's diagonal: small enough not to show, large enough to
+// keep the stress within a million times its value one diagonal away.
+double default_singular_radius(const Box3& bounds);
 
 class PointLoadField final : public TensorField {
  public:

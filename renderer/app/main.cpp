@@ -4,12 +4,15 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <sstream>
 #include <exception>
 #include <string>
 #include <vector>
 
 #include "field/data_info.h"
 #include "renderer/app/export_job.h"
+#include "renderer/app/pinned_scene.h"
+#include "renderer/app/prepared_scene.h"
 #include "renderer/app/process_memory.h"
 #include "renderer/app/render_job.h"
 #include "renderer/scene/scene_spec.h"
@@ -65,7 +68,10 @@ int main(int argc, char** argv) {
   std::string output_dir = "out";
   std::vector<std::string> overrides;
   bool stats = false;
-  render->add_option("scenes", scenes, "Scene files (.toml) to render")->required();
+  render->add_option("scenes", scenes,
+                     "Scene files (.toml) to render; a data file (.vtk .vti .vtu .vts .vtr) renders as a scene\n"
+                     "naming only that file, every other value automatic")
+      ->required();
   render->add_option("-o,--output", output_dir,
                      "Folder for the images (created if missing); output.file is relative to it")
       ->capture_default_str();
@@ -82,12 +88,18 @@ int main(int argc, char** argv) {
                    "Also print ray counts, support intervals and field evaluations per ray");
 
   CLI::App* info = app.add_subcommand(
-      "info", "Describe a data set: kind, bounds, cell types and counts, arrays, eigenvalue ranges.");
+      "info",
+      "Describe a data set (kind, bounds, cell types and counts, arrays, eigenvalue ranges) and print\n"
+      "the scene with every automatic value resolved, as TOML to save and edit.");
   std::vector<std::string> info_inputs;
   std::string info_array;
-  info->add_option("inputs", info_inputs, "Data files (.vtk .vti .vtu .vts .vtr) or scene files (.toml)")
+  info->add_option("inputs", info_inputs, "Scene files (.toml) or data files (.vtk .vti .vtu .vts .vtr)")
       ->required();
   info->add_option("--array", info_array, "Tensor array of a data file (default: its active tensors)");
+  info->footer(
+      "Everything printed is TOML: the description as comments, then the scene with every automatic\n"
+      "value written out (hsb info x.vtu > x.toml gives a scene to edit). A data file stands for the\n"
+      "scene that names only it.");
 
   CLI::App* exporter = app.add_subcommand(
       "export", "Write each scene's trajectories and sources as VTK PolyData (.vtp) for ParaView.");
@@ -95,7 +107,7 @@ int main(int argc, char** argv) {
   std::string export_dir = "out";
   std::vector<std::string> export_overrides;
   std::string format = "vtp";
-  exporter->add_option("scenes", export_scenes, "Scene files (.toml)")->required();
+  exporter->add_option("scenes", export_scenes, "Scene files (.toml) or data files, as for render")->required();
   exporter->add_option("-o,--output", export_dir, "Folder for the files")->capture_default_str();
   exporter->add_option("--set", export_overrides, "Override a scene key, as for render")
       ->allow_extra_args(false);
@@ -139,15 +151,15 @@ int main(int argc, char** argv) {
 
   if (*info) {
     return for_each(info_inputs, "inputs", [&](const std::string& input) {
-      hsb::DataSpec data;
-      if (std::filesystem::path(input).extension() == ".toml") {
-        data = hsb::load_scene(input).pipeline.data;
-      } else {
-        data.kind = hsb::DataKind::vtk_file;
-        data.file.path = input;
-        data.file.array = info_array;
-      }
-      std::fputs(hsb::describe_data(data).c_str(), stdout);
+      std::vector<std::string> info_overrides;
+      if (!info_array.empty()) info_overrides.push_back("data.array=" + info_array);
+      hsb::SceneSpec spec = hsb::load_scene_or_data_file(input, info_overrides);
+      std::istringstream description(hsb::describe_data(spec.pipeline.data));
+      for (std::string line; std::getline(description, line);) std::printf("# %s\n", line.c_str());
+      const hsb::ColorManagement color(spec.output.display.value_or(""), spec.output.view.value_or(""));
+      const std::unique_ptr<hsb::PreparedScene> prepared = hsb::prepare_scene(std::move(spec), color);
+      for (const std::string& warning : prepared->warnings) std::printf("# warning: %s\n", warning.c_str());
+      std::fputs(hsb::pinned_scene_toml(*prepared).c_str(), stdout);
     });
   }
   if (*exporter) {

@@ -13,6 +13,12 @@ std::string vec(const Vec3& v) {
   return text;
 }
 
+std::string number(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", x);
+  return text;
+}
+
 std::string rgb(const Rgb& c) { return vec(Vec3(c[0], c[1], c[2])); }
 
 }  // namespace
@@ -30,6 +36,11 @@ void write_povray_scene(const BlobField& field, const CameraSpec& camera, const 
   const double aspect = double(render.width) / double(render.height);
   const double half_v = std::tan(0.5 * camera.fov_degrees * M_PI / 180.0);
   const double fov_h = 2.0 * std::atan(half_v * aspect) * 180.0 / M_PI;  // POV's angle is horizontal
+  // An orthographic view is as high as `up` is long.
+  const bool orthographic = camera.projection == Projection::orthographic;
+  const std::string projection = orthographic ? "orthographic" : "perspective";
+  const std::string scale = orthographic ? "*" + number(camera.height) : "";
+  const std::string angle = orthographic ? "" : "  angle " + number(fov_h) + "\n";
   const Box3 bounds = influence_bounds(field);
   const Vec3 light_position = bounds.centre() + 1e3 * bounds.diagonal() * shading.light_from.normalized();
 
@@ -40,9 +51,9 @@ void write_povray_scene(const BlobField& field, const CameraSpec& camera, const 
       << "background { rgb " << rgb(shading.background) << " }\n"
       // POV-Ray is left-handed; a negated `right` keeps this scene's
       // right-handed coordinates unmirrored.
-      << "camera {\n  perspective\n  location " << vec(camera.position) << "\n  sky " << vec(camera.up)
-      << "\n  up y\n  right -x*" << aspect << "\n  angle " << fov_h << "\n  look_at " << vec(camera.look_at)
-      << "\n}\n"
+      << "camera {\n  " << projection << "\n  location " << vec(camera.position) << "\n  sky " << vec(camera.up)
+      << "\n  up y" << scale << "\n  right -x*" << aspect << scale << "\n" << angle << "  look_at "
+      << vec(camera.look_at) << "\n}\n"
       << "light_source { " << vec(light_position) << " color rgb "
       << rgb({float(shading.light_intensity * shading.light_color[0]),
               float(shading.light_intensity * shading.light_color[1]),

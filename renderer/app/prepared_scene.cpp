@@ -1,7 +1,29 @@
 #include "renderer/app/prepared_scene.h"
 
+#include <filesystem>
+
+#include "renderer/image/colorbar.h"
+#include "renderer/image/image_output.h"
+#include <sstream>
+
 namespace hsb {
 namespace {
+
+// The automatic lengths of the renderer, as fractions of the data's size D.
+constexpr double kBoxRadiusPerDiagonal = 1.0 / 500.0;
+constexpr double kShadowOffsetPerDiagonal = 1e-5;
+constexpr double kMinStepPerDiagonal = 1e-6;
+
+const char* scalar_title(ColorScalar scalar) {
+  switch (scalar) {
+    case ColorScalar::lambda1: return "major eigenvalue";
+    case ColorScalar::lambda2: return "medium eigenvalue";
+    case ColorScalar::lambda3: return "minor eigenvalue";
+    case ColorScalar::mean: return "mean eigenvalue";
+    case ColorScalar::von_mises: return "von Mises";
+  }
+  return "";
+}
 
 ColorScale color_scale(const ColorSpec& spec, const std::vector<GlyphSource>& sources) {
   const Colormap& map = colormap_named(spec.map);
@@ -12,27 +34,135 @@ ColorScale color_scale(const ColorSpec& spec, const std::vector<GlyphSource>& so
   return auto_scale(map, values);
 }
 
+Box3 merged(const Box3& a, const Box3& b) { return {a.lo.cwiseMin(b.lo), a.hi.cwiseMax(b.hi)}; }
+
+// The box the camera frames.
+Box3 framed_box(FrameTarget target, const PreparedScene& p) {
+  const Box3& domain = p.glyphs.domain;
+  if (target == FrameTarget::data || p.field.sources.empty()) return domain;
+  // Every point of the surface lies inside some source's support.
+  const Box3 glyphs = influence_bounds(p.field);
+  if (target == FrameTarget::glyphs) return glyphs;
+  return p.context.box || p.context.shell ? merged(glyphs, domain) : glyphs;
+}
+
+// Says which keys were left automatic, in the order of the reference.
+std::vector<std::string> automatic_keys(const SceneSpec& s) {
+  std::vector<std::string> keys;
+  const auto note = [&](bool automatic, const char* key) {
+    if (automatic) keys.emplace_back(key);
+  };
+  const GlyphPipelineSpec& p = s.pipeline;
+  note(p.data.kind == DataKind::point_load && !p.data.point_load.singular_radius, "data.singular_radius");
+  note(p.seeds.automatic(), "seeds");
+  note(!p.trajectory.step, "trajectories.step");
+  note(!p.trajectory.max_length, "trajectories.max_length");
+  note(!p.spacing, "glyphs.spacing");
+  note(!p.size.scale, "glyphs.scale");
+  note(!p.size.floor, "glyphs.floor");
+  note(!p.size.ceiling, "glyphs.ceiling");
+  note(!s.color.range, "color.range");
+  note(!s.camera.position, "camera.position");
+  note(!s.camera.look_at, "camera.look_at");
+  note(!s.camera.up, "camera.up");
+  note(!s.camera.view && !(s.camera.position && s.camera.look_at), "camera.view");
+  note(s.camera.projection == Projection::orthographic && !s.camera.height, "camera.height");
+  note(!s.context.box, "render.box");
+  note(!s.context.box_radius, "render.box_radius");
+  note(!s.context.shell, "render.shell");
+  note(!s.render.shadow_offset, "render.shadow_offset");
+  note(!s.render.intersector, "render.intersector");
+  note(!s.render.min_step, "render.min_step");
+  note(!s.output.file, "output.file");
+  note(!s.output.colorbar_title, "output.colorbar_title");
+  return keys;
+}
+
+void warn_about_the_picture(PreparedScene& p, double extent) {
+  // Glyphs larger than the data set hide it, and are usually a scale meant
+  // for other units.
+  const double diagonal = p.glyphs.domain.diagonal();
+  std::size_t too_large = 0;
+  double largest = 0.0;
+  for (const GlyphSource& s : p.glyphs.sources) {
+    const double size = 2.0 * extent * s.radii.maxCoeff();
+    largest = std::max(largest, size);
+    too_large += size > diagonal;
+  }
+  if (too_large) {
+    std::ostringstream text;
+    text << too_large << " of " << p.glyphs.sources.size() << " glyphs are larger than the whole data set (up to "
+         << largest << " across, the data " << diagonal
+         << "): lower glyphs.scale or glyphs.ceiling, or leave them out for automatic sizes";
+    p.warnings.push_back(text.str());
+  }
+  if (!p.field.sources.empty() && field_value(p.field, p.camera.position) >= p.field.isovalue)
+    p.warnings.push_back("the camera is inside the surface: every ray starts inside a glyph; move camera.position "
+                         "out, or leave it out to frame the glyphs from outside");
+}
+
 }  // namespace
 
-PreparedScene prepare_scene(SceneSpec spec, const ColorManagement& color) {
-  PreparedScene p;
+double glyph_extent(const SurfaceSpec& surface) {
+  return surface.influence_radius * kernel_level_radius(surface.kernel, surface.isovalue);
+}
+
+std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManagement& color) {
+  auto prepared = std::make_unique<PreparedScene>();
+  PreparedScene& p = *prepared;
   p.spec = std::move(spec);
-  p.glyphs = build_glyph_scene(p.spec.pipeline);
-  p.scale = color_scale(p.spec.color, p.glyphs.sources);
+  const SceneSpec& s = p.spec;
+  p.automatic = automatic_keys(s);
+
+  // The field side resolves its own automatic values from the data and
+  // the trajectories (field/automatic_values.h).
+  const double extent = glyph_extent(s.surface);
+  p.glyphs = build_glyph_scene(s.pipeline, extent);
+  p.warnings = p.glyphs.warnings;
+  const Box3& domain = p.glyphs.domain;
+  const double diagonal = domain.diagonal();
+
+  p.scale = color_scale(s.color, p.glyphs.sources);
   std::vector<std::array<float, 3>> colors;
   colors.reserve(p.glyphs.sources.size());
-  for (const GlyphSource& s : p.glyphs.sources) colors.push_back(color.to_scene_linear(p.scale.srgb(s.scalar)));
-  p.field = make_blob_field(p.glyphs.sources, colors, p.spec.surface.influence_radius, p.spec.surface.kernel,
-                            p.spec.surface.blend, p.spec.surface.isovalue);
-  p.shading = p.spec.shading;
+  for (const GlyphSource& g : p.glyphs.sources) colors.push_back(color.to_scene_linear(p.scale.srgb(g.scalar)));
+  p.field = make_blob_field(p.glyphs.sources, colors, s.surface.influence_radius, s.surface.kernel, s.surface.blend,
+                            s.surface.isovalue);
+
+  // A box frames an analytic domain, a shell shows a mesh's boundary.
+  const bool has_boundary = p.glyphs.boundary.has_value();
+  if (s.context.box.value_or(!has_boundary)) p.context.box = domain;
+  p.context.box_radius = s.context.box_radius.value_or(kBoxRadiusPerDiagonal * diagonal);
+  if (s.context.shell.value_or(has_boundary) && has_boundary) p.context.shell = &*p.glyphs.boundary;
+
+  p.shading = s.shading;
   p.shading.background = color.to_scene_linear(p.shading.background);
   p.shading.box_color = color.to_scene_linear(p.shading.box_color);
   p.shading.shell_color = color.to_scene_linear(p.shading.shell_color);
-  p.camera = resolve_camera(p.spec, p.glyphs.domain);
-  p.trace.intersector = p.spec.intersector;
-  p.trace.min_step = p.spec.min_step * p.glyphs.domain.diagonal();
-  p.trace.max_steps = p.spec.max_steps;
-  return p;
+
+  p.render.width = s.render.width;
+  p.render.height = s.render.height;
+  p.render.samples = s.render.samples;
+  p.render.shadow_offset = s.render.shadow_offset.value_or(kShadowOffsetPerDiagonal * diagonal);
+  // Exact wherever it applies: it was the faster of the two over the
+  // figure scenes, and exact; blinn summed has no polynomial form.
+  p.trace.intersector = s.render.intersector.value_or(
+      exact_crossing_supported(s.surface.kernel, s.surface.blend) ? Intersector::exact : Intersector::sphere);
+  p.trace.min_step = s.render.min_step.value_or(kMinStepPerDiagonal * diagonal);
+  p.trace.max_steps = s.render.max_steps;
+
+  p.output.file = s.output.file.value_or(std::filesystem::path(s.path).stem().string() + ".png");
+  p.output.bit_depth = s.output.bit_depth;
+  p.output.colorbar = s.output.colorbar && !p.field.sources.empty() && !is_scene_linear_format(p.output.file);
+  p.output.colorbar_title = s.output.colorbar_title.value_or(scalar_title(s.pipeline.color));
+
+  const double legend = p.output.colorbar ? colorbar_width_fraction(s.render.width, s.render.height) : 0.0;
+  CameraRequest camera = s.camera;
+  if (!camera.view) camera.view = automatic_view(domain);
+  p.camera = frame_camera(camera, framed_box(s.camera.frame, p), s.render.width, s.render.height, legend);
+
+  warn_about_the_picture(p, extent);
+  return prepared;
 }
 
 }  // namespace hsb

@@ -1,6 +1,7 @@
 #pragma once
 // A scene file turned into what the renderer (or an exporter) needs: the
-// field side run, colours mapped and colour-managed, the camera framed.
+// field side run, and every value the scene left automatic resolved, in
+// one place and in one pass, before any Embree scene is built.
 
 #include <string>
 #include <vector>
@@ -8,22 +9,50 @@
 #include "field/glyph_pipeline.h"
 #include "renderer/image/color_management.h"
 #include "renderer/image/colormap.h"
+#include "renderer/render/ray_scene.h"
 #include "renderer/scene/scene_spec.h"
 #include "renderer/surface/blob_field.h"
 
 namespace hsb {
 
+// The output side, resolved.
+struct OutputSettings {
+  std::string file;  // relative to the output folder
+  int bit_depth = 8;
+  bool colorbar = true;
+  std::string colorbar_title;
+};
+
 struct PreparedScene {
-  SceneSpec spec;
-  GlyphScene glyphs;
+  SceneSpec spec;        // as the scene file says, automatic values unresolved
+  GlyphScene glyphs;     // with the field side's resolved values (glyphs.values)
   ColorScale scale;
   BlobField field;
-  ShadingSpec shading;  // colours converted to scene-linear
-  CameraSpec camera;    // framed on the data when the scene does not say
+  ShadingSpec shading;   // colours converted to scene-linear
+  DrawnContext context;  // points into glyphs.boundary
+  CameraSpec camera;
+  RenderSettings render;
   TraceSettings trace;
+  OutputSettings output;
+  // The keys the scene left automatic ("glyphs.scale", "camera.position",
+  // …), in the order of the scene reference.
+  std::vector<std::string> automatic;
+  // About the data and the picture: the image is still made.
+  std::vector<std::string> warnings;
+
+  PreparedScene() = default;
+  PreparedScene(const PreparedScene&) = delete;  // context points into glyphs
+  PreparedScene& operator=(const PreparedScene&) = delete;
+  PreparedScene(PreparedScene&&) = delete;
 };
 
 // `color` is the colour management for spec.output's display and view.
-PreparedScene prepare_scene(SceneSpec spec, const ColorManagement& color);
+// Throws DataError for unusable data and SceneError for a scene that cannot
+// be rendered (a camera that cannot be built).
+std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManagement& color);
+
+// An isolated glyph's largest semi-axis for a largest radius of 1: the
+// influence radius R times the kernel's level radius at the isovalue.
+double glyph_extent(const SurfaceSpec& surface);
 
 }  // namespace hsb

@@ -29,28 +29,20 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// ASCII only: OIIO 2.4's render_text decodes two-byte UTF-8 wrongly (λ comes
-// out as ';'), so Greek letters cannot be drawn.
-const char* scalar_title(ColorScalar scalar) {
-  switch (scalar) {
-    case ColorScalar::lambda1: return "major eigenvalue";
-    case ColorScalar::lambda2: return "medium eigenvalue";
-    case ColorScalar::lambda3: return "minor eigenvalue";
-    case ColorScalar::mean: return "mean eigenvalue";
-    case ColorScalar::von_mises: return "von Mises";
-  }
-  return "";
-}
-
 std::string sha1_hex(const std::string& text) {
   OIIO::SHA1 hash(text.data(), text.size());
   return hash.digest();
 }
 
-std::map<std::string, std::string> image_metadata(const SceneSpec& spec, const RenderJob& job,
-                                                  const ColorScale& scale,
-                                                  const ColorManagement& color,
-                                                  std::size_t sources) {
+// The scene's text and overrides: what its hash covers.
+std::string scene_fingerprint(const SceneSpec& spec) {
+  std::string text = spec.text;
+  for (const std::string& o : spec.overrides) text += "\n--set " + o;
+  return text;
+}
+
+std::map<std::string, std::string> image_metadata(const SceneSpec& spec, const ColorScale& scale,
+                                                  const ColorManagement& color, std::size_t sources) {
   std::ostringstream description;
   description << "Hyperstreamball render of " << std::filesystem::path(spec.path).filename().string()
               << ": " << sources << " sources, kernel " << kernel_name(spec.surface.kernel)
@@ -60,7 +52,7 @@ std::map<std::string, std::string> image_metadata(const SceneSpec& spec, const R
       {"Software", std::string("Hyperstreamball ") + HSB_VERSION},
       {"ImageDescription", description.str()},
       {"hsb:scene", spec.path},
-      {"hsb:scene_sha1", sha1_hex(scene_fingerprint_text(job.scene_path, job.overrides))},
+      {"hsb:scene_sha1", sha1_hex(scene_fingerprint(spec))},
       {"hsb:sources", std::to_string(sources)},
       {"hsb:kernel", kernel_name(spec.surface.kernel)},
       {"hsb:color_range", std::to_string(scale.lo) + " " + std::to_string(scale.hi)},
@@ -72,30 +64,28 @@ std::map<std::string, std::string> image_metadata(const SceneSpec& spec, const R
 
 RenderSummary run_render_job(const RenderJob& job) {
   const auto start = Clock::now();
-  SceneSpec loaded = load_scene(job.scene_path, job.overrides);
-  const ColorManagement color(loaded.output.display, loaded.output.view);
-  const PreparedScene prepared = prepare_scene(std::move(loaded), color);
-  const SceneSpec& spec = prepared.spec;
-  const GlyphScene& glyphs = prepared.glyphs;
-  const BlobField& field = prepared.field;
-  const ColorScale& scale = prepared.scale;
+  SceneSpec loaded = load_scene_or_data_file(job.scene_path, job.overrides);
+  const ColorManagement color(loaded.output.display.value_or(""), loaded.output.view.value_or(""));
+  const std::unique_ptr<PreparedScene> prepared = prepare_scene(std::move(loaded), color);
+  const SceneSpec& spec = prepared->spec;
+  const BlobField& field = prepared->field;
+  const ColorScale& scale = prepared->scale;
 
   static const EmbreeDevice device;
-  const RayScene scene(device, field, glyphs.domain, prepared.shading, prepared.trace,
-                       glyphs.boundary ? &*glyphs.boundary : nullptr);
+  const RayScene scene(device, field, prepared->trace, prepared->context);
   const double build_seconds = seconds_since(start);
-  RenderOutput rendered = render_image(scene, glyphs.domain, prepared.camera, prepared.shading, spec.render);
+  RenderOutput rendered = render_image(scene, prepared->camera, prepared->shading, prepared->render);
 
   // Image: display transform (or scene-linear EXR), colour bar, metadata.
   const auto output_start = Clock::now();
-  const std::filesystem::path image_path = std::filesystem::path(job.output_dir) / spec.output.file;
+  const std::filesystem::path image_path = std::filesystem::path(job.output_dir) / prepared->output.file;
   std::filesystem::create_directories(image_path.parent_path());
   Film& film = rendered.film;
   ImageToWrite image;
   image.width = film.width;
   image.height = film.height;
-  image.bit_depth = spec.output.bit_depth;
-  image.metadata = image_metadata(spec, job, scale, color, field.sources.size());
+  image.bit_depth = prepared->output.bit_depth;
+  image.metadata = image_metadata(spec, scale, color, field.sources.size());
   if (is_scene_linear_format(image_path.string())) {
     // EXR keeps scene-linear data, with the camera distance as a Z channel.
     image.channels = 5;
@@ -109,19 +99,16 @@ RenderSummary run_render_job(const RenderJob& job) {
     color.apply_display(film.rgba, film.width, film.height);
     // Display images are opaque: the background is part of the picture.
     for (std::size_t i = 3; i < film.rgba.size(); i += 4) film.rgba[i] = 1.0f;
-    if (spec.output.colorbar && !field.sources.empty()) {
-      const std::string title = spec.output.colorbar_title.empty() ? scalar_title(spec.pipeline.color)
-                                                                   : spec.output.colorbar_title;
-      draw_colorbar(film.rgba, film.width, film.height, scale, {title}, color);
-    }
+    if (prepared->output.colorbar)
+      draw_colorbar(film.rgba, film.width, film.height, scale, {prepared->output.colorbar_title}, color);
     image.pixels = std::move(film.rgba);
   }
   write_image(image, image_path.string());
 
   RenderSummary summary;
   summary.image_path = image_path.string();
-  summary.warnings = glyphs.warnings;
-  summary.trajectories = glyphs.trajectories.size();
+  summary.warnings = prepared->warnings;
+  summary.trajectories = prepared->glyphs.trajectories.size();
   summary.sources = field.sources.size();
   summary.build_seconds = build_seconds;
   summary.render_seconds = rendered.seconds;

@@ -25,16 +25,28 @@ std::string format_value(double v) {
   return text;
 }
 
+struct BarLayout {
+  int font, bar_w, margin;
+  BarLayout(int width, int height)
+      : font(std::max(10, height / 36)), bar_w(std::max(8, width / 36)), margin(std::max(6, width / 40)) {}
+  // Labels such as "-1.05e+03": about seven characters at 0.6 em.
+  int label_width() const { return int(7 * 0.6 * font) + font / 2; }
+};
+
 }  // namespace
+
+double colorbar_width_fraction(int width, int height) {
+  const BarLayout l(width, height);
+  return double(l.margin + l.bar_w + l.label_width()) / double(width);
+}
 
 void draw_colorbar(std::vector<float>& rgba, int width, int height, const ColorScale& scale,
                    const ColorbarSpec& spec, const ColorManagement& color) {
   OIIO::ImageSpec image_spec(width, height, 4, OIIO::TypeDesc::FLOAT);
   OIIO::ImageBuf image(image_spec, rgba.data());  // wraps the caller's pixels
 
-  const int font = std::max(10, height / 36);
-  const int bar_w = std::max(8, width / 36);
-  const int margin = std::max(6, width / 40);
+  const BarLayout layout(width, height);
+  const int font = layout.font, bar_w = layout.bar_w, margin = layout.margin;
   const int x1 = width - margin, x0 = x1 - bar_w;
   const int y0 = height / 6 + 2 * font, y1 = height - height / 6;
   if (x0 < 0 || y1 - y0 < 8) return;  // too small to say anything useful

@@ -19,6 +19,10 @@ struct ColorbarSpec {
 // colormap's colours through the same path glyph colours take (to
 // scene-linear, then the display transform), so bar and glyphs match under
 // any OCIO config. Throws std::runtime_error when text cannot be drawn.
+// The fraction of the picture's width, at its right, the bar and its labels
+// take: kept free of the data when the camera frames it.
+double colorbar_width_fraction(int width, int height);
+
 void draw_colorbar(std::vector<float>& rgba, int width, int height, const ColorScale& scale,
                    const ColorbarSpec& spec, const ColorManagement& color);
 

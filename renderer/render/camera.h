@@ -1,30 +1,42 @@
 #pragma once
-// A pinhole camera.
+// A pinhole or orthographic camera.
 
 #include "field/sym3.h"
 
 namespace hsb {
 
+enum class Projection { perspective, orthographic };
+
 struct CameraSpec {
   Vec3 position{4, -6, 3};
   Vec3 look_at{0, 0, 0};
   Vec3 up{0, 0, 1};
-  double fov_degrees = 30.0;  // vertical field of view
+  Projection projection = Projection::perspective;
+  double fov_degrees = 30.0;  // perspective: vertical field of view
+  double height = 1.0;        // orthographic: the view's height, in world units
+};
+
+struct CameraRay {
+  Vec3 origin, direction;  // direction is unit
 };
 
 class Camera {
  public:
+  // Throws std::invalid_argument when position equals look_at or up is
+  // parallel to the view.
   Camera(const CameraSpec& spec, int width, int height);
 
-  // Direction (unit) of the ray through image position (x, y) in pixels,
-  // (0, 0) the top-left corner of the top-left pixel.
-  Vec3 direction(double x, double y) const;
-  const Vec3& origin() const { return origin_; }
+  // The ray through image position (x, y) in pixels, (0, 0) the top-left
+  // corner of the top-left pixel. Perspective rays share the eye point;
+  // orthographic ones are parallel, starting on the plane through the
+  // camera's position.
+  CameraRay ray(double x, double y) const;
 
  private:
   Vec3 origin_, forward_, right_, down_;
-  double half_height_, half_width_;
+  double half_height_, half_width_;  // perspective: tangents; orthographic: lengths
   int width_, height_;
+  Projection projection_;
 };
 
 }  // namespace hsb

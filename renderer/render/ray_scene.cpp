@@ -71,20 +71,18 @@ EmbreeDevice::EmbreeDevice() : device_(rtcNewDevice(nullptr)) {
 
 EmbreeDevice::~EmbreeDevice() { rtcReleaseDevice(device_); }
 
-RayScene::RayScene(const EmbreeDevice& device, const BlobField& field, const Box3& domain,
-                   const ShadingSpec& shading, const TraceSettings& settings,
-                   const TriangleMesh* shell) {
+RayScene::RayScene(const EmbreeDevice& device, const BlobField& field, const TraceSettings& settings,
+                   const DrawnContext& context) {
   scene_ = rtcNewScene(device.get());
   blobs_ = std::make_unique<BlobGeometry>(device.get(), field, settings);
   if (!field.sources.empty()) field_id_ = blobs_->attach_to(scene_, kFieldMask);
-  if (shading.box) {
-    const double radius = shading.box_radius > 0.0 ? shading.box_radius : domain.diagonal() / 500.0;
-    RTCGeometry edges = make_box_edges(device.get(), domain, radius);
+  if (context.box) {
+    RTCGeometry edges = make_box_edges(device.get(), *context.box, context.box_radius);
     box_id_ = rtcAttachGeometry(scene_, edges);
     rtcReleaseGeometry(edges);
   }
   rtcCommitScene(scene_);
-  if (shading.shell && shell && !shell->triangles.empty()) shell_ = make_shell(device.get(), *shell);
+  if (context.shell && !context.shell->triangles.empty()) shell_ = make_shell(device.get(), *context.shell);
   if (rtcGetDeviceError(device.get()) != RTC_ERROR_NONE)
     throw std::runtime_error("Embree failed to build the scene");
 }

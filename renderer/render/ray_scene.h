@@ -4,6 +4,7 @@
 #include <embree3/rtcore.h>
 
 #include <memory>
+#include <optional>
 
 #include "field/box3.h"
 #include "field/triangle_mesh.h"
@@ -25,6 +26,13 @@ class EmbreeDevice {
   RTCDevice device_;
 };
 
+// What is drawn around the field, each part when present.
+struct DrawnContext {
+  std::optional<Box3> box;  // its twelve edges
+  double box_radius = 0.0;
+  const TriangleMesh* shell = nullptr;  // a data set's boundary surface
+};
+
 class RayScene {
  public:
   // Embree geometry masks. The field casts shadows; the domain's edges are
@@ -34,14 +42,13 @@ class RayScene {
   static constexpr unsigned kContextMask = 2u;
   static constexpr unsigned kShadowRayMask = kFieldMask;
 
-  // `field` must outlive the scene. The domain box edges are added as thin
-  // round curves when `shading.box` is set; they cast no shadow (shadow
-  // rays carry kShadowRayMask). `shell`, when given and
-  // `shading.shell` is set, becomes a separate scene of triangles: it is
-  // composited over what the rays hit, casts no shadow and hides nothing.
-  RayScene(const EmbreeDevice& device, const BlobField& field, const Box3& domain,
-           const ShadingSpec& shading, const TraceSettings& settings,
-           const TriangleMesh* shell = nullptr);
+  // `field` (and context.shell) must outlive the scene. The box's edges
+  // are thin round curves that cast no shadow (shadow rays carry
+  // kShadowRayMask). The shell becomes a separate scene of triangles: it
+  // is composited over what the rays hit, casts no shadow and hides
+  // nothing.
+  RayScene(const EmbreeDevice& device, const BlobField& field, const TraceSettings& settings,
+           const DrawnContext& context = {});
   ~RayScene();
   RayScene(const RayScene&) = delete;
   RayScene& operator=(const RayScene&) = delete;

@@ -50,11 +50,10 @@ struct Sample {
   double depth;
 };
 
-// Traces `count` (at most kMaxPacket) camera rays from `origin` as one
-// packet, and their shadow rays as another.
-void trace_packet(const RayScene& scene, const ShadingSpec& shading, const Vec3& origin,
-                  const Vec3* directions, int count, const Vec3& to_light, double shadow_offset,
-                  ThreadState& state, Sample* samples) {
+// Traces `count` (at most kMaxPacket) camera rays as one packet, and their
+// shadow rays as another.
+void trace_packet(const RayScene& scene, const ShadingSpec& shading, const CameraRay* rays, int count,
+                  const Vec3& to_light, double shadow_offset, ThreadState& state, Sample* samples) {
   FieldRayContext context(state.tracers, state.stats);
   context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
   alignas(64) int valid[kMaxPacket];
@@ -62,7 +61,7 @@ void trace_packet(const RayScene& scene, const ShadingSpec& shading, const Vec3&
   auto* primary_n = reinterpret_cast<RTCRayHitN*>(&primary);
   for (int i = 0; i < kMaxPacket; ++i) {
     valid[i] = i < count ? -1 : 0;
-    if (i < count) set_embree_ray(primary_n, kMaxPacket, unsigned(i), origin, directions[i], 0.0f, INFINITY);
+    if (i < count) set_embree_ray(primary_n, kMaxPacket, unsigned(i), rays[i].origin, rays[i].direction, 0.0f, INFINITY);
   }
   const auto primary_start = Clock::now();
   rtcIntersect16(valid, scene.get(), &context.embree, &primary);
@@ -87,10 +86,10 @@ void trace_packet(const RayScene& scene, const ShadingSpec& shading, const Vec3&
     }
     on_field[i] = true;
     const Vec3& n = context.surface[std::size_t(i)].normal;
-    const Vec3 facing = n.dot(directions[i]) < 0.0 ? n : Vec3(-n);  // the side the camera sees
+    const Vec3 facing = n.dot(rays[i].direction) < 0.0 ? n : Vec3(-n);  // the side the camera sees
     // A side facing away from the light is unlit whatever lies between.
     if (shading.shadows && facing.dot(to_light) > 0.0) {
-      const Vec3 x = origin + context.t[std::size_t(i)] * directions[i];
+      const Vec3 x = rays[i].origin + context.t[std::size_t(i)] * rays[i].direction;
       const Vec3 start = x + shadow_offset * facing;
       set_embree_ray(shadow_n, kMaxPacket, unsigned(i), start, to_light, 0.0f, INFINITY,
                      RayScene::kShadowRayMask);
@@ -110,7 +109,7 @@ void trace_packet(const RayScene& scene, const ShadingSpec& shading, const Vec3&
     if (!on_field[i]) continue;
     const SurfaceSample& surface = context.surface[std::size_t(i)];
     const double visibility = shadow_valid[i] && shadow.ray.tfar[i] < 0.0f ? 0.0 : 1.0;
-    samples[i] = {shade_surface(shading, surface.color, surface.normal, -directions[i], to_light, visibility),
+    samples[i] = {shade_surface(shading, surface.color, surface.normal, -rays[i].direction, to_light, visibility),
                   true, context.t[std::size_t(i)]};
   }
 }
@@ -119,9 +118,9 @@ void trace_packet(const RayScene& scene, const ShadingSpec& shading, const Vec3&
 // composited front to back. Opacity rises from shell_opacity facing the
 // viewer to shell_edge_opacity at grazing angles, so the body's outline
 // shows as an edge while glyphs inside stay visible.
-Rgb composite_shell(RTCScene shell, const ShadingSpec& shading, const Vec3& origin,
-                    const Vec3& direction, const Vec3& to_light, const Rgb& behind,
-                    double t_behind) {
+Rgb composite_shell(RTCScene shell, const ShadingSpec& shading, const CameraRay& ray, const Vec3& to_light,
+                    const Rgb& behind, double t_behind) {
+  const Vec3 &origin = ray.origin, &direction = ray.direction;
   constexpr int max_layers = 8;
   Rgb sum{0, 0, 0};
   double transmittance = 1.0;
@@ -149,12 +148,12 @@ Rgb composite_shell(RTCScene shell, const ShadingSpec& shading, const Vec3& orig
 
 }  // namespace
 
-RenderOutput render_image(const RayScene& scene, const Box3& domain, const CameraSpec& camera_spec,
-                          const ShadingSpec& shading, const RenderSettings& settings) {
+RenderOutput render_image(const RayScene& scene, const CameraSpec& camera_spec, const ShadingSpec& shading,
+                          const RenderSettings& settings) {
   const auto start = Clock::now();
   const Camera camera(camera_spec, settings.width, settings.height);
   const Vec3 to_light = shading.light_from.normalized();
-  const double shadow_offset = settings.shadow_offset * domain.diagonal();
+  const double shadow_offset = settings.shadow_offset;
   const int n = std::max(1, settings.samples);
   const double inv_samples = 1.0 / double(n * n);
 
@@ -185,20 +184,19 @@ RenderOutput render_image(const RayScene& scene, const Box3& domain, const Camer
         std::fill(depth, depth + kMaxPacket, INFINITY);
         for (int sy = 0; sy < n; ++sy) {
           for (int sx = 0; sx < n; ++sx) {
-            Vec3 directions[kMaxPacket];
+            CameraRay rays[kMaxPacket];
             for (int i = 0; i < count; ++i) {
               const std::uint64_t key = (pixel[i] * std::uint64_t(n * n) + std::uint64_t(sy * n + sx)) * 2;
               const double jx = n == 1 ? 0.5 : (sx + hash_unit(key)) / n;
               const double jy = n == 1 ? 0.5 : (sy + hash_unit(key + 1)) / n;
-              directions[i] = camera.direction(px[i] + jx, py[i] + jy);
+              rays[i] = camera.ray(px[i] + jx, py[i] + jy);
             }
             Sample samples[kMaxPacket];
-            trace_packet(scene, shading, camera.origin(), directions, count, to_light, shadow_offset, state, samples);
+            trace_packet(scene, shading, rays, count, to_light, shadow_offset, state, samples);
             for (int i = 0; i < count; ++i) {
               Sample& s = samples[i];
               if (scene.shell())
-                s.color = composite_shell(scene.shell(), shading, camera.origin(), directions[i], to_light,
-                                          s.color, s.depth);
+                s.color = composite_shell(scene.shell(), shading, rays[i], to_light, s.color, s.depth);
               for (int c = 0; c < 3; ++c) rgb[i][c] += s.color[c];
               coverage[i] += s.covered ? 1.0 : 0.0;
               depth[i] = std::min(depth[i], s.depth);

@@ -17,8 +17,7 @@ struct RenderSettings {
   // box-filtered. The jitter is a hash of pixel and sample, so renders are
   // reproducible whatever the thread count.
   int samples = 2;
-  // Shadow rays start this far off the surface along its normal, in units
-  // of the domain's diagonal.
+  // Shadow rays start this far off the surface along its normal.
   double shadow_offset = 1e-5;
 };
 
@@ -43,7 +42,7 @@ struct RenderOutput {
   }
 };
 
-RenderOutput render_image(const RayScene& scene, const Box3& domain, const CameraSpec& camera,
-                          const ShadingSpec& shading, const RenderSettings& settings);
+RenderOutput render_image(const RayScene& scene, const CameraSpec& camera, const ShadingSpec& shading,
+                          const RenderSettings& settings);
 
 }  // namespace hsb

@@ -18,12 +18,9 @@ struct ShadingSpec {
   double specular = 0.2;   // Blinn–Phong highlight strength
   double shininess = 40.0;
   Rgb background{1, 1, 1};
-  bool box = true;         // draw the domain's edges
-  Rgb box_color{0.05f, 0.05f, 0.05f};
-  double box_radius = 0.0;  // 0: 1/500 of the domain's diagonal
-  // A data set's boundary surface drawn as a translucent shell; its opacity
-  // rises towards grazing angles, so the outline reads as an edge.
-  bool shell = false;
+  Rgb box_color{0.05f, 0.05f, 0.05f};  // the domain's edges, when drawn
+  // A data set's boundary surface, when drawn, is a translucent shell; its
+  // opacity rises towards grazing angles, so the outline reads as an edge.
   Rgb shell_color{0.6f, 0.65f, 0.7f};
   double shell_opacity = 0.08;       // facing the viewer
   double shell_edge_opacity = 0.6;   // at grazing angles

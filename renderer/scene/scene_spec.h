@@ -1,16 +1,23 @@
 #pragma once
-// Everything a scene file says, validated, with every default filled in.
-// scenes/README.md documents each key; keep the two in step.
+// Everything a scene file says, validated. A key the file leaves out that
+// has a fixed default gets it here; a key whose value depends on the data
+// (a length, a colour range, the camera) is std::nullopt, "automatic", and
+// is resolved with every other automatic value in prepare_scene(), once
+// the data is read. scenes/README.md documents each key; keep the two in
+// step.
 
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include <toml++/toml.h>
 
 #include "field/glyph_pipeline.h"
-#include "renderer/scene/scene_error.h"
-#include "renderer/render/camera.h"
+#include "renderer/render/camera_framing.h"
 #include "renderer/render/render_image.h"
 #include "renderer/render/shading.h"
+#include "renderer/scene/scene_error.h"
 #include "renderer/surface/blob_field.h"
 #include "renderer/surface/field_ray.h"
 
@@ -25,30 +32,46 @@ struct SurfaceSpec {
 
 struct ColorSpec {
   std::string map = "viridis";
-  std::optional<std::array<double, 2>> range;  // nullopt: from the sources
+  std::optional<std::array<double, 2>> range;  // automatic: from the sources
+};
+
+// What is drawn around the glyphs. Automatic: a box frames an analytic
+// domain, a shell shows a mesh's boundary, the box's edges are D/500 thick.
+struct ContextSpec {
+  std::optional<bool> box, shell;
+  std::optional<double> box_radius;
+};
+
+// The [render] table's image and tracing keys.
+struct RenderSpec {
+  int width = 800, height = 800;
+  int samples = 2;
+  std::optional<double> shadow_offset;     // in the data's units; automatic: D·1e-5
+  std::optional<Intersector> intersector;  // automatic: exact where it applies
+  std::optional<double> min_step;          // the sphere tracer's, in the data's units; automatic: D·1e-6
+  int max_steps = 200000;
 };
 
 struct OutputSpec {
-  std::string file;       // relative to the output folder; default <scene stem>.png
-  int bit_depth = 8;      // PNG/TIFF
-  std::string display;    // OCIO display; "" = the config's default
-  std::string view;       // OCIO view; "" = the display's default
+  std::optional<std::string> file;  // relative to the output folder; automatic: <scene stem>.png
+  int bit_depth = 8;                // PNG/TIFF
+  std::optional<std::string> display, view;  // OCIO; automatic: the config's defaults
   bool colorbar = true;
-  std::string colorbar_title;  // "" = named after glyphs.color_by
+  std::optional<std::string> colorbar_title;  // automatic: named after glyphs.color_by
 };
 
 struct SceneSpec {
-  std::string path;  // the scene file, as given
+  std::string path;  // the scene file, as given (or the data file a scene was made for)
+  std::string base_dir;  // relative paths in it are relative to this
+  std::string text;  // the scene's TOML text
+  std::vector<std::string> overrides;  // --set key=value
   GlyphPipelineSpec pipeline;
   SurfaceSpec surface;
   ColorSpec color;
-  CameraSpec camera;  // position and look_at are filled in by resolve_camera()
-  std::optional<Vec3> camera_position, camera_look_at;  // nullopt: framed on the data
-  ShadingSpec shading;  // background and box colours still in display terms
-  RenderSettings render;
-  Intersector intersector = Intersector::sphere;
-  double min_step = 1e-6;  // sphere tracer's smallest step, × domain diagonal
-  int max_steps = 200000;
+  CameraRequest camera;
+  ShadingSpec shading;  // light and colours, display-referred
+  ContextSpec context;
+  RenderSpec render;
   OutputSpec output;
 };
 
@@ -57,11 +80,21 @@ struct SceneSpec {
 // when it is not one. Throws SceneError naming file:line:column and the key.
 SceneSpec load_scene(const std::string& path, const std::vector<std::string>& overrides = {});
 
-// The camera, with position and look_at defaulting to a view of `domain`
-// from the front-right, above (the domain is known only once data is read).
-CameraSpec resolve_camera(const SceneSpec& spec, const Box3& domain);
+// The same for scene text that is not in a file: `path` names it in errors
+// and output files, relative paths in it are relative to `base_dir`.
+SceneSpec load_scene_text(const std::string& text, const std::string& path, const std::string& base_dir,
+                          const std::vector<std::string>& overrides = {});
 
-// The scene's text plus overrides, for the hash written into images.
-std::string scene_fingerprint_text(const std::string& path, const std::vector<std::string>& overrides);
+// The scene's TOML as read, with its overrides applied (for printing it
+// back with automatic values filled in).
+toml::table scene_table(const SceneSpec& spec);
+
+// True for a data file's extension (.vtk, .vti, .vtu, .vts, .vtr): such a
+// path names a data set, and `hsb` makes it a scene naming only that file.
+bool is_data_file(const std::string& path);
+// That scene: its one key is data.file.
+SceneSpec scene_for_data_file(const std::string& path, const std::vector<std::string>& overrides = {});
+// A scene file, or a data file as that scene.
+SceneSpec load_scene_or_data_file(const std::string& path, const std::vector<std::string>& overrides = {});
 
 }  // namespace hsb

@@ -70,10 +70,34 @@ double TableReader::number(std::string_view key, double fallback, NumberRange ra
     if (range.hi == std::numeric_limits<double>::infinity())
       text << "must be " << (range.lo_open ? "> " : ">= ") << range.lo;
     else
-      text << "must be in [" << range.lo << ", " << range.hi << "]";
+      text << "must be in " << (range.lo_open ? "(" : "[") << range.lo << ", " << range.hi << "]";
     fail(*node, key, text.str() + ", got " + describe(*node));
   }
   return v;
+}
+
+std::optional<double> TableReader::optional_number(std::string_view key, NumberRange range) {
+  if (!table_.contains(key)) {
+    known_.emplace(key);
+    return std::nullopt;
+  }
+  return number(key, 0.0, range);
+}
+
+std::optional<bool> TableReader::optional_boolean(std::string_view key) {
+  if (!table_.contains(key)) {
+    known_.emplace(key);
+    return std::nullopt;
+  }
+  return boolean(key, false);
+}
+
+std::optional<std::string> TableReader::optional_string(std::string_view key) {
+  if (!table_.contains(key)) {
+    known_.emplace(key);
+    return std::nullopt;
+  }
+  return string(key, "");
 }
 
 int TableReader::integer(std::string_view key, int fallback, int lo, int hi) {
@@ -191,7 +215,9 @@ void TableReader::finish() const {
     if (known_.count(key.str())) continue;
     std::string known_list;
     for (const std::string& k : known_) known_list += (known_list.empty() ? "" : ", ") + k;
-    throw SceneError(source_location(key.source()) + ": unknown key " + path(key.str()) +
+    // A key from --set has no place in the file: name the argument instead.
+    const std::string where = key.source().path ? source_location(key.source()) : source_location(node);
+    throw SceneError(where + ": unknown key " + path(key.str()) +
                      (known_list.empty() ? std::string() : " (known here: " + known_list + ")"));
   }
 }

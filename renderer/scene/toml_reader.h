@@ -45,6 +45,10 @@ class TableReader {
   TableReader(const toml::table& table, std::string prefix, std::string where);
 
   double number(std::string_view key, double fallback, NumberRange range = any_number);
+  // The same, nullopt when absent: an automatic value.
+  std::optional<double> optional_number(std::string_view key, NumberRange range = any_number);
+  std::optional<bool> optional_boolean(std::string_view key);
+  std::optional<std::string> optional_string(std::string_view key);
   int integer(std::string_view key, int fallback, int lo = std::numeric_limits<int>::min(),
               int hi = std::numeric_limits<int>::max());
   bool boolean(std::string_view key, bool fallback);
@@ -59,6 +63,8 @@ class TableReader {
   template <class T>
   T choice(std::string_view key, T fallback,
            std::initializer_list<std::pair<const char*, T>> options);
+  template <class T>
+  T choice(std::string_view key, T fallback, const std::vector<std::pair<std::string, T>>& options);
 
   // A sub-table (nullopt when absent) and an array of tables.
   std::optional<TableReader> table(std::string_view key);
@@ -67,6 +73,10 @@ class TableReader {
   std::vector<Vec3> points(std::string_view key);
 
   bool has(std::string_view key) const { return table_.contains(key); }
+  bool holds_string(std::string_view key) const {
+    const toml::node* node = table_.get(key);
+    return node && node->is_string();
+  }
   // Errors on the first key of this table that no read asked for.
   void finish() const;
 
@@ -90,10 +100,17 @@ std::string describe(const toml::node& node);
 template <class T>
 T TableReader::choice(std::string_view key, T fallback,
                       std::initializer_list<std::pair<const char*, T>> options) {
+  std::vector<std::pair<std::string, T>> named;
+  for (const auto& option : options) named.emplace_back(option.first, option.second);
+  return choice(key, fallback, named);
+}
+
+template <class T>
+T TableReader::choice(std::string_view key, T fallback, const std::vector<std::pair<std::string, T>>& options) {
   const toml::node* node = lookup(key);
   if (!node) return fallback;
   std::vector<std::string> names;
-  for (const auto& option : options) names.emplace_back(option.first);
+  for (const auto& option : options) names.push_back(option.first);
   if (const auto* s = node->as_string()) {
     for (const auto& option : options)
       if (s->get() == option.first) return option.second;

@@ -63,27 +63,26 @@ BlobField pile(int n) {
 RenderOutput render_field(const EmbreeDevice& device, const BlobField& field, const CameraSpec& camera,
                           Intersector intersector) {
   const Box3 domain{Vec3(-2, -2, -2), Vec3(2, 2, 2)};
-  ShadingSpec shading;
-  shading.box = false;
+  const ShadingSpec shading;
   TraceSettings trace;
   trace.intersector = intersector;
   trace.min_step = 1e-6 * domain.diagonal();
   RenderSettings render;
   render.width = render.height = kSize;
   render.samples = 1;
-  const RayScene scene(device, field, domain, shading, trace);
-  return render_image(scene, domain, camera, shading, render);
+  render.shadow_offset = 1e-5 * domain.diagonal();
+  const RayScene scene(device, field, trace);
+  return render_image(scene, camera, shading, render);
 }
 
 RenderOutput render_scene_file(const EmbreeDevice& device, const std::string& path, Intersector intersector) {
   SceneSpec spec = load_scene(path, {"render.width=" + std::to_string(kSize), "render.height=" + std::to_string(kSize),
                                      "render.samples=1"});
-  const ColorManagement color(spec.output.display, spec.output.view);
-  PreparedScene p = prepare_scene(std::move(spec), color);
-  p.trace.intersector = intersector;
-  const RayScene scene(device, p.field, p.glyphs.domain, p.shading, p.trace,
-                       p.glyphs.boundary ? &*p.glyphs.boundary : nullptr);
-  return render_image(scene, p.glyphs.domain, p.camera, p.shading, p.spec.render);
+  const ColorManagement color("", "");
+  const std::unique_ptr<PreparedScene> p = prepare_scene(std::move(spec), color);
+  p->trace.intersector = intersector;
+  const RayScene scene(device, p->field, p->trace, p->context);
+  return render_image(scene, p->camera, p->shading, p->render);
 }
 
 void print(const Row& row, double reference) {

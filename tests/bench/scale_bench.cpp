@@ -63,12 +63,12 @@ int main(int argc, char** argv) {
   camera.look_at = Vec3::Zero();
   camera.fov_degrees = 34;
   ShadingSpec shading;
-  shading.box = false;
   RenderSettings render;
   render.width = render.height = 1000;
   render.samples = 1;
   TraceSettings trace;
   trace.min_step = 1e-6 * domain.diagonal();
+  render.shadow_offset = 1e-5 * domain.diagonal();
 
   std::printf("%9s %8s %10s %10s %10s %10s %9s %9s %9s\n", "sources", "build_s", "bytes/src", "bytes/src",
               "primary", "shadow", "spans/ray", "evals/ray", "render_s");
@@ -82,11 +82,11 @@ int main(int argc, char** argv) {
     const double rss_before = resident_bytes();
     const auto t0 = Clock::now();
     const BlobField field = lattice_of_glyphs(n);
-    const RayScene scene(device, field, domain, shading, trace);
+    const RayScene scene(device, field, trace);
     const double build = seconds_since(t0);
     const double build_bytes = (peak_resident_bytes() - rss_before) / double(field.sources.size());
 
-    const RenderOutput full = render_image(scene, domain, camera, shading, render);
+    const RenderOutput full = render_image(scene, camera, shading, render);
     const double total_bytes = (peak_resident_bytes() - rss_before) / double(field.sources.size());
     const double rays = double(std::max<std::uint64_t>(1, full.stats.field_rays));
     std::printf("%9zu %8.2f %10.0f %10.0f %10.2f %10.2f %9.1f %9.1f %9.2f\n", field.sources.size(), build,

@@ -55,7 +55,7 @@ TEST(PlaceSources, EquallySpacedAndCentred) {
   // 1.0) with 0.025 left over at each end.
   const Trajectory t = polyline({Vec3(0, 0, 0), Vec3(0.1, 0, 0), Vec3(0.55, 0, 0),
                                  Vec3(0.6, 0, 0), Vec3(1.05, 0, 0)});
-  const std::vector<Vec3> c = centres(place_sources(f, t, 0.2, {}, ColorScalar::lambda3));
+  const std::vector<Vec3> c = centres(place_sources(f, t, 0.2, ColorScalar::lambda3));
   ASSERT_EQ(c.size(), 6u);
   for (std::size_t i = 0; i < c.size(); ++i)
     EXPECT_LE((c[i] - Vec3(0.025 + 0.2 * static_cast<double>(i), 0, 0)).norm(), 1e-12) << i;
@@ -64,7 +64,7 @@ TEST(PlaceSources, EquallySpacedAndCentred) {
 TEST(PlaceSources, WholeNumberOfSpacingsReachesBothEnds) {
   const ConstantField f;
   const Trajectory t = polyline({Vec3(0, 0, 0), Vec3(0.3, 0, 0), Vec3(1.0, 0, 0)});
-  const std::vector<Vec3> c = centres(place_sources(f, t, 0.1, {}, ColorScalar::lambda3));
+  const std::vector<Vec3> c = centres(place_sources(f, t, 0.1, ColorScalar::lambda3));
   ASSERT_EQ(c.size(), 11u);  // 1.0 / 0.1 is 9.999… in floating point
   EXPECT_LE((c.front() - t.points.front()).norm(), 1e-12);
   EXPECT_LE((c.back() - t.points.back()).norm(), 1e-12);
@@ -73,7 +73,7 @@ TEST(PlaceSources, WholeNumberOfSpacingsReachesBothEnds) {
 TEST(PlaceSources, FollowsArcLengthAroundCorners) {
   const ConstantField f;
   const Trajectory t = polyline({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0)});
-  const std::vector<Vec3> c = centres(place_sources(f, t, 0.5, {}, ColorScalar::lambda3));
+  const std::vector<Vec3> c = centres(place_sources(f, t, 0.5, ColorScalar::lambda3));
   const std::vector<Vec3> expected{Vec3(0, 0, 0), Vec3(0.5, 0, 0), Vec3(1, 0, 0),
                                    Vec3(1, 0.5, 0), Vec3(1, 1, 0)};
   ASSERT_EQ(c.size(), expected.size());
@@ -82,14 +82,14 @@ TEST(PlaceSources, FollowsArcLengthAroundCorners) {
 
 TEST(PlaceSources, DegenerateTrajectories) {
   ConstantField f;
-  EXPECT_TRUE(place_sources(f, Trajectory{}, 0.1, {}, ColorScalar::lambda3).empty());
+  EXPECT_TRUE(place_sources(f, Trajectory{}, 0.1, ColorScalar::lambda3).empty());
   const std::vector<Vec3> one =
-      centres(place_sources(f, polyline({Vec3(1, 2, 3)}), 0.1, {}, ColorScalar::lambda3));
+      centres(place_sources(f, polyline({Vec3(1, 2, 3)}), 0.1, ColorScalar::lambda3));
   ASSERT_EQ(one.size(), 1u);
   EXPECT_EQ(one[0], Vec3(1, 2, 3));
   // Shorter than the spacing: one source, in the middle.
   const std::vector<Vec3> mid = centres(
-      place_sources(f, polyline({Vec3(0, 0, 0), Vec3(0, 0.04, 0)}), 0.1, {}, ColorScalar::lambda3));
+      place_sources(f, polyline({Vec3(0, 0, 0), Vec3(0, 0.04, 0)}), 0.1, ColorScalar::lambda3));
   ASSERT_EQ(mid.size(), 1u);
   EXPECT_LE((mid[0] - Vec3(0, 0.02, 0)).norm(), 1e-15);
 }
@@ -98,7 +98,7 @@ TEST(PlaceSources, SkipsPointsOutsideField) {
   ConstantField f;
   f.box = {Vec3(-1, -1, -1), Vec3(0.5, 1, 1)};
   const Trajectory t = polyline({Vec3(0, 0, 0), Vec3(1, 0, 0)});
-  const std::vector<Vec3> c = centres(place_sources(f, t, 0.25, {}, ColorScalar::lambda3));
+  const std::vector<Vec3> c = centres(place_sources(f, t, 0.25, ColorScalar::lambda3));
   ASSERT_EQ(c.size(), 3u);  // 0, 0.25, 0.5 inside; 0.75, 1 outside
   for (const Vec3& p : c) EXPECT_TRUE(f.box.contains(p));
 }
@@ -106,8 +106,8 @@ TEST(PlaceSources, SkipsPointsOutsideField) {
 TEST(PlaceSources, RejectsBadSpacing) {
   const ConstantField f;
   const Trajectory t = polyline({Vec3(0, 0, 0), Vec3(1, 0, 0)});
-  EXPECT_THROW(place_sources(f, t, 0.0, {}, ColorScalar::lambda3), std::invalid_argument);
-  EXPECT_THROW(place_sources(f, t, -1.0, {}, ColorScalar::lambda3), std::invalid_argument);
+  EXPECT_THROW(place_sources(f, t, 0.0, ColorScalar::lambda3), std::invalid_argument);
+  EXPECT_THROW(place_sources(f, t, -1.0, ColorScalar::lambda3), std::invalid_argument);
 }
 
 TEST(MapRadii, EachMapping) {
@@ -195,7 +195,7 @@ GlyphPipelineSpec point_load_scene() {
   grid.edge_u = Vec3(1.2, 0, 0);
   grid.edge_v = Vec3(0, 1.2, 0);
   grid.n = grid.m = 3;
-  spec.seed_grids.push_back(grid);
+  spec.seeds.grids.push_back(grid);
   spec.trajectory.family = EigenFamily::minor;
   spec.trajectory.step = 0.02;
   spec.trajectory.max_length = 1.0;
@@ -206,12 +206,12 @@ GlyphPipelineSpec point_load_scene() {
 TEST(GlyphPipeline, AutomaticLengthsFollowTheDataSize) {
   GlyphPipelineSpec spec = point_load_scene();
   spec.data.point_load.bounds = Box3{Vec3(-2, -2, -2), Vec3(2, 2, 2)};
-  spec.seed_grids.clear();
-  spec.seed_points = {Vec3(0, 0, 0)};  // on the axis: a straight trajectory
-  spec.trajectory.step = 0.0;
-  spec.trajectory.max_length = 0.0;
-  spec.spacing = 0.0;
-  const GlyphScene scene = build_glyph_scene(spec);
+  spec.seeds.grids.clear();
+  spec.seeds.points = {Vec3(0, 0, 0)};  // on the axis: a straight trajectory
+  spec.trajectory.step.reset();
+  spec.trajectory.max_length.reset();
+  spec.spacing.reset();
+  const GlyphScene scene = build_glyph_scene(spec, 0.5);
   const double diagonal = spec.data.point_load.bounds.diagonal();
   ASSERT_GE(scene.sources.size(), 3u);
   for (std::size_t i = 1; i < scene.sources.size(); ++i)
@@ -223,7 +223,7 @@ TEST(GlyphPipeline, AutomaticLengthsFollowTheDataSize) {
 
 TEST(GlyphPipeline, PointLoadAlongTrajectories) {
   const GlyphPipelineSpec spec = point_load_scene();
-  const GlyphScene scene = build_glyph_scene(spec);
+  const GlyphScene scene = build_glyph_scene(spec, 0.5);
   EXPECT_EQ(scene.domain.lo, spec.data.point_load.bounds.lo);
   EXPECT_EQ(scene.domain.hi, spec.data.point_load.bounds.hi);
   ASSERT_EQ(scene.trajectories.size(), 9u);
@@ -235,7 +235,7 @@ TEST(GlyphPipeline, PointLoadAlongTrajectories) {
   std::size_t expected_sources = 0;
   for (const Trajectory& t : scene.trajectories) {
     EXPECT_GT(t.points.size(), 10u);  // minor lines are well defined here
-    expected_sources += static_cast<std::size_t>(std::floor(t.length() / spec.spacing + 1e-9)) + 1;
+    expected_sources += static_cast<std::size_t>(std::floor(t.length() / *spec.spacing + 1e-9)) + 1;
   }
   EXPECT_EQ(scene.sources.size(), expected_sources);
   for (const GlyphSource& s : scene.sources) {
@@ -243,7 +243,7 @@ TEST(GlyphPipeline, PointLoadAlongTrajectories) {
     EXPECT_LT(s.scalar, 0.0);  // λ3 is compressive under a downward load
   }
   // Deterministic: a second run gives identical output.
-  const GlyphScene again = build_glyph_scene(spec);
+  const GlyphScene again = build_glyph_scene(spec, 0.5);
   ASSERT_EQ(again.sources.size(), scene.sources.size());
   for (std::size_t i = 0; i < scene.sources.size(); ++i)
     EXPECT_EQ(again.sources[i].centre, scene.sources[i].centre);
@@ -252,14 +252,14 @@ TEST(GlyphPipeline, PointLoadAlongTrajectories) {
 TEST(GlyphPipeline, AtSeeds) {
   GlyphPipelineSpec spec = point_load_scene();
   spec.placement = SourcePlacement::at_seeds;
-  spec.seed_points = {Vec3(0.1, 0.2, -0.3), Vec3(5, 5, 5)};  // the second is outside
-  const GlyphScene scene = build_glyph_scene(spec);
+  spec.seeds.points = {Vec3(0.1, 0.2, -0.3), Vec3(5, 5, 5)};  // the second is outside
+  const GlyphScene scene = build_glyph_scene(spec, 0.5);
   EXPECT_TRUE(scene.trajectories.empty());
   ASSERT_EQ(scene.sources.size(), 1u + 9u);
   EXPECT_EQ(scene.sources[0].centre, Vec3(0.1, 0.2, -0.3));  // explicit points first
   const PointLoadField f(spec.data.point_load);
   const GlyphSource expected =
-      make_source(Vec3(0.1, 0.2, -0.3), f.stress(Vec3(0.1, 0.2, -0.3)), spec.mapping, spec.color);
+      make_source(Vec3(0.1, 0.2, -0.3), f.stress(Vec3(0.1, 0.2, -0.3)), scene.values.mapping, spec.color);
   EXPECT_LE((scene.sources[0].radii - expected.radii).norm(), 1e-15);
   EXPECT_EQ(scene.sources[0].scalar, expected.scalar);
 }
@@ -267,9 +267,9 @@ TEST(GlyphPipeline, AtSeeds) {
 TEST(GlyphPipeline, SampledGridFollowsAnalyticField) {
   GlyphPipelineSpec spec = point_load_scene();
   spec.trajectory.max_length = 0.5;
-  const GlyphScene analytic = build_glyph_scene(spec);
+  const GlyphScene analytic = build_glyph_scene(spec, 0.5);
   spec.data.sample_grid = {41, 41, 41};
-  const GlyphScene gridded = build_glyph_scene(spec);
+  const GlyphScene gridded = build_glyph_scene(spec, 0.5);
   ASSERT_EQ(gridded.trajectories.size(), analytic.trajectories.size());
   ASSERT_EQ(gridded.sources.size(), analytic.sources.size());
   double worst = 0, worst_radius = 0;

@@ -159,13 +159,13 @@ TEST(SphereAgainstExact, DenseBlendedHyperstreamsurface) {
   grid.edge_u = Vec3(0.9, 0, 0);
   grid.edge_v = Vec3(0, 0.9, 0);
   grid.n = grid.m = 7;
-  spec.seed_grids.push_back(grid);
+  spec.seeds.grids.push_back(grid);
   spec.trajectory.family = EigenFamily::minor;
   spec.spacing = 0.02;
-  spec.mapping.mapping = RadiusMapping::normalized;
-  spec.mapping.scale = 0.13;
-  spec.mapping.floor = 0.05;
-  const GlyphScene glyphs = build_glyph_scene(spec);
+  spec.size.mapping = RadiusMapping::normalized;
+  spec.size.scale = 0.13;
+  spec.size.floor = 0.05;
+  const GlyphScene glyphs = build_glyph_scene(spec, 0.5);
   ASSERT_GT(glyphs.sources.size(), 3000u);
   BlobField field = make_blob_field(glyphs.sources, std::vector<std::array<float, 3>>(glyphs.sources.size(), {1, 1, 1}),
                                     1.0, KernelKind::quartic, Blend::sum, 0.5);

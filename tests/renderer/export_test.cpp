@@ -14,6 +14,7 @@
 #include <fstream>
 
 #include "renderer/app/export_job.h"
+#include "renderer/app/prepared_scene.h"
 #include "renderer/scene/scene_spec.h"
 #include "renderer/surface/kernel.h"
 
@@ -39,7 +40,8 @@ TEST(Export, SourcesAndTrajectoriesReadBackWithTheirArrays) {
   const std::vector<std::string> files = run_export_job({scene, {}, (dir / "out").string()});
   ASSERT_EQ(files.size(), 2u);
 
-  const GlyphScene expected = build_glyph_scene(load_scene(scene).pipeline);
+  const SceneSpec spec = load_scene(scene);
+  const GlyphScene expected = build_glyph_scene(spec.pipeline, glyph_extent(spec.surface));
   const auto lines = read_vtp(files[0]);
   EXPECT_EQ(lines->GetNumberOfLines(), 2);
   ASSERT_NE(lines->GetPointData()->GetArray("arc_length"), nullptr);

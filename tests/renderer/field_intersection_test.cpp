@@ -50,12 +50,6 @@ TraceSettings sphere_settings(double min_step) {
   return t;
 }
 
-ShadingSpec no_context_geometry() {
-  ShadingSpec s;
-  s.box = false;
-  return s;
-}
-
 class IsolatedGlyph : public ::testing::TestWithParam<KernelKind> {};
 
 TEST_P(IsolatedGlyph, SphereTracedHitIsTheExactEllipsoid) {
@@ -77,7 +71,7 @@ TEST_P(IsolatedGlyph, SphereTracedHitIsTheExactEllipsoid) {
     field.kernel = kernel;
     field.isovalue = C;
     field.sources.push_back(make_blob_source(centre, axes, radii, R, {1, 1, 1}));
-    const RayScene scene(device, field, Box3{}, no_context_geometry(), sphere_settings(1e-6 * scene_size));
+    const RayScene scene(device, field, sphere_settings(1e-6 * scene_size));
     const Vec3 semi_axes = R * kernel_level_radius(kernel, C) * radii;
 
     for (int i = 0; i < 500; ++i, ++rays) {
@@ -116,17 +110,17 @@ TEST(Blending, TwoNearbySourcesBlendWhereEachAloneWouldMiss) {
   for (int i = 0; i < 2; ++i) {
     BlobField alone;
     alone.sources.push_back(pair.sources[std::size_t(i)]);
-    const RayScene scene(device, alone, Box3{}, no_context_geometry(), TraceSettings{});
+    const RayScene scene(device, alone, TraceSettings{});
     EXPECT_LT(trace(scene, o, d), 0.0) << "source " << i << " alone";
   }
-  const RayScene blended(device, pair, Box3{}, no_context_geometry(), TraceSettings{});
+  const RayScene blended(device, pair, TraceSettings{});
   const double t = trace(blended, o, d);
   ASSERT_GT(t, 0.0);
   EXPECT_NEAR(t, 5.0 - blob_pair_crossing_y(), 1e-9);
 
   // The same pair under blend = "max" is the plain union: the ray misses.
   pair.blend = Blend::max;
-  const RayScene unioned(device, pair, Box3{}, no_context_geometry(), TraceSettings{});
+  const RayScene unioned(device, pair, TraceSettings{});
   EXPECT_LT(trace(unioned, o, d), 0.0);
 }
 
@@ -176,7 +170,7 @@ TEST(Packets, EachLaneAnswersAsItsRayAlone) {
   for (Intersector method : {Intersector::sphere, Intersector::exact}) {
     TraceSettings settings;
     settings.intersector = method;
-    const RayScene scene(device, field, Box3{}, no_context_geometry(), settings);
+    const RayScene scene(device, field, settings);
     int hits = 0, occluded = 0;
     for (int packet = 0; packet < 300; ++packet) {
       // Alternate coherent packets (a small cone from one point) and

@@ -33,9 +33,10 @@ TEST(RayScene, BoxEdgesAreSeenButCastNoShadow) {
   const EmbreeDevice device;
   const BlobField pair = blob_pair();  // near the origin, well inside the box
   const Box3 domain{Vec3(-2, -2, -2), Vec3(2, 2, 2)};
-  ShadingSpec shading;
-  shading.box = true;
-  const RayScene scene(device, pair, domain, shading, TraceSettings{});
+  DrawnContext context;
+  context.box = domain;
+  context.box_radius = domain.diagonal() / 500.0;
+  const RayScene scene(device, pair, TraceSettings{}, context);
   ASSERT_NE(scene.box_id(), RTC_INVALID_GEOMETRY_ID);
 
   // Straight down onto the top front edge (y = −2, z = 2), from above it.

@@ -40,18 +40,24 @@ TEST_F(SceneFile, MinimalSceneGetsDocumentedDefaults) {
   EXPECT_DOUBLE_EQ(spec.surface.isovalue, 0.5);
   EXPECT_DOUBLE_EQ(spec.surface.influence_radius, 1.0);
   EXPECT_EQ(spec.pipeline.color, ColorScalar::lambda3);
-  EXPECT_EQ(spec.pipeline.mapping.mapping, RadiusMapping::linear);
+  EXPECT_EQ(spec.pipeline.size.mapping, RadiusMapping::sqrt);
   EXPECT_EQ(spec.render.width, 800);
-  EXPECT_EQ(spec.output.file, "MinimalSceneGetsDocumentedDefaults.png");
-  // Sizes that depend on the data are left automatic (0) until it is read.
-  EXPECT_EQ(spec.pipeline.spacing, 0.0);
-  EXPECT_EQ(spec.pipeline.trajectory.step, 0.0);
-  EXPECT_FALSE(spec.camera_position.has_value());
-  const CameraSpec camera = resolve_camera(spec, spec.pipeline.data.point_load.bounds);
-  EXPECT_EQ(camera.look_at, Vec3::Zero());
-  EXPECT_TRUE(spec.shading.box);
-  EXPECT_FALSE(spec.shading.shell);
-  EXPECT_EQ(spec.pipeline.seed_points.size(), 1u);
+  EXPECT_EQ(spec.pipeline.data.kind, DataKind::point_load);
+  // Values that depend on the data are automatic until it is read.
+  EXPECT_FALSE(spec.pipeline.spacing);
+  EXPECT_FALSE(spec.pipeline.trajectory.step);
+  EXPECT_FALSE(spec.pipeline.size.scale);
+  EXPECT_FALSE(spec.pipeline.size.floor);
+  EXPECT_FALSE(spec.pipeline.size.ceiling);
+  EXPECT_FALSE(spec.camera.position);
+  EXPECT_FALSE(spec.camera.look_at);
+  EXPECT_FALSE(spec.context.box);
+  EXPECT_FALSE(spec.context.shell);
+  EXPECT_FALSE(spec.render.intersector);
+  EXPECT_FALSE(spec.output.file);
+  EXPECT_EQ(spec.camera.projection, Projection::perspective);
+  EXPECT_FALSE(spec.camera.view);
+  EXPECT_EQ(spec.pipeline.seeds.points.size(), 1u);
 }
 
 TEST_F(SceneFile, ReadsEverySection) {
@@ -95,25 +101,28 @@ file = "x.exr"
 )"));
   EXPECT_EQ(spec.pipeline.data.point_load.bounds.hi, Vec3(2, 4, 0));
   EXPECT_EQ(spec.pipeline.data.sample_grid, (std::array<int, 3>{5, 6, 7}));
-  EXPECT_EQ(spec.pipeline.seed_grids.at(0).n, 7);
+  EXPECT_EQ(spec.pipeline.seeds.grids.at(0).n, 7);
   EXPECT_EQ(spec.pipeline.trajectory.family, EigenFamily::medium);
-  EXPECT_EQ(spec.pipeline.mapping.mapping, RadiusMapping::sqrt);
+  EXPECT_EQ(spec.pipeline.trajectory.step.value(), 0.005);
+  EXPECT_EQ(spec.pipeline.spacing.value(), 0.02);
+  EXPECT_EQ(spec.pipeline.size.ceiling.value(), 0.3);
+  EXPECT_EQ(spec.pipeline.size.mapping, RadiusMapping::sqrt);
   EXPECT_EQ(spec.pipeline.color, ColorScalar::von_mises);
   EXPECT_EQ(spec.surface.kernel, KernelKind::quartic);
   EXPECT_EQ(spec.surface.blend, Blend::max);
   EXPECT_EQ(spec.color.range.value()[1], 2.0);
   EXPECT_FALSE(spec.shading.shadows);
   EXPECT_NEAR(spec.shading.background[0], 128 / 255.0, 1e-6);
-  EXPECT_EQ(spec.output.file, "x.exr");
+  EXPECT_EQ(spec.output.file.value(), "x.exr");
 }
 
 TEST_F(SceneFile, OverridesReplaceAndAddKeys) {
   const SceneSpec spec = load_scene(write(minimal), {"render.width=123", "glyphs.mapping=sqrt",
                                                      "camera.position=[1, 2, 3]", "output.file=a b.png"});
   EXPECT_EQ(spec.render.width, 123);
-  EXPECT_EQ(spec.pipeline.mapping.mapping, RadiusMapping::sqrt);
-  EXPECT_EQ(spec.camera_position.value(), Vec3(1, 2, 3));
-  EXPECT_EQ(spec.output.file, "a b.png");
+  EXPECT_EQ(spec.pipeline.size.mapping, RadiusMapping::sqrt);
+  EXPECT_EQ(spec.camera.position.value(), Vec3(1, 2, 3));
+  EXPECT_EQ(spec.output.file.value(), "a b.png");
 }
 
 TEST_F(SceneFile, WrongTypeNamesFileLineColumnAndKey) {
@@ -161,14 +170,63 @@ TEST_F(SceneFile, BadOverrideNamesTheOverride) {
   EXPECT_NE(error_of(minimal, {"nonsense"}).find("expected key.path=value"), std::string::npos);
 }
 
-TEST_F(SceneFile, IntersectorIsExactWhereItAppliesElseSphere) {
-  EXPECT_EQ(load_scene(write(minimal)).intersector, Intersector::exact);
+TEST_F(SceneFile, ExactIntersectorOnlyWhereItApplies) {
+  EXPECT_EQ(load_scene(write(minimal), {"render.intersector=sphere"}).render.intersector, Intersector::sphere);
   const std::string blinn = std::string(minimal) + "[surface]\nkernel = \"blinn\"\n";
-  EXPECT_EQ(load_scene(write(blinn)).intersector, Intersector::sphere);
-  EXPECT_EQ(load_scene(write(blinn + "blend = \"max\"\n")).intersector, Intersector::exact);
-  EXPECT_EQ(load_scene(write(minimal), {"render.intersector=sphere"}).intersector, Intersector::sphere);
+  EXPECT_EQ(error_of(blinn + "blend = \"max\"\n[render]\nintersector = \"exact\"\n"), "");
   EXPECT_NE(error_of(blinn + "[render]\nintersector = \"exact\"\n").find("render.intersector = \"exact\" needs"),
             std::string::npos);
+}
+
+TEST_F(SceneFile, DataKindFollowsTheFile) {
+  const std::string data = std::string(HSB_SOURCE_DIR) + "/scenes/data/cylinder_stress_coarse.vtu";
+  const SceneSpec spec = load_scene(write("[data]\nfile = \"" + data + "\"\n"));
+  EXPECT_EQ(spec.pipeline.data.kind, DataKind::vtk_file);
+  EXPECT_EQ(spec.pipeline.data.file.path, data);
+  // Keys of the other kind are mistakes, not silently ignored.
+  EXPECT_NE(error_of("[data]\nfile = \"" + data + "\"\nbounds = [0, 1, 0, 1, 0, 1]\n")
+                .find("data.bounds applies only to data.kind = \"point_load\""),
+            std::string::npos);
+  EXPECT_NE(error_of("[data]\nkind = \"point_load\"\nfile = \"" + data + "\"\n")
+                .find("data.file applies only to data.kind = \"vtk\""),
+            std::string::npos);
+  EXPECT_NE(error_of("[data]\nfile = \"results.csv\"\n").find("must be a .vtk, .vti, .vtu, .vts or .vtr file"),
+            std::string::npos);
+}
+
+TEST_F(SceneFile, ADataFileIsASceneNamingOnlyIt) {
+  const std::string data = std::string(HSB_SOURCE_DIR) + "/scenes/data/cylinder_stress_coarse.vtu";
+  ASSERT_TRUE(is_data_file(data));
+  EXPECT_FALSE(is_data_file("scene.toml"));
+  const SceneSpec spec = load_scene_or_data_file(data, {"render.width=64"});
+  EXPECT_EQ(spec.pipeline.data.kind, DataKind::vtk_file);
+  EXPECT_EQ(spec.pipeline.data.file.path, data);
+  EXPECT_EQ(spec.render.width, 64);
+  EXPECT_EQ(spec.path, data);
+}
+
+TEST_F(SceneFile, CameraViewsAndProjection) {
+  const SceneSpec named = load_scene(write(std::string(minimal) + "[camera]\nview = \"top\"\nprojection = \"orthographic\"\n"));
+  EXPECT_EQ(named.camera.view.value(), Vec3(0, 0, 1));
+  EXPECT_EQ(named.camera.projection, Projection::orthographic);
+  const SceneSpec direction = load_scene(write(std::string(minimal) + "[camera]\nview = [0, -2, 0]\n"));
+  EXPECT_EQ(direction.camera.view.value(), Vec3(0, -1, 0));
+  EXPECT_NE(error_of(std::string(minimal) + "[camera]\nview = \"side\"\n").find("camera.view must be one of \"iso\""),
+            std::string::npos);
+  EXPECT_NE(error_of(std::string(minimal) + "[camera]\nview = [0, 0, 0]\n").find("camera.view must not be zero"),
+            std::string::npos);
+  EXPECT_NE(error_of(std::string(minimal) + "[camera]\nview = \"top\"\nup = [0, 0, 1]\n").find("parallel"),
+            std::string::npos);
+}
+
+TEST_F(SceneFile, OpenIntervalsAreShownOpen) {
+  const std::string e = error_of(std::string(minimal) + "[surface]\nisovalue = 0\n");
+  EXPECT_EQ(e, path_ + ":4:12: surface.isovalue must be in (0, 1], got 0");
+}
+
+TEST_F(SceneFile, UnknownKeyFromTheCommandLineNamesTheArgument) {
+  const std::string e = error_of(minimal, {"glyphs.spacin=0.1"});
+  EXPECT_EQ(e.rfind("--set glyphs.spacin=0.1: unknown key glyphs.spacin", 0), 0u) << e;
 }
 
 TEST_F(SceneFile, MissingDataFileAndBadImageTypeAreLocated) {
@@ -183,7 +241,7 @@ TEST_F(SceneFile, MissingDataFileAndBadImageTypeAreLocated) {
 
 TEST_F(SceneFile, SeedsOutsideTheDataGiveAWarning) {
   const SceneSpec spec = load_scene(write("[seeds]\npoints = [[5, 5, 5]]\n"));
-  const GlyphScene glyphs = build_glyph_scene(spec.pipeline);
+  const GlyphScene glyphs = build_glyph_scene(spec.pipeline, 0.5);
   EXPECT_TRUE(glyphs.sources.empty());
   ASSERT_EQ(glyphs.warnings.size(), 1u);
   EXPECT_NE(glyphs.warnings[0].find("no glyph sources"), std::string::npos);
@@ -196,7 +254,7 @@ TEST_F(SceneFile, MissingFile) { EXPECT_THROW(load_scene("/nonexistent/scene.tom
 TEST_F(SceneFile, OnlyADataPathIsEnoughForAPicture) {
   const std::string data = std::string(HSB_SOURCE_DIR) + "/scenes/data/cylinder_stress_coarse.vtu";
   const SceneSpec spec = load_scene(write("[data]\nkind = \"vtk\"\nfile = \"" + data + "\"\n"));
-  const GlyphScene glyphs = build_glyph_scene(spec.pipeline);
+  const GlyphScene glyphs = build_glyph_scene(spec.pipeline, 0.5);
   EXPECT_GE(glyphs.trajectories.size(), 9u);  // 5×5 seeds on the middle cross-section, some outside the round body
   EXPECT_GT(glyphs.sources.size(), 100u);
   for (const Trajectory& t : glyphs.trajectories)
@@ -206,7 +264,7 @@ TEST_F(SceneFile, OnlyADataPathIsEnoughForAPicture) {
 TEST_F(SceneFile, SeedsInBoundsFractions) {
   const SceneSpec spec = load_scene(write("[data]\nbounds = [0, 2, 0, 4, 0, 8]\n[seeds]\nframe = \"bounds\"\n"
                                           "points = [[0.5, 0.25, 0.5]]\n[glyphs]\nplacement = \"seeds\"\n"));
-  const GlyphScene glyphs = build_glyph_scene(spec.pipeline);
+  const GlyphScene glyphs = build_glyph_scene(spec.pipeline, 0.5);
   ASSERT_EQ(glyphs.sources.size(), 1u);
   EXPECT_LT((glyphs.sources[0].centre - Vec3(1, 1, 4)).norm(), 1e-12);
 }

@@ -1,0 +1,87 @@
+#include "field/automatic_values.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hsb {
+namespace {
+
+// The reference glyph size as a fraction of D, and the percentile of the
+// mapped magnitudes that is drawn at that size.
+constexpr double kMagnitudeGlyph = 1.0 / 50.0;
+constexpr double kFixedGlyph = 1.0 / 100.0;
+constexpr double kReferencePercentile = 0.9;
+constexpr double kCeilingOverReference = 3.0;
+constexpr double kFloorUnderReference = 1.0 / 20.0;
+
+bool maps_magnitude(RadiusMapping mapping) {
+  return mapping == RadiusMapping::linear || mapping == RadiusMapping::sqrt;
+}
+
+// The largest radius a glyph gets at scale 1, before floor and ceiling.
+double unit_scale_largest_radius(const Vec3& eigenvalues, RadiusMapping mapping) {
+  GlyphMapping unit;
+  unit.mapping = mapping;
+  unit.scale = 1.0;
+  unit.floor = 0.0;
+  return map_radii(eigenvalues, unit).maxCoeff();
+}
+
+}  // namespace
+
+double automatic_step(const Box3& domain) { return domain.diagonal() / 400.0; }
+double automatic_max_length(const Box3& domain) { return 2.0 * domain.diagonal(); }
+double automatic_spacing(const Box3& domain, RadiusMapping mapping) {
+  return domain.diagonal() / (maps_magnitude(mapping) ? 40.0 : 25.0);
+}
+
+SeedSpec automatic_seeds(const Box3& domain) {
+  Eigen::Index longest = 0;
+  domain.size().maxCoeff(&longest);
+  const Eigen::Index u = (longest + 1) % 3, v = (longest + 2) % 3;
+  SeedGridSpec grid;
+  grid.corner = Vec3::Zero();
+  grid.corner[longest] = 0.5;
+  grid.edge_u = Vec3::Unit(u);
+  grid.edge_v = Vec3::Unit(v);
+  grid.n = grid.m = 5;
+  SeedSpec seeds;
+  seeds.grids.push_back(grid);
+  seeds.frame = SeedFrame::bounds;
+  return seeds;
+}
+
+GlyphMapping automatic_glyph_mapping(const GlyphSizeSpec& spec, const std::vector<Vec3>& eigenvalues,
+                                     const Box3& domain, double glyph_extent) {
+  const bool by_magnitude = maps_magnitude(spec.mapping);
+  const double reference_size = domain.diagonal() * (by_magnitude ? kMagnitudeGlyph : kFixedGlyph);
+
+  double reference_radius = 1.0;  // at scale 1
+  if (by_magnitude) {
+    std::vector<double> radii;
+    radii.reserve(eigenvalues.size());
+    for (const Vec3& l : eigenvalues) {
+      const double r = unit_scale_largest_radius(l, spec.mapping);
+      if (r > 0.0 && std::isfinite(r)) radii.push_back(r);
+    }
+    if (!radii.empty()) {
+      const auto k = std::size_t(kReferencePercentile * double(radii.size() - 1) + 0.5);
+      std::nth_element(radii.begin(), radii.begin() + std::ptrdiff_t(k), radii.end());
+      reference_radius = radii[k];
+    }
+  }
+
+  GlyphMapping m;
+  m.mapping = spec.mapping;
+  m.scale = spec.scale.value_or(reference_size / (glyph_extent * reference_radius));
+  // Floor and ceiling follow the reference glyph at the scale in use, so
+  // a pinned scale keeps its picture: in radii, the reference is this.
+  const double reference = m.scale * reference_radius;
+  m.ceiling = spec.ceiling.value_or(kCeilingOverReference * reference);
+  m.floor = spec.floor.value_or(kFloorUnderReference * std::min(reference, m.ceiling));
+  // A pinned floor above the automatic ceiling wins: the user asked for it.
+  if (!spec.ceiling) m.ceiling = std::max(m.ceiling, m.floor);
+  return m;
+}
+
+}  // namespace hsb

@@ -1,0 +1,53 @@
+#pragma once
+// The rules for every field-side value a scene may leave automatic. Each is
+// a length in the data's own units, taken from the data set's size D (the
+// diagonal of its bounding box) or from the tensors themselves, so that a
+// data set in millimetres and pascals gets the same picture as one in unit
+// cubes. scenes/README.md states the same rules for users.
+
+#include <vector>
+
+#include "field/glyph_pipeline.h"
+
+namespace hsb {
+
+// RK4 step: D/400.
+double automatic_step(const Box3& domain);
+// Trajectory length in each direction from the seed: 2 D (to the boundary).
+double automatic_max_length(const Box3& domain);
+// Arc length between sources: D/40 for the magnitude mappings, where the
+// glyph sizes vary and large ones blend; D/25 for the fixed-size ones, so
+// their glyphs stand apart as discrete ellipsoids until the spacing is
+// set below about D/40.
+double automatic_spacing(const Box3& domain, RadiusMapping mapping);
+// A 5×5 grid on the cross-section through the middle of the bounding box,
+// across its longest axis (in bounds fractions): trajectories along the
+// body of a bar, beam or rail.
+SeedSpec automatic_seeds(const Box3& domain);
+
+// The glyph size, for every mapping. Sizes are isolated glyphs' largest
+// semi-axes, glyph_extent times the largest radius (see build_glyph_scene).
+//  - The reference glyph is G = D/50 for the magnitude mappings (linear,
+//    sqrt), D/100 for the fixed-size ones (normalized, constant).
+//  - scale: a magnitude mapping's reference is the 90th percentile, over
+//    all sources, of the mapped largest eigenvalue magnitude: that glyph
+//    has size G. At the automatic spacing glyphs of about half that
+//    magnitude or more overlap their neighbours along a trajectory and
+//    blend; smaller ones stand apart. A fixed-size mapping's glyphs all
+//    have size G: separate at the automatic spacing, blended into a
+//    hyperstreamline once the spacing is below about D/40.
+//  - ceiling: no glyph larger than 3 times the reference (a singular
+//    point's neighbourhood would otherwise swallow the picture);
+//  - floor: no radius smaller than 1/20 of the reference's (or of the
+//    ceiling's, if that is smaller): a flat glyph or a needle stays wide
+//    enough to see, a pixel or two, and the glyphs of small stresses
+//    shrink to dots, as in the paper's Figure 5.
+// With a pinned scale, floor and ceiling follow the reference glyph at
+// that scale.
+// A percentile rather than the maximum, because stress fields have
+// singular points whose few extreme values would shrink every other glyph
+// to nothing. `eigenvalues` are the sources' (zero tensors are ignored).
+GlyphMapping automatic_glyph_mapping(const GlyphSizeSpec& spec, const std::vector<Vec3>& eigenvalues,
+                                     const Box3& domain, double glyph_extent);
+
+}  // namespace hsb

@@ -1,0 +1,182 @@
+#include "renderer/render/camera_framing.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace hsb {
+namespace {
+
+struct NamedView {
+  const char* name;
+  Vec3 direction;  // from the scene towards the camera
+};
+
+const std::array<NamedView, 7>& views() {
+  static const std::array<NamedView, 7> table{{
+      {"iso", Vec3(1, -1, 1).normalized()},
+      {"front", Vec3(0, -1, 0)},
+      {"back", Vec3(0, 1, 0)},
+      {"left", Vec3(-1, 0, 0)},
+      {"right", Vec3(1, 0, 0)},
+      {"top", Vec3(0, 0, 1)},
+      {"bottom", Vec3(0, 0, -1)},
+  }};
+  return table;
+}
+
+std::array<Vec3, 8> corners(const Box3& b) {
+  std::array<Vec3, 8> c;
+  for (int i = 0; i < 8; ++i)
+    c[std::size_t(i)] = Vec3(i & 1 ? b.hi.x() : b.lo.x(), i & 2 ? b.hi.y() : b.lo.y(), i & 4 ? b.hi.z() : b.lo.z());
+  return c;
+}
+
+}  // namespace
+
+std::optional<Vec3> named_view(const std::string& name) {
+  for (const NamedView& v : views())
+    if (name == v.name) return v.direction;
+  return std::nullopt;
+}
+
+const char* const* view_names() {
+  static const char* const names[] = {"iso", "front", "back", "left", "right", "top", "bottom", nullptr};
+  return names;
+}
+
+Vec3 automatic_up(const Vec3& view) {
+  return std::fabs(view.normalized().z()) > 0.99 ? Vec3::UnitY() : Vec3::UnitZ();
+}
+
+Vec3 automatic_view(const Box3& data) {
+  const Vec3 size = data.size();
+  Eigen::Index longest = 0;
+  size.maxCoeff(&longest);
+  Vec3 rest = size;
+  rest[longest] = 0.0;
+  // A compact body from the front-right, 23° above: lower than "iso", so
+  // what stands on the top face is seen against the body, not the floor.
+  if (!(size[longest] > 2.0 * rest.maxCoeff())) return Vec3(0.95, -1.45, 0.75).normalized();
+  // Looking across the long axis: from −y when it is x, from +x when it
+  // is y; a tall body is seen from the front-right, not much from above.
+  switch (longest) {
+    case 0: return Vec3(0.35, -1.0, 0.6).normalized();
+    case 1: return Vec3(1.0, 0.35, 0.6).normalized();
+    default: return Vec3(1.0, -1.0, 0.35).normalized();
+  }
+}
+
+CameraSpec frame_camera(const CameraRequest& request, const Box3& framed, int width, int height,
+                        double reserved) {
+  // Something to frame even when nothing is drawn.
+  Box3 box = framed;
+  if (!(box.diagonal() > 0.0) || !box.lo.allFinite() || !box.hi.allFinite()) {
+    const Vec3 c = box.centre().allFinite() ? box.centre() : Vec3::Zero();
+    box = {c - Vec3::Constant(0.5), c + Vec3::Constant(0.5)};
+  }
+  CameraSpec camera;
+  camera.projection = request.projection;
+  camera.fov_degrees = request.fov_degrees;
+
+  Vec3 view = request.view.value_or(*named_view("iso")).normalized();
+  if (request.position) {
+    const Vec3 target = request.look_at.value_or(box.centre());
+    if ((*request.position - target).norm() > 0.0) view = (*request.position - target).normalized();
+  }
+  camera.up = request.up.value_or(automatic_up(view));
+  const Vec3 forward = -view;
+  const Vec3 right = forward.cross(camera.up).normalized();
+  const Vec3 up = right.cross(forward);
+  const std::array<Vec3, 8> points = corners(box);
+  // The free part of the picture: its aspect, and how far its centre lies
+  // left of the picture's, in half-widths.
+  const double free = std::clamp(1.0 - reserved, 0.6, 1.0);
+  const double aspect = free * double(width) / double(height);
+  const double offset = 1.0 - free;
+  const double shrink = std::max(0.05, 1.0 - 2.0 * request.margin);
+  const bool recentre = !request.look_at;
+  Vec3 target = request.look_at.value_or(box.centre());
+
+  if (camera.projection == Projection::orthographic) {
+    double x_lo = INFINITY, x_hi = -INFINITY, y_lo = INFINITY, y_hi = -INFINITY;
+    for (const Vec3& p : points) {
+      x_lo = std::min(x_lo, (p - target).dot(right)), x_hi = std::max(x_hi, (p - target).dot(right));
+      y_lo = std::min(y_lo, (p - target).dot(up)), y_hi = std::max(y_hi, (p - target).dot(up));
+    }
+    if (recentre) {
+      target += 0.5 * (x_lo + x_hi) * right + 0.5 * (y_lo + y_hi) * up;
+      const double half_x = 0.5 * (x_hi - x_lo), half_y = 0.5 * (y_hi - y_lo);
+      x_lo = -half_x, x_hi = half_x, y_lo = -half_y, y_hi = half_y;
+    }
+    const double half_x = std::max(-x_lo, x_hi), half_y = std::max(-y_lo, y_hi);
+    camera.height = request.height.value_or(2.0 * std::max(half_y, half_x / aspect) / shrink);
+    if (recentre) target += offset * 0.5 * camera.height * double(width) / double(height) * right;
+    camera.look_at = target;
+    // In front of everything: rays start on the plane through the position.
+    camera.position =
+        request.position.value_or(target - forward * (box.diagonal() + (target - box.centre()).norm()));
+    return camera;
+  }
+
+  camera.look_at = target;
+  if (request.position) {
+    camera.position = *request.position;
+    return camera;
+  }
+  // The free part of the picture, less the margin, as tangents of the
+  // angle from the view axis: x ∈ [x_lo, x_hi], y ∈ [−y_half, y_half].
+  const double tan_y_full = std::tan(0.5 * request.fov_degrees * M_PI / 180.0);
+  const double tan_x_full = tan_y_full * double(width) / double(height);
+  const double free_width = 2.0 * free * tan_x_full;
+  const double x_lo = -tan_x_full + request.margin * free_width;
+  const double x_hi = tan_x_full - 2.0 * offset * tan_x_full - request.margin * free_width;
+  const double y_half = tan_y_full * shrink;
+  const double clearance = 1e-3 * box.diagonal();
+
+  // Corners in the camera's frame about the target: r along `right`, u
+  // along `up`, f along `forward`; the camera stands at (P_r, P_u, P_f).
+  std::array<Vec3, 8> c;
+  for (std::size_t i = 0; i < 8; ++i) {
+    const Vec3 q = points[i] - target;
+    c[i] = Vec3(q.dot(right), q.dot(up), q.dot(forward));
+  }
+  double p_f = INFINITY;
+  for (const Vec3& corner : c) p_f = std::min(p_f, corner.z() - clearance);
+  double p_r = 0.0, p_u = 0.0;
+  if (recentre) {
+    // Corner i is seen at (c_r − P_r)/(c_f − P_f) ∈ [lo, hi]: linear in P.
+    // A P_r exists for every corner at once while, for all pairs i, j,
+    // c_r,i − hi (c_f,i − P_f) ≤ c_r,j − lo (c_f,j − P_f): a bound on P_f.
+    // The largest P_f fits the box as closely as the window allows; P_r
+    // and P_u then take the middle of what stays possible, centring it.
+    const auto closest = [&](int axis, double lo, double hi) {
+      double best = INFINITY;
+      for (const Vec3& i : c)
+        for (const Vec3& j : c) best = std::min(best, (j[axis] - i[axis] - lo * j.z() + hi * i.z()) / (hi - lo));
+      return best;
+    };
+    const auto middle = [&](int axis, double lo, double hi) {
+      double from = -INFINITY, to = INFINITY;
+      for (const Vec3& i : c) {
+        from = std::max(from, i[axis] - hi * (i.z() - p_f));
+        to = std::min(to, i[axis] - lo * (i.z() - p_f));
+      }
+      return 0.5 * (from + to);
+    };
+    p_f = std::min({p_f, closest(0, x_lo, x_hi), closest(1, -y_half, y_half)});
+    p_r = middle(0, x_lo, x_hi);
+    p_u = middle(1, -y_half, y_half);
+  } else {
+    // The view passes through the given look_at: only the distance is free.
+    for (const Vec3& corner : c) {
+      const double x = corner.x(), y = corner.y();
+      p_f = std::min({p_f, corner.z() - (x > 0.0 ? x / x_hi : x / x_lo), corner.z() - std::fabs(y) / y_half});
+    }
+  }
+  camera.position = target + p_r * right + p_u * up + p_f * forward;
+  camera.look_at = camera.position - p_f * forward;  // on the axis, level with the target
+  return camera;
+}
+
+}  // namespace hsb

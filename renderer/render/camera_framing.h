@@ -1,0 +1,56 @@
+#pragma once
+// Where the camera stands when a scene does not say: looking from a named
+// view at what is drawn, far enough that all of it fits the picture with a
+// margin, so nothing is cut off and the camera is outside everything.
+
+#include <optional>
+#include <string>
+
+#include "field/box3.h"
+#include "renderer/render/camera.h"
+
+namespace hsb {
+
+// What to fit in the picture.
+enum class FrameTarget {
+  drawn,   // the glyphs and the context drawn around them (box, boundary shell)
+  glyphs,  // the glyphs alone
+  data,    // the data set's bounds
+};
+
+// The scene's [camera]: what it leaves out is automatic.
+struct CameraRequest {
+  std::optional<Vec3> position, look_at, up;
+  // From the framed box's centre towards the camera (unit): a named view's
+  // direction or the scene's own. Automatic: automatic_view().
+  std::optional<Vec3> view;
+  Projection projection = Projection::perspective;
+  double fov_degrees = 30.0;
+  std::optional<double> height;  // orthographic view height
+  FrameTarget frame = FrameTarget::drawn;
+  double margin = 0.05;  // of the picture's height and width, on each side
+};
+
+// The direction of a named view ("front" looks along +y, "top" down −z,
+// "iso" from front-right-above, …); nullopt for an unknown name.
+std::optional<Vec3> named_view(const std::string& name);
+// The names, for error messages and the reference.
+const char* const* view_names();
+
+// `up`: +z, or +y when looking along z.
+Vec3 automatic_up(const Vec3& view);
+
+// For a compact body, from the front-right and 23° above (lower than
+// "iso"); for one at least twice as long as it is wide, from the side and
+// above, its length across the picture, the near end a little closer.
+Vec3 automatic_view(const Box3& data);
+
+// The camera for `request`, framing `box` in a width×height picture of
+// which the right `reserved` fraction holds a legend. Given position and
+// look_at win; whatever is missing is found so that the box's corners
+// project inside the margin of the free part (perspective: the distance
+// along the view; orthographic: the view height), centred in it.
+CameraSpec frame_camera(const CameraRequest& request, const Box3& box, int width, int height,
+                        double reserved = 0.0);
+
+}  // namespace hsb
