@@ -96,6 +96,9 @@ int main(int argc, char** argv) {
   info->add_option("inputs", info_inputs, "Scene files (.toml) or data files (.vtk .vti .vtu .vts .vtr)")
       ->required();
   info->add_option("--array", info_array, "Tensor array of a data file (default: its active tensors)");
+  std::vector<std::string> info_overrides;
+  info->add_option("--set", info_overrides, "Override a scene key, as for render (the values shown follow it)")
+      ->allow_extra_args(false);
   info->footer(
       "Everything printed is TOML: the description as comments, then the scene with every automatic\n"
       "value written out (hsb info x.vtu > x.toml gives a scene to edit). A data file stands for the\n"
@@ -151,9 +154,9 @@ int main(int argc, char** argv) {
 
   if (*info) {
     return for_each(info_inputs, "inputs", [&](const std::string& input) {
-      std::vector<std::string> info_overrides;
-      if (!info_array.empty()) info_overrides.push_back("data.array=" + info_array);
-      hsb::SceneSpec spec = hsb::load_scene_or_data_file(input, info_overrides);
+      std::vector<std::string> overrides = info_overrides;
+      if (!info_array.empty()) overrides.push_back("data.array=" + info_array);
+      hsb::SceneSpec spec = hsb::load_scene_or_data_file(input, overrides);
       std::istringstream description(hsb::describe_data(spec.pipeline.data));
       for (std::string line; std::getline(description, line);) std::printf("# %s\n", line.c_str());
       const hsb::ColorManagement color(spec.output.display.value_or(""), spec.output.view.value_or(""));
