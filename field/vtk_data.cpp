@@ -10,6 +10,7 @@
 #include <vtkImageData.h>
 #include <vtkMatrix3x3.h>
 #include <vtkPointData.h>
+#include <vtkPolyDataNormals.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkTriangleFilter.h>
@@ -186,6 +187,9 @@ bool is_axis_aligned_image(vtkDataSet* data) {
   return dims[0] >= 2 && dims[1] >= 2 && dims[2] >= 2;
 }
 
+// The data set's outer surface as triangles with vertex normals. Edges
+// sharper than 40° split the normals, so a cylinder's faceted wall shades
+// smoothly while its rim stays a rim.
 TriangleMesh boundary_surface(vtkDataSet* data) {
   auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
   surface->SetInputData(data);
@@ -193,14 +197,27 @@ TriangleMesh boundary_surface(vtkDataSet* data) {
   triangles->SetInputConnection(surface->GetOutputPort());
   triangles->PassVertsOff();
   triangles->PassLinesOff();
-  triangles->Update();
-  vtkPolyData* poly = triangles->GetOutput();
+  auto normals = vtkSmartPointer<vtkPolyDataNormals>::New();
+  normals->SetInputConnection(triangles->GetOutputPort());
+  normals->SetFeatureAngle(40.0);
+  normals->SplittingOn();
+  normals->ConsistencyOn();
+  normals->AutoOrientNormalsOff();  // a hollow body has no single outside
+  normals->ComputePointNormalsOn();
+  normals->ComputeCellNormalsOff();
+  normals->Update();
+  vtkPolyData* poly = normals->GetOutput();
+  vtkDataArray* point_normals = poly->GetPointData()->GetNormals();
   TriangleMesh mesh;
   mesh.vertices.reserve(std::size_t(poly->GetNumberOfPoints()));
   for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i) {
     double p[3];
     poly->GetPoint(i, p);
     mesh.vertices.emplace_back(p[0], p[1], p[2]);
+    if (point_normals) {
+      point_normals->GetTuple(i, p);
+      mesh.normals.emplace_back(p[0], p[1], p[2]);
+    }
   }
   vtkCellArray* polys = poly->GetPolys();
   polys->InitTraversal();

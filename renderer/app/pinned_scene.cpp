@@ -59,6 +59,14 @@ std::string pinned_scene_toml(const PreparedScene& p) {
   pin(!s.context.box_radius, "render", "box_radius", p.context.box_radius);
   pin(!s.context.shell, "render", "shell", p.context.shell != nullptr);
   pin(!s.render.shadow_offset, "render", "shadow_offset", p.render.shadow_offset);
+  pin(s.context.trajectories && !s.context.trajectory_radius, "render", "trajectory_radius",
+      p.context.trajectory_radius);
+  pin(s.context.ground && !s.context.ground_height, "render", "ground_height", p.shading.ground_height);
+  if (s.shading.ao_samples > 0 && !s.light.ao_distance) {
+    toml::table& light = subtable(root, "light");
+    if (!light.contains("ambient_occlusion")) light.insert("ambient_occlusion", toml::table{});
+    light["ambient_occlusion"].as_table()->insert_or_assign("distance", p.shading.ao_distance);
+  }
   pin(!s.render.intersector, "render", "intersector", p.trace.intersector == Intersector::exact ? "exact" : "sphere");
   pin(!s.render.min_step, "render", "min_step", p.trace.min_step);
   pin(!s.output.file, "output", "file", p.output.file);

@@ -1,5 +1,6 @@
 #include "renderer/app/prepared_scene.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "renderer/image/colorbar.h"
@@ -9,10 +10,24 @@
 namespace hsb {
 namespace {
 
-// The automatic lengths of the renderer, as fractions of the data's size D.
+// The automatic lengths of the renderer, as fractions of the data's size D
+// or of a median glyph's size.
 constexpr double kBoxRadiusPerDiagonal = 1.0 / 500.0;
 constexpr double kShadowOffsetPerDiagonal = 1e-5;
 constexpr double kMinStepPerDiagonal = 1e-6;
+constexpr double kTubePerGlyph = 0.2;
+constexpr double kOcclusionPerGlyph = 4.0;
+
+// The median of the glyphs' sizes (largest semi-axes alone); D/50 when
+// there are none.
+double median_glyph_size(const std::vector<GlyphSource>& sources, double extent, double diagonal) {
+  if (sources.empty()) return diagonal / 50.0;
+  std::vector<double> sizes;
+  sizes.reserve(sources.size());
+  for (const GlyphSource& g : sources) sizes.push_back(extent * g.radii.maxCoeff());
+  std::nth_element(sizes.begin(), sizes.begin() + std::ptrdiff_t(sizes.size() / 2), sizes.end());
+  return sizes[sizes.size() / 2];
+}
 
 const char* scalar_title(ColorScalar scalar) {
   switch (scalar) {
@@ -70,6 +85,9 @@ std::vector<std::string> automatic_keys(const SceneSpec& s) {
   note(!s.context.box, "render.box");
   note(!s.context.box_radius, "render.box_radius");
   note(!s.context.shell, "render.shell");
+  note(s.context.trajectories && !s.context.trajectory_radius, "render.trajectory_radius");
+  note(s.context.ground && !s.context.ground_height, "render.ground_height");
+  note(s.shading.ao_samples > 0 && !s.light.ao_distance, "light.ambient_occlusion.distance");
   note(!s.render.shadow_offset, "render.shadow_offset");
   note(!s.render.intersector, "render.intersector");
   note(!s.render.min_step, "render.min_step");
@@ -135,15 +153,27 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   p.context.box_radius = s.context.box_radius.value_or(kBoxRadiusPerDiagonal * diagonal);
   if (s.context.shell.value_or(has_boundary) && has_boundary) p.context.shell = &*p.glyphs.boundary;
 
+  // Lengths that follow the glyphs: a median glyph's size.
+  const double glyph = median_glyph_size(p.glyphs.sources, extent, diagonal);
+  p.context.glyphs = s.context.glyphs;
+  if (s.context.trajectories) {
+    for (const Trajectory& t : p.glyphs.trajectories) p.context.trajectories.push_back(&t.points);
+    p.context.trajectory_radius = s.context.trajectory_radius.value_or(kTubePerGlyph * glyph);
+  }
+
   p.shading = s.shading;
   p.shading.background = color.to_scene_linear(p.shading.background);
+  p.shading.background_bottom = color.to_scene_linear(p.shading.background_bottom);
   p.shading.box_color = color.to_scene_linear(p.shading.box_color);
   p.shading.shell_color = color.to_scene_linear(p.shading.shell_color);
+  p.shading.trajectory_color = color.to_scene_linear(p.shading.trajectory_color);
+  p.shading.ao_distance = s.light.ao_distance.value_or(kOcclusionPerGlyph * glyph);
 
   p.render.width = s.render.width;
   p.render.height = s.render.height;
   p.render.samples = s.render.samples;
   p.render.shadow_offset = s.render.shadow_offset.value_or(kShadowOffsetPerDiagonal * diagonal);
+  if (is_scene_linear_format(s.output.file.value_or(""))) p.render.planes = {Plane::depth};
   // Exact wherever it applies: it was the faster of the two over the
   // figure scenes, and exact; blinn summed has no polynomial form.
   p.trace.intersector = s.render.intersector.value_or(
@@ -159,7 +189,10 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   const double legend = p.output.colorbar ? colorbar_width_fraction(s.render.width, s.render.height) : 0.0;
   CameraRequest camera = s.camera;
   if (!camera.view) camera.view = automatic_view(domain);
-  p.camera = frame_camera(camera, framed_box(s.camera.frame, p), s.render.width, s.render.height, legend);
+  const Box3 framed = framed_box(s.camera.frame, p);
+  p.camera = frame_camera(camera, framed, s.render.width, s.render.height, legend);
+  p.shading.ground = s.context.ground;
+  p.shading.ground_height = s.context.ground_height.value_or(framed.lo.z());
 
   warn_about_the_picture(p, extent);
   return prepared;

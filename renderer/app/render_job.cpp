@@ -82,26 +82,41 @@ RenderSummary run_render_job(const RenderJob& job) {
   std::filesystem::create_directories(image_path.parent_path());
   Film& film = rendered.film;
   ImageToWrite image;
-  image.width = film.width;
-  image.height = film.height;
+  image.width = film.width();
+  image.height = film.height();
   image.bit_depth = prepared->output.bit_depth;
   image.metadata = image_metadata(spec, scale, color, field.sources.size());
+  const std::size_t pixels = std::size_t(film.width()) * std::size_t(film.height());
+  const std::vector<float>& rgb = film.data(Plane::color);
+  const std::vector<float>& alpha = film.data(Plane::alpha);
   if (is_scene_linear_format(image_path.string())) {
     // EXR keeps scene-linear data, with the camera distance as a Z channel.
     image.channels = 5;
     image.channel_names = {"R", "G", "B", "A", "Z"};
-    image.pixels.resize(std::size_t(film.width) * film.height * 5);
-    for (std::size_t i = 0; i < std::size_t(film.width) * film.height; ++i) {
-      for (int c = 0; c < 4; ++c) image.pixels[i * 5 + c] = film.rgba[i * 4 + c];
-      image.pixels[i * 5 + 4] = film.depth[i];
+    image.pixels.resize(pixels * 5);
+    const std::vector<float>& depth = film.data(Plane::depth);
+    for (std::size_t i = 0; i < pixels; ++i) {
+      for (int c = 0; c < 3; ++c) image.pixels[i * 5 + std::size_t(c)] = rgb[i * 3 + std::size_t(c)];
+      image.pixels[i * 5 + 3] = alpha[i];
+      image.pixels[i * 5 + 4] = depth[i];
     }
   } else {
-    color.apply_display(film.rgba, film.width, film.height);
-    // Display images are opaque: the background is part of the picture.
-    for (std::size_t i = 3; i < film.rgba.size(); i += 4) film.rgba[i] = 1.0f;
+    // The display transform works on colours, not on colours times
+    // coverage: undo the premultiplication around it.
+    const bool transparent = prepared->shading.background_kind == BackgroundKind::transparent;
+    std::vector<float> rgba(pixels * 4);
+    for (std::size_t i = 0; i < pixels; ++i) {
+      const float a = transparent ? alpha[i] : 1.0f;
+      for (int c = 0; c < 3; ++c) rgba[i * 4 + std::size_t(c)] = a > 0.0f ? rgb[i * 3 + std::size_t(c)] / a : 0.0f;
+      rgba[i * 4 + 3] = a;
+    }
+    film = Film(1, 1);  // its memory is no longer needed
+    color.apply_display(rgba, image.width, image.height);
+    for (std::size_t i = 0; i < pixels; ++i)
+      for (int c = 0; c < 3; ++c) rgba[i * 4 + std::size_t(c)] *= rgba[i * 4 + 3];
     if (prepared->output.colorbar)
-      draw_colorbar(film.rgba, film.width, film.height, scale, {prepared->output.colorbar_title}, color);
-    image.pixels = std::move(film.rgba);
+      draw_colorbar(rgba, image.width, image.height, scale, {prepared->output.colorbar_title}, color);
+    image.pixels = std::move(rgba);
   }
   write_image(image, image_path.string());
 

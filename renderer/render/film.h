@@ -1,20 +1,63 @@
 #pragma once
-// A scene-linear RGBA image: what the renderer produces before any colour
-// management.
+// What the renderer produces before any colour management: a set of named
+// planes, each made from the camera samples by its own rule.
+//
+//   color   R G B    scene-linear, premultiplied by alpha   filtered average
+//   alpha   A        coverage (0 where the background shows through)  filtered average
+//   depth   Z        camera distance of the first hit       nearest sample in the pixel
+//   normal  N.X N.Y N.Z   the glyph surface's, unit         filtered average of glyph hits
+//   scalar  scalar   the glyphs' colour scalar              filtered average of glyph hits
+//   id      id       the source whose glyph was hit         most samples in the pixel
+//
+// Colour and alpha are always made; the others only when an output asks
+// for them (an EXR's layers), so a large PNG carries 16 bytes a pixel.
 
+#include <array>
+#include <cstdint>
 #include <vector>
 
 namespace hsb {
 
-struct Film {
-  int width = 0, height = 0;
-  std::vector<float> rgba;   // width*height*4, row-major, top row first
-  std::vector<float> depth;  // camera distance of the first hit, +inf where none
+enum class Plane { color, alpha, depth, normal, scalar, id };
+constexpr int kPlaneCount = 6;
 
-  Film(int w, int h) : width(w), height(h), rgba(std::size_t(w) * h * 4, 0.0f),
-                       depth(std::size_t(w) * h, 0.0f) {}
-  float* pixel(int x, int y) { return &rgba[(std::size_t(y) * width + x) * 4]; }
-  const float* pixel(int x, int y) const { return &rgba[(std::size_t(y) * width + x) * 4]; }
+enum class Combine {
+  filtered_average,  // Σ w·v / Σ w over the samples under the pixel filter
+  nearest,           // the smallest value among the pixel's own samples
+  dominant,          // the value most of the pixel's own samples have
+};
+
+struct PlaneInfo {
+  Plane plane;
+  const char* name;
+  int channels;
+  Combine rule;
+  std::array<const char*, 3> channel_names;
+  float empty;  // where no sample contributes (nothing hit)
+};
+
+const PlaneInfo& plane_info(Plane plane);
+
+class Film {
+ public:
+  // Colour and alpha, and any of the other `planes`.
+  Film(int width, int height, const std::vector<Plane>& planes = {});
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  bool has(Plane p) const { return !data_[std::size_t(p)].empty(); }
+  // The plane's values, row-major, top row first, plane_info(p).channels a pixel.
+  std::vector<float>& data(Plane p) { return data_[std::size_t(p)]; }
+  const std::vector<float>& data(Plane p) const { return data_[std::size_t(p)]; }
+  float* at(Plane p, int x, int y) {
+    return &data_[std::size_t(p)][(std::size_t(y) * std::size_t(width_) + std::size_t(x)) * std::size_t(plane_info(p).channels)];
+  }
+  // The planes present, in the order above.
+  std::vector<Plane> planes() const;
+
+ private:
+  int width_, height_;
+  std::array<std::vector<float>, kPlaneCount> data_;
 };
 
 }  // namespace hsb

@@ -26,11 +26,15 @@ class EmbreeDevice {
   RTCDevice device_;
 };
 
-// What is drawn around the field, each part when present.
+// What is drawn besides (or instead of) the glyphs, each part when present.
 struct DrawnContext {
+  bool glyphs = true;       // false: the field is not drawn (trajectories alone)
   std::optional<Box3> box;  // its twelve edges
   double box_radius = 0.0;
   const TriangleMesh* shell = nullptr;  // a data set's boundary surface
+  // Trajectories as thin tubes (each polyline of two points or more).
+  std::vector<const std::vector<Vec3>*> trajectories;
+  double trajectory_radius = 0.0;
 };
 
 class RayScene {
@@ -42,11 +46,11 @@ class RayScene {
   static constexpr unsigned kContextMask = 2u;
   static constexpr unsigned kShadowRayMask = kFieldMask;
 
-  // `field` (and context.shell) must outlive the scene. The box's edges
-  // are thin round curves that cast no shadow (shadow rays carry
-  // kShadowRayMask). The shell becomes a separate scene of triangles: it
-  // is composited over what the rays hit, casts no shadow and hides
-  // nothing.
+  // `field` (and what `context` points to) must outlive the scene. The
+  // box's edges and the trajectory tubes are round curves that cast no
+  // shadow (shadow rays carry kShadowRayMask). The shell becomes a
+  // separate scene of triangles, shaded with its vertex normals: it is
+  // composited over what the rays hit, casts no shadow and hides nothing.
   RayScene(const EmbreeDevice& device, const BlobField& field, const TraceSettings& settings,
            const DrawnContext& context = {});
   ~RayScene();
@@ -56,8 +60,12 @@ class RayScene {
   RTCScene get() const { return scene_; }
   unsigned field_id() const { return field_id_; }
   unsigned box_id() const { return box_id_; }
+  unsigned tubes_id() const { return tubes_id_; }
   const BlobGeometry& blobs() const { return *blobs_; }
   RTCScene shell() const { return shell_; }  // nullptr when there is none
+  // The shell's normal at a hit: interpolated from its vertices when it has
+  // vertex normals, else the triangle's own.
+  Vec3 shell_normal(unsigned primitive, float u, float v, const Vec3& geometric) const;
 
  private:
   RTCScene scene_ = nullptr;
@@ -65,6 +73,9 @@ class RayScene {
   std::unique_ptr<BlobGeometry> blobs_;
   unsigned field_id_ = RTC_INVALID_GEOMETRY_ID;
   unsigned box_id_ = RTC_INVALID_GEOMETRY_ID;
+  unsigned tubes_id_ = RTC_INVALID_GEOMETRY_ID;
+  RTCGeometry shell_geometry_ = nullptr;  // owned by shell_
+  bool shell_has_normals_ = false;
 };
 
 }  // namespace hsb

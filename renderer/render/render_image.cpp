@@ -1,7 +1,5 @@
 #include "renderer/render/render_image.h"
 
-#include "renderer/surface/embree_ray.h"
-
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -9,141 +7,151 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
+#include <map>
+
+#include "renderer/render/camera_samples.h"
+#include "renderer/render/pixel_filter.h"
+#include "renderer/render/sampling.h"
 
 namespace hsb {
 namespace {
 
-struct ThreadState {
-  FieldRayLanes tracers;
-  TraceStats stats;
-  std::uint64_t primary_rays = 0;
-  std::uint64_t shadow_rays = 0;
-  double primary_seconds = 0.0, shadow_seconds = 0.0;
-};
-
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // Camera rays are traced a tile of pixels at a time, one packet per
 // sub-pixel sample: neighbouring rays meet the same sources.
 constexpr int kTile = 4;
 static_assert(kTile * kTile == kMaxPacket, "a tile fills one ray packet");
 
-// A stateless integer hash (the finaliser of MurmurHash3) turned into a
-// number in [0, 1): jitter that depends only on the pixel and sample.
-double hash_unit(std::uint64_t key) {
-  key ^= key >> 33;
-  key *= 0xff51afd7ed558ccdULL;
-  key ^= key >> 33;
-  key *= 0xc4ceb9fe1a85ec53ULL;
-  key ^= key >> 33;
-  return double(key >> 11) * (1.0 / 9007199254740992.0);
-}
+// Rows of pixels made at a time. A band's pixels gather samples from
+// kFilterReach rows above and below it, so the samples of a band and its
+// margins are kept; the rows are traced once each.
+constexpr int kBand = 16;
 
-struct Sample {
-  Rgb color;
-  bool covered;
-  double depth;
+// The camera samples of a window of picture rows, kept in a ring.
+class SampleRows {
+ public:
+  SampleRows(int width, int per_pixel, int rows)
+      : width_(width), per_pixel_(per_pixel), rows_(rows),
+        samples_(std::size_t(width) * std::size_t(per_pixel) * std::size_t(rows)) {}
+  CameraSample* pixel(int x, int y) {
+    const std::size_t slot = std::size_t(y % rows_);
+    return &samples_[(slot * std::size_t(width_) + std::size_t(x)) * std::size_t(per_pixel_)];
+  }
+
+ private:
+  int width_, per_pixel_, rows_;
+  std::vector<CameraSample> samples_;
 };
 
-// Traces `count` (at most kMaxPacket) camera rays as one packet, and their
-// shadow rays as another.
-void trace_packet(const RayScene& scene, const ShadingSpec& shading, const CameraRay* rays, int count,
-                  const Vec3& to_light, double shadow_offset, ThreadState& state, Sample* samples) {
-  FieldRayContext context(state.tracers, state.stats);
-  context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-  alignas(64) int valid[kMaxPacket];
-  alignas(64) RTCRayHit16 primary{};
-  auto* primary_n = reinterpret_cast<RTCRayHitN*>(&primary);
-  for (int i = 0; i < kMaxPacket; ++i) {
-    valid[i] = i < count ? -1 : 0;
-    if (i < count) set_embree_ray(primary_n, kMaxPacket, unsigned(i), rays[i].origin, rays[i].direction, 0.0f, INFINITY);
-  }
-  const auto primary_start = Clock::now();
-  rtcIntersect16(valid, scene.get(), &context.embree, &primary);
-  state.primary_seconds += seconds_since(primary_start);
-  state.primary_rays += unsigned(count);
-
-  // The field's hits: the tracer kept t in double and the shading inputs.
-  alignas(64) int shadow_valid[kMaxPacket] = {};
-  alignas(64) RTCRayHit16 shadow{};
-  auto* shadow_n = reinterpret_cast<RTCRayHitN*>(&shadow);
-  int shadow_count = 0;
-  bool on_field[kMaxPacket] = {};
-  for (int i = 0; i < count; ++i) {
-    const unsigned id = primary.hit.geomID[i];
-    if (id == RTC_INVALID_GEOMETRY_ID) {
-      samples[i] = {shading.background, false, INFINITY};
-      continue;
-    }
-    if (id == scene.box_id()) {
-      samples[i] = {shading.box_color, true, double(primary.ray.tfar[i])};
-      continue;
-    }
-    on_field[i] = true;
-    const Vec3& n = context.surface[std::size_t(i)].normal;
-    const Vec3 facing = n.dot(rays[i].direction) < 0.0 ? n : Vec3(-n);  // the side the camera sees
-    // A side facing away from the light is unlit whatever lies between.
-    if (shading.shadows && facing.dot(to_light) > 0.0) {
-      const Vec3 x = rays[i].origin + context.t[std::size_t(i)] * rays[i].direction;
-      const Vec3 start = x + shadow_offset * facing;
-      set_embree_ray(shadow_n, kMaxPacket, unsigned(i), start, to_light, 0.0f, INFINITY,
-                     RayScene::kShadowRayMask);
-      shadow_valid[i] = -1;
-      ++shadow_count;
-    }
-  }
-  if (shadow_count > 0) {
-    FieldRayContext shadow_context(state.tracers, state.stats);
-    shadow_context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;  // parallel rays from nearby points
-    const auto shadow_start = Clock::now();
-    rtcOccluded16(shadow_valid, scene.get(), &shadow_context.embree, &shadow.ray);
-    state.shadow_seconds += seconds_since(shadow_start);
-    state.shadow_rays += unsigned(shadow_count);
-  }
-  for (int i = 0; i < count; ++i) {
-    if (!on_field[i]) continue;
-    const SurfaceSample& surface = context.surface[std::size_t(i)];
-    const double visibility = shadow_valid[i] && shadow.ray.tfar[i] < 0.0f ? 0.0 : 1.0;
-    samples[i] = {shade_surface(shading, surface.color, surface.normal, -rays[i].direction, to_light, visibility),
-                  true, context.t[std::size_t(i)]};
-  }
+// Where camera sample k of pixel (x, y) lies in the picture: stratified
+// over the pixel, jittered by a hash of the pixel and the sample.
+void sample_position(int x, int y, int width, int k, int per_pixel, double& sx, double& sy) {
+  const std::uint64_t pixel = std::uint64_t(y) * std::uint64_t(width) + std::uint64_t(x);
+  double u, v;
+  stratified(k, per_pixel, sample_key(pixel, std::uint64_t(k), SamplePurpose::pixel, 0), u, v);
+  sx = x + (per_pixel == 1 ? 0.5 : u);
+  sy = y + (per_pixel == 1 ? 0.5 : v);
 }
 
-// The shell's layers between the camera and `behind` (at distance t_behind),
-// composited front to back. Opacity rises from shell_opacity facing the
-// viewer to shell_edge_opacity at grazing angles, so the body's outline
-// shows as an edge while glyphs inside stay visible.
-Rgb composite_shell(RTCScene shell, const ShadingSpec& shading, const CameraRay& ray, const Vec3& to_light,
-                    const Rgb& behind, double t_behind) {
-  const Vec3 &origin = ray.origin, &direction = ray.direction;
-  constexpr int max_layers = 8;
-  Rgb sum{0, 0, 0};
-  double transmittance = 1.0;
-  float t_near = 0.0f;
-  const float t_far = std::isinf(t_behind) ? INFINITY : float(t_behind);
-  for (int layer = 0; layer < max_layers; ++layer) {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    RTCRayHit rh = make_embree_ray(origin, direction, t_near, t_far);
-    rtcIntersect1(shell, &context, &rh);
-    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) break;
-    const Vec3 n = Vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z).normalized();
-    const double facing = std::fabs(n.dot(direction));
-    const double grazing = std::pow(1.0 - facing, 3.0);
-    const double alpha = shading.shell_opacity + (shading.shell_edge_opacity - shading.shell_opacity) * grazing;
-    const double lit = shading.ambient + shading.light_intensity * std::fabs(n.dot(to_light));
-    for (int c = 0; c < 3; ++c)
-      sum[c] += float(transmittance * alpha * lit * shading.shell_color[c] * shading.light_color[c]);
-    transmittance *= 1.0 - alpha;
-    t_near = std::nextafter(rh.ray.tfar, INFINITY);
+// Traces the camera samples of picture rows [first, last).
+void trace_rows(const RayScene& scene, const Camera& camera, const ShadingSpec& shading,
+                const RenderSettings& settings, int first, int last, int per_pixel, SampleRows& rows,
+                tbb::enumerable_thread_specific<SampleTracer>& tracers) {
+  const int tiles_x = (settings.width + kTile - 1) / kTile;
+  const int tiles_y = (last - first + kTile - 1) / kTile;
+  tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y), [&](const tbb::blocked_range<int>& range) {
+    SampleTracer& tracer = tracers.local();
+    for (int tile = range.begin(); tile < range.end(); ++tile) {
+      const int tx = tile % tiles_x, ty = tile / tiles_x;
+      int px[kMaxPacket], py[kMaxPacket], count = 0;
+      for (int dy = 0; dy < kTile; ++dy)
+        for (int dx = 0; dx < kTile; ++dx) {
+          const int x = tx * kTile + dx, y = first + ty * kTile + dy;
+          if (x >= settings.width || y >= last) continue;
+          px[count] = x;
+          py[count++] = y;
+        }
+      double position_x, position_y;
+      for (int k = 0; k < per_pixel; ++k) {
+        CameraRayJob jobs[kMaxPacket];
+        for (int i = 0; i < count; ++i) {
+          double sx, sy;
+          sample_position(px[i], py[i], settings.width, k, per_pixel, sx, sy);
+          jobs[i].ray = camera.ray(sx, sy);
+          jobs[i].pixel = std::uint64_t(py[i]) * std::uint64_t(settings.width) + std::uint64_t(px[i]);
+          jobs[i].sample = std::uint32_t(k);
+          jobs[i].samples = std::uint32_t(per_pixel);
+          jobs[i].picture_v = sy / settings.height;
+        }
+        CameraSample results[kMaxPacket];
+        trace_camera_samples(scene, shading, settings.shadow_offset, jobs, count, tracer, results);
+        for (int i = 0; i < count; ++i) {
+          CameraSample& stored = rows.pixel(px[i], py[i])[k] = results[i];
+          sample_position(px[i], py[i], settings.width, k, per_pixel, position_x, position_y);
+          stored.x = float(position_x - px[i]);  // within the pixel, where float keeps every bit
+          stored.y = float(position_y - py[i]);
+        }
+      }
+    }
+  });
+}
+
+// One pixel of the film from the samples around it, by each plane's rule.
+void gather_pixel(int x, int y, const RenderSettings& settings, int per_pixel, SampleRows& rows, Film& film) {
+  double color[3] = {0, 0, 0}, alpha = 0.0, weight = 0.0;
+  double normal[3] = {0, 0, 0}, scalar = 0.0, hit_weight = 0.0;
+  for (int dy = -kFilterReach; dy <= kFilterReach; ++dy) {
+    const int ny = y + dy;
+    if (ny < 0 || ny >= settings.height) continue;
+    for (int dx = -kFilterReach; dx <= kFilterReach; ++dx) {
+      const int nx = x + dx;
+      if (nx < 0 || nx >= settings.width) continue;
+      const CameraSample* samples = rows.pixel(nx, ny);
+      for (int k = 0; k < per_pixel; ++k) {
+        const double w = filter_weight(dx + samples[k].x - 0.5, dy + samples[k].y - 0.5);
+        if (w == 0.0) continue;
+        const CameraSample& s = samples[k];
+        for (int c = 0; c < 3; ++c) color[c] += w * s.color[std::size_t(c)];
+        alpha += w * s.alpha;
+        weight += w;
+        if (s.id < 0) continue;
+        for (int c = 0; c < 3; ++c) normal[c] += w * s.normal[std::size_t(c)];
+        scalar += w * s.scalar;
+        hit_weight += w;
+      }
+    }
   }
-  for (int c = 0; c < 3; ++c) sum[c] += float(transmittance) * behind[c];
-  return sum;
+  // The filter's side lobes are negative: keep colour and coverage in range.
+  float* out_color = film.at(Plane::color, x, y);
+  for (int c = 0; c < 3; ++c) out_color[c] = float(std::max(0.0, color[c] / weight));
+  *film.at(Plane::alpha, x, y) = float(std::clamp(alpha / weight, 0.0, 1.0));
+  if (film.has(Plane::normal) && hit_weight > 0.0) {
+    const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+    float* n = film.at(Plane::normal, x, y);
+    for (int c = 0; c < 3; ++c) n[c] = length > 0.0 ? float(normal[c] / length) : 0.0f;
+  }
+  if (film.has(Plane::scalar) && hit_weight > 0.0) *film.at(Plane::scalar, x, y) = float(scalar / hit_weight);
+
+  // Depth and id from the pixel's own samples: the nearest hit, and the
+  // source most of them hit (the first such in sample order on a tie).
+  const CameraSample* own = rows.pixel(x, y);
+  if (film.has(Plane::depth)) {
+    float nearest = INFINITY;
+    for (int k = 0; k < per_pixel; ++k) nearest = std::min(nearest, own[k].depth);
+    *film.at(Plane::depth, x, y) = nearest;
+  }
+  if (film.has(Plane::id)) {
+    std::int32_t best = -1;
+    int best_count = 0;
+    for (int k = 0; k < per_pixel; ++k) {
+      if (own[k].id < 0) continue;
+      int n = 0;
+      for (int j = 0; j < per_pixel; ++j) n += own[j].id == own[k].id;
+      if (n > best_count) best = own[k].id, best_count = n;
+    }
+    *film.at(Plane::id, x, y) = float(best);
+  }
 }
 
 }  // namespace
@@ -152,76 +160,33 @@ RenderOutput render_image(const RayScene& scene, const CameraSpec& camera_spec, 
                           const RenderSettings& settings) {
   const auto start = Clock::now();
   const Camera camera(camera_spec, settings.width, settings.height);
-  const Vec3 to_light = shading.light_from.normalized();
-  const double shadow_offset = settings.shadow_offset;
   const int n = std::max(1, settings.samples);
-  const double inv_samples = 1.0 / double(n * n);
+  const int per_pixel = n * n;
 
-  RenderOutput out{Film(settings.width, settings.height), {}, 0, 0, 0.0};
-  tbb::enumerable_thread_specific<ThreadState> states;
+  RenderOutput out{Film(settings.width, settings.height, settings.planes), {}, 0, 0, 0.0};
+  tbb::enumerable_thread_specific<SampleTracer> tracers;
+  SampleRows rows(settings.width, per_pixel, kBand + 2 * kFilterReach);
 
-  const int tiles_x = (settings.width + kTile - 1) / kTile;
-  const int tiles_y = (settings.height + kTile - 1) / kTile;
-  tbb::parallel_for(tbb::blocked_range<int>(0, tiles_y), [&](const tbb::blocked_range<int>& tile_rows) {
-    ThreadState& state = states.local();
-    for (int ty = tile_rows.begin(); ty < tile_rows.end(); ++ty) {
-      for (int tx = 0; tx < tiles_x; ++tx) {
-        // The tile's pixels (fewer at the image's right and bottom edges).
-        int px[kMaxPacket], py[kMaxPacket];
-        std::uint64_t pixel[kMaxPacket];  // index into the film
-        int count = 0;
-        for (int dy = 0; dy < kTile; ++dy)
-          for (int dx = 0; dx < kTile; ++dx) {
-            const int x = tx * kTile + dx, y = ty * kTile + dy;
-            if (x >= settings.width || y >= settings.height) continue;
-            px[count] = x;
-            py[count] = y;
-            pixel[count++] = std::uint64_t(y) * std::uint64_t(settings.width) + std::uint64_t(x);
-          }
-        double rgb[kMaxPacket][3] = {};
-        double coverage[kMaxPacket] = {};
-        double depth[kMaxPacket];
-        std::fill(depth, depth + kMaxPacket, INFINITY);
-        for (int sy = 0; sy < n; ++sy) {
-          for (int sx = 0; sx < n; ++sx) {
-            CameraRay rays[kMaxPacket];
-            for (int i = 0; i < count; ++i) {
-              const std::uint64_t key = (pixel[i] * std::uint64_t(n * n) + std::uint64_t(sy * n + sx)) * 2;
-              const double jx = n == 1 ? 0.5 : (sx + hash_unit(key)) / n;
-              const double jy = n == 1 ? 0.5 : (sy + hash_unit(key + 1)) / n;
-              rays[i] = camera.ray(px[i] + jx, py[i] + jy);
-            }
-            Sample samples[kMaxPacket];
-            trace_packet(scene, shading, rays, count, to_light, shadow_offset, state, samples);
-            for (int i = 0; i < count; ++i) {
-              Sample& s = samples[i];
-              if (scene.shell())
-                s.color = composite_shell(scene.shell(), shading, rays[i], to_light, s.color, s.depth);
-              for (int c = 0; c < 3; ++c) rgb[i][c] += s.color[c];
-              coverage[i] += s.covered ? 1.0 : 0.0;
-              depth[i] = std::min(depth[i], s.depth);
-            }
-          }
-        }
-        for (int i = 0; i < count; ++i) {
-          float* p = out.film.pixel(px[i], py[i]);
-          for (int c = 0; c < 3; ++c) p[c] = float(rgb[i][c] * inv_samples);
-          p[3] = float(coverage[i] * inv_samples);
-          out.film.depth[pixel[i]] = float(depth[i]);
-        }
-      }
-    }
-  });
-
-  for (const ThreadState& state : states) {
-    out.stats += state.stats;
-    out.primary_rays += state.primary_rays;
-    out.shadow_rays += state.shadow_rays;
-    out.primary_seconds += state.primary_seconds;
-    out.shadow_seconds += state.shadow_seconds;
+  int traced = 0;  // rows [0, traced) have their samples
+  for (int band = 0; band < settings.height; band += kBand) {
+    const int band_end = std::min(settings.height, band + kBand);
+    const int needed = std::min(settings.height, band_end + kFilterReach);
+    if (traced < needed) trace_rows(scene, camera, shading, settings, traced, needed, per_pixel, rows, tracers);
+    traced = needed;
+    tbb::parallel_for(band, band_end, [&](int y) {
+      for (int x = 0; x < settings.width; ++x) gather_pixel(x, y, settings, per_pixel, rows, out.film);
+    });
   }
-  out.threads = std::max<int>(1, int(states.size()));
-  out.seconds = seconds_since(start);
+
+  for (const SampleTracer& t : tracers) {
+    out.stats += t.stats;
+    out.primary_rays += t.primary_rays;
+    out.shadow_rays += t.shadow_rays;
+    out.primary_seconds += t.primary_seconds;
+    out.shadow_seconds += t.shadow_seconds;
+  }
+  out.threads = std::max<int>(1, int(tracers.size()));
+  out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return out;
 }
 

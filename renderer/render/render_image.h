@@ -1,7 +1,16 @@
 #pragma once
-// Camera rays → first hits → shading → a scene-linear film.
+// Camera rays → first hits → lights and occlusion → samples → a film.
+//
+// The picture is made in bands of rows. A band's camera samples are traced
+// (in 4×4-pixel packets, in parallel), then each pixel gathers the samples
+// of the pixels around it through the pixel filter (pixel_filter.h) by the
+// rules of its film planes (film.h). Every random number is a hash of what
+// it is for, and every sum is taken in the same order, so a render gives the
+// same bytes whatever the thread count; memory beyond the film is a few
+// bands of samples, whatever the picture's size.
 
 #include <cstdint>
+#include <vector>
 
 #include "renderer/render/camera.h"
 #include "renderer/render/film.h"
@@ -13,19 +22,20 @@ namespace hsb {
 struct RenderSettings {
   int width = 800;
   int height = 800;
-  // Anti-aliasing: a samples×samples stratified, jittered grid per pixel,
-  // box-filtered. The jitter is a hash of pixel and sample, so renders are
-  // reproducible whatever the thread count.
+  // Anti-aliasing: samples×samples stratified, jittered camera samples a
+  // pixel, reconstructed with the pixel filter.
   int samples = 2;
-  // Shadow rays start this far off the surface along its normal.
+  // Shadow and occlusion rays start this far off the surface along its normal.
   double shadow_offset = 1e-5;
+  // Film planes besides colour and alpha (an EXR's layers).
+  std::vector<Plane> planes;
 };
 
 struct RenderOutput {
   Film film;
   TraceStats stats;
   std::uint64_t primary_rays = 0;
-  std::uint64_t shadow_rays = 0;
+  std::uint64_t shadow_rays = 0;  // key-light shadows and ambient occlusion
   double seconds = 0.0;
   // Time inside camera-ray and shadow-ray queries, summed over the threads
   // that rendered, and their number: the rates are what all threads

@@ -219,16 +219,41 @@ void read_camera(TableReader& c, CameraRequest& spec) {
     c.fail_at("up", "must not be parallel to the viewing direction");
 }
 
-void read_light(TableReader& l, ShadingSpec& spec) {
+void read_light(TableReader& l, ShadingSpec& spec, LightLengths& lengths) {
   spec.light_from = l.vec3("from", spec.light_from);
   if (spec.light_from.norm() == 0.0) l.fail_at("from", "must not be zero");
   spec.light_color = l.color("color", spec.light_color);
   spec.light_intensity = l.number("intensity", spec.light_intensity, non_negative);
-  spec.ambient = l.number("ambient", spec.ambient, non_negative);
+  spec.light_size = l.number("size", spec.light_size, {0.0, 90.0, false});
+  spec.light_samples = l.integer("samples", spec.light_samples, 1, 64);
   spec.shadows = l.boolean("shadows", spec.shadows);
+  spec.fill_from = l.vec3("fill_from", spec.fill_from);
+  if (spec.fill_from.norm() == 0.0) l.fail_at("fill_from", "must not be zero");
+  spec.fill_intensity = l.number("fill", spec.fill_intensity, non_negative);
+  spec.ambient = l.number("ambient", spec.ambient, non_negative);
   spec.specular = l.number("specular", spec.specular, non_negative);
   spec.shininess = l.number("shininess", spec.shininess, positive);
+  if (auto ao = l.table("ambient_occlusion")) {
+    spec.ao_samples = ao->integer("samples", spec.ao_samples, 0, 256);
+    lengths.ao_distance = ao->optional_number("distance", positive);
+    ao->finish();
+  }
   l.finish();
+}
+
+// A colour, or "transparent".
+void read_background(TableReader& r, ShadingSpec& spec) {
+  if (r.holds_string("background") && r.string("background", "") == "transparent") {
+    spec.background_kind = BackgroundKind::transparent;
+  } else {
+    spec.background = r.color("background", spec.background);
+  }
+  if (r.has("background_bottom")) {
+    if (spec.background_kind == BackgroundKind::transparent)
+      r.fail_at("background_bottom", "needs a background colour to fade from, not \"transparent\"");
+    spec.background_kind = BackgroundKind::gradient;
+  }
+  spec.background_bottom = r.color("background_bottom", spec.background);
 }
 
 void read_render(TableReader& r, SceneSpec& spec) {
@@ -237,7 +262,17 @@ void read_render(TableReader& r, SceneSpec& spec) {
   render.height = r.integer("height", render.height, 1, 16384);
   render.samples = r.integer("samples", render.samples, 1, 16);
   render.shadow_offset = r.optional_number("shadow_offset", positive);
-  spec.shading.background = r.color("background", spec.shading.background);
+  read_background(r, spec.shading);
+  ContextSpec& context = spec.context;
+  context.glyphs = r.boolean("glyphs", context.glyphs);
+  context.trajectories = r.boolean("trajectories", context.trajectories);
+  context.trajectory_radius = r.optional_number("trajectory_radius", positive);
+  spec.shading.trajectory_color = r.color("trajectory_color", spec.shading.trajectory_color);
+  if (!context.glyphs && !context.trajectories)
+    r.fail_at("glyphs", "= false needs render.trajectories = true: otherwise nothing is drawn");
+  context.ground = r.boolean("ground", context.ground);
+  context.ground_height = r.optional_number("ground_height", any_number);
+  spec.shading.ground_shadow = r.number("ground_shadow", spec.shading.ground_shadow, {0.0, 1.0, false});
   spec.context.box = r.optional_boolean("box");
   spec.shading.box_color = r.color("box_color", spec.shading.box_color);
   spec.context.box_radius = r.optional_number("box_radius", positive);
@@ -304,7 +339,7 @@ SceneSpec load_scene_text(const std::string& text, const std::string& path, cons
   if (auto s = top.table("surface")) read_surface(*s, spec.surface);
   if (auto c = top.table("color")) read_color(*c, spec.color);
   if (auto c = top.table("camera")) read_camera(*c, spec.camera);
-  if (auto l = top.table("light")) read_light(*l, spec.shading);
+  if (auto l = top.table("light")) read_light(*l, spec.shading, spec.light);
   if (auto r = top.table("render")) read_render(*r, spec);
   if (auto o = top.table("output")) read_output(*o, spec.output);
   top.finish();

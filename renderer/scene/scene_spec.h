@@ -36,10 +36,23 @@ struct ColorSpec {
 };
 
 // What is drawn around the glyphs. Automatic: a box frames an analytic
-// domain, a shell shows a mesh's boundary, the box's edges are D/500 thick.
+// domain, a shell shows a mesh's boundary, the box's edges are D/500 thick,
+// trajectory tubes a fifth of the median glyph, the ground just below the
+// lowest thing drawn.
 struct ContextSpec {
+  bool glyphs = true;
   std::optional<bool> box, shell;
   std::optional<double> box_radius;
+  bool trajectories = false;
+  std::optional<double> trajectory_radius;
+  bool ground = false;
+  std::optional<double> ground_height;
+};
+
+// The lights' lengths in the data's units. Automatic: ambient occlusion
+// reaches four median glyphs.
+struct LightLengths {
+  std::optional<double> ao_distance;
 };
 
 // The [render] table's image and tracing keys.
@@ -69,7 +82,8 @@ struct SceneSpec {
   SurfaceSpec surface;
   ColorSpec color;
   CameraRequest camera;
-  ShadingSpec shading;  // light and colours, display-referred
+  ShadingSpec shading;  // light and colours, display-referred; its lengths are in `light`
+  LightLengths light;
   ContextSpec context;
   RenderSpec render;
   OutputSpec output;

@@ -6,7 +6,7 @@
 namespace hsb {
 
 BlobSource make_blob_source(const Vec3& centre, const Mat3& axes, const Vec3& radii,
-                            double influence_radius, const std::array<float, 3>& color) {
+                            double influence_radius, const std::array<float, 3>& color, double scalar) {
   BlobSource s{};
   for (int k = 0; k < 3; ++k) {
     const double inv = 1.0 / (influence_radius * radii[k]);
@@ -14,6 +14,7 @@ BlobSource make_blob_source(const Vec3& centre, const Mat3& axes, const Vec3& ra
     s.centre[k] = static_cast<float>(centre[k]);
   }
   s.color = color;
+  s.scalar = float(scalar);
   return s;
 }
 
@@ -30,7 +31,7 @@ BlobField make_blob_field(const std::vector<GlyphSource>& glyphs,
   field.sources.reserve(glyphs.size());
   for (std::size_t i = 0; i < glyphs.size(); ++i)
     field.sources.push_back(make_blob_source(glyphs[i].centre, glyphs[i].axes, glyphs[i].radii,
-                                             influence_radius, colors[i]));
+                                             influence_radius, colors[i], glyphs[i].scalar));
   return field;
 }
 

@@ -20,13 +20,15 @@ enum class Blend { sum, max };
 // keeps every axis accurate however thin the glyph; storing M itself would
 // lose the long axes of needles (M's condition number is the square of the
 // glyph's aspect ratio). One source per cache line: a ray tests sources in
-// no particular memory order, and a 60-byte record would straddle two lines
-// about half the time.
+// no particular memory order, and a record across two lines would be read
+// twice as often.
 struct alignas(64) BlobSource {
   std::array<float, 9> w;       // rows of W
   std::array<float, 3> centre;
   std::array<float, 3> color;   // scene-linear RGB
+  float scalar = 0.0f;          // the colour scalar, for the film's scalar plane
 };
+static_assert(sizeof(BlobSource) == 64, "one source per cache line");
 
 struct BlobField {
   std::vector<BlobSource> sources;
@@ -43,7 +45,7 @@ BlobField make_blob_field(const std::vector<GlyphSource>& glyphs,
                           double isovalue);
 
 BlobSource make_blob_source(const Vec3& centre, const Mat3& axes, const Vec3& radii,
-                            double influence_radius, const std::array<float, 3>& color);
+                            double influence_radius, const std::array<float, 3>& color, double scalar = 0.0);
 
 // W as a matrix, and W (x − c): the point in the source's scaled frame,
 // where g(x) is its squared length.

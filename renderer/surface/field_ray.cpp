@@ -155,8 +155,9 @@ SurfaceSample FieldRay::surface_at(const BlobField& field, const Vec3& origin,
                                        const Vec3& direction, double t) const {
   const Vec3 x = origin + t * direction;
   Vec3 gradient = Vec3::Zero();
-  double weight = 0.0, best = -1.0;
+  double weight = 0.0, best = -1.0, scalar = 0.0;
   Vec3 color = Vec3::Zero();
+  SurfaceSample sample;
   for (const RaySpan& span : spans) {
     const BlobSource& s = field.sources[span.source];
     // q = W(x − c), g = |q|² and ∇g = 2 Wᵀ q.
@@ -167,25 +168,34 @@ SurfaceSample FieldRay::surface_at(const BlobField& field, const Vec3& origin,
     if (k <= 0.0) continue;
     const Vec3 grad_g = 2.0 * (w.transpose() * q);
     const Vec3 source_color(s.color[0], s.color[1], s.color[2]);
+    const bool strongest = k > best;
+    if (strongest) {
+      best = k;
+      sample.source = span.source;
+    }
     if (field.blend == Blend::sum) {
       gradient += kernel_slope(field.kernel, g) * grad_g;
       color += k * source_color;
+      scalar += k * double(s.scalar);
       weight += k;
-    } else if (k > best) {
+    } else if (strongest) {
       // max blend: the surface is the union, so the winning source alone
-      // defines both normal and colour.
-      best = k;
+      // defines normal, colour and scalar.
       gradient = kernel_slope(field.kernel, g) * grad_g;
       color = source_color;
+      scalar = s.scalar;
       weight = 1.0;
     }
   }
-  SurfaceSample sample;
   const double len = gradient.norm();
   // dK/dg < 0, so ∇F points inwards; the outward normal is −∇F/|∇F|.
   if (len > 0.0) sample.normal = -gradient / len;
-  if (weight > 0.0) color /= weight;
+  if (weight > 0.0) {
+    color /= weight;
+    scalar /= weight;
+  }
   sample.color = {float(color[0]), float(color[1]), float(color[2])};
+  sample.scalar = float(scalar);
   return sample;
 }
 

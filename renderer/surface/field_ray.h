@@ -39,6 +39,8 @@ enum class CrossingQuery { first, any };
 struct SurfaceSample {
   Vec3 normal = Vec3::UnitZ();           // unit, pointing out of the surface
   std::array<float, 3> color{0, 0, 0};   // influence-weighted, scene-linear
+  float scalar = 0.0f;                   // influence-weighted colour scalar
+  std::uint32_t source = 0;              // the source contributing most
 };
 
 // Scratch space for one ray at a time; keep one per thread and reuse it so

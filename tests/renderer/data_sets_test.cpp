@@ -31,9 +31,10 @@ class DataSet : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(DataSet, ASceneNamingOnlyTheFileGivesAUsefulPicture) {
   const std::string file = GetParam();
-  // The glyphs alone (no box or shell), so the film's coverage is theirs.
-  SceneSpec spec = scene_for_data_file(
-      file, {"render.width=192", "render.height=192", "render.samples=1", "render.box=false", "render.shell=false"});
+  // The glyphs alone (no box or shell) on nothing, so the film's alpha is
+  // their coverage.
+  SceneSpec spec = scene_for_data_file(file, {"render.width=192", "render.height=192", "render.samples=1",
+                                              "render.box=false", "render.shell=false", "render.background=transparent"});
   const ColorManagement color("", "");
   const std::unique_ptr<PreparedScene> p = prepare_scene(std::move(spec), color);
   ASSERT_GT(p->field.sources.size(), 20u) << "hardly any glyphs";
@@ -47,8 +48,8 @@ TEST_P(DataSet, ASceneNamingOnlyTheFileGivesAUsefulPicture) {
   const RayScene scene(device, p->field, p->trace, p->context);
   const RenderOutput out = render_image(scene, p->camera, p->shading, p->render);
   double covered = 0.0;
-  for (std::size_t i = 3; i < out.film.rgba.size(); i += 4) covered += out.film.rgba[i];
-  const double fraction = covered / (double(out.film.width) * out.film.height);
+  for (const float a : out.film.data(Plane::alpha)) covered += a;
+  const double fraction = covered / (double(out.film.width()) * out.film.height());
   EXPECT_GT(fraction, 0.005) << "the glyphs are a speck";
   EXPECT_LT(fraction, 0.6) << "the glyphs fill the frame";
 

@@ -1,0 +1,235 @@
+#include "renderer/render/camera_samples.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+#include "renderer/render/sampling.h"
+#include "renderer/surface/embree_ray.h"
+
+namespace hsb {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// Occlusion rays of one packet of camera samples, traced 16 at a time: each
+// unblocked ray adds its weight to its sample's key or ambient visibility.
+class OcclusionBatch {
+ public:
+  void add(const Vec3& origin, const Vec3& direction, double tfar, int lane, double weight, bool ambient) {
+    rays_.push_back({origin, direction, tfar, lane, weight, ambient});
+  }
+
+  void trace(const RayScene& scene, SampleTracer& tracer, Visibility* visibility) {
+    const auto start = Clock::now();
+    for (std::size_t first = 0; first < rays_.size(); first += kMaxPacket) {
+      const int count = int(std::min<std::size_t>(kMaxPacket, rays_.size() - first));
+      FieldRayContext context(tracer.tracers, tracer.stats);
+      context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;  // nearby origins, similar directions
+      alignas(64) int valid[kMaxPacket] = {};
+      alignas(64) RTCRayHit16 packet{};
+      auto* rays = reinterpret_cast<RTCRayHitN*>(&packet);
+      for (int i = 0; i < count; ++i) {
+        const Pending& r = rays_[first + std::size_t(i)];
+        set_embree_ray(rays, kMaxPacket, unsigned(i), r.origin, r.direction, 0.0f, r.tfar, RayScene::kShadowRayMask);
+        valid[i] = -1;
+      }
+      rtcOccluded16(valid, scene.get(), &context.embree, &packet.ray);
+      for (int i = 0; i < count; ++i) {
+        const Pending& r = rays_[first + std::size_t(i)];
+        if (packet.ray.tfar[i] < 0.0f) continue;  // blocked
+        (r.ambient ? visibility[r.lane].ambient : visibility[r.lane].key) += r.weight;
+      }
+      tracer.shadow_rays += unsigned(count);
+    }
+    tracer.shadow_seconds += seconds_since(start);
+    rays_.clear();
+  }
+
+ private:
+  struct Pending {
+    Vec3 origin, direction;
+    double tfar;
+    int lane;
+    double weight;
+    bool ambient;
+  };
+  std::vector<Pending> rays_;
+};
+
+// Point k of the n a camera sample takes, stratified over all the n·samples
+// the pixel's camera samples take together.
+void pixel_stratified(const CameraRayJob& job, SamplePurpose purpose, int k, int n, double& u, double& v) {
+  const int index = int(job.sample) * n + k;
+  stratified(index, n * int(job.samples), sample_key(job.pixel, 0, purpose, std::uint64_t(index)), u, v);
+}
+
+// Key-light shadow rays from `point` (whose visible side faces `facing`):
+// light_samples directions over the light's disc, each worth an equal share.
+void add_key_rays(const ShadingSpec& shading, const CameraRayJob& job, const Vec3& point, const Vec3& facing,
+                  double offset, int lane, OcclusionBatch& batch) {
+  const int n = std::max(1, shading.light_size > 0.0 ? shading.light_samples : 1);
+  const double half_angle = 0.5 * shading.light_size * M_PI / 180.0;
+  const Vec3 start = point + offset * facing;
+  for (int k = 0; k < n; ++k) {
+    double u, v;
+    pixel_stratified(job, SamplePurpose::light, k, n, u, v);
+    const Vec3 direction = half_angle > 0.0 ? in_cone(shading.light_from, half_angle, u, v)
+                                            : Vec3(shading.light_from.normalized());
+    if (direction.dot(facing) <= 0.0) continue;  // below the horizon: that part of the disc is hidden
+    batch.add(start, direction, INFINITY, lane, 1.0 / n, false);
+  }
+}
+
+void add_ambient_rays(const ShadingSpec& shading, const CameraRayJob& job, const Vec3& point, const Vec3& facing,
+                      double offset, int lane, OcclusionBatch& batch) {
+  const int n = shading.ao_samples;
+  const Vec3 start = point + offset * facing;
+  for (int k = 0; k < n; ++k) {
+    double u, v;
+    pixel_stratified(job, SamplePurpose::ambient, k, n, u, v);
+    batch.add(start, cosine_hemisphere(facing, u, v), shading.ao_distance, lane, 1.0 / n, true);
+  }
+}
+
+// The shell's layers between the camera and `depth`, composited front to
+// back over `sample`. Opacity rises from shell_opacity facing the viewer to
+// shell_edge_opacity at grazing angles, so the body's outline shows as an
+// edge while glyphs inside stay visible.
+void composite_shell(const RayScene& scene, const ShadingSpec& shading, const CameraRay& ray, CameraSample& sample) {
+  constexpr int max_layers = 8;
+  const Vec3 key = shading.light_from.normalized();
+  std::array<double, 3> sum{0, 0, 0};
+  double transmittance = 1.0;
+  float t_near = 0.0f;
+  const float t_far = std::isinf(sample.depth) ? INFINITY : sample.depth;
+  for (int layer = 0; layer < max_layers; ++layer) {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh = make_embree_ray(ray.origin, ray.direction, t_near, t_far);
+    rtcIntersect1(scene.shell(), &context, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) break;
+    const Vec3 geometric(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+    const Vec3 n = scene.shell_normal(rh.hit.primID, rh.hit.u, rh.hit.v, geometric);
+    const double facing = std::fabs(n.dot(ray.direction));
+    const double grazing = std::pow(1.0 - facing, 3.0);
+    const double alpha = shading.shell_opacity + (shading.shell_edge_opacity - shading.shell_opacity) * grazing;
+    const double lit = shading.ambient + shading.light_intensity * std::fabs(n.dot(key)) + shading.fill_intensity * 0.5;
+    for (int c = 0; c < 3; ++c)
+      sum[std::size_t(c)] += transmittance * alpha * lit * shading.shell_color[std::size_t(c)] * shading.light_color[std::size_t(c)];
+    transmittance *= 1.0 - alpha;
+    t_near = std::nextafter(rh.ray.tfar, INFINITY);
+  }
+  for (int c = 0; c < 3; ++c)
+    sample.color[std::size_t(c)] = float(sum[std::size_t(c)] + transmittance * sample.color[std::size_t(c)]);
+  sample.alpha = float(1.0 - transmittance * (1.0 - sample.alpha));
+}
+
+// What a ray that meets nothing sees: the background, or the ground
+// plane's shadow over it. Returns true when the ground plane needs its
+// shadow rays (then `ground` is the point).
+bool background_sample(const ShadingSpec& shading, const CameraRayJob& job, CameraSample& out, Vec3& ground) {
+  const bool transparent = shading.background_kind == BackgroundKind::transparent;
+  const Rgb bg = background_at(shading, job.picture_v);
+  out.color = transparent ? Rgb{0, 0, 0} : bg;
+  out.alpha = transparent ? 0.0f : 1.0f;
+  if (!shading.ground) return false;
+  const CameraRay& r = job.ray;
+  const double height = r.origin.z() - shading.ground_height;
+  if (height <= 0.0 || r.direction.z() >= 0.0) return false;
+  ground = r.origin + (-height / r.direction.z()) * r.direction;
+  return true;
+}
+
+}  // namespace
+
+void trace_camera_samples(const RayScene& scene, const ShadingSpec& shading, double shadow_offset,
+                          const CameraRayJob* jobs, int count, SampleTracer& tracer, CameraSample* out) {
+  FieldRayContext context(tracer.tracers, tracer.stats);
+  context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  alignas(64) int valid[kMaxPacket];
+  alignas(64) RTCRayHit16 primary{};
+  auto* primary_n = reinterpret_cast<RTCRayHitN*>(&primary);
+  for (int i = 0; i < kMaxPacket; ++i) {
+    valid[i] = i < count ? -1 : 0;
+    if (i < count)
+      set_embree_ray(primary_n, kMaxPacket, unsigned(i), jobs[i].ray.origin, jobs[i].ray.direction, 0.0f, INFINITY);
+  }
+  const auto primary_start = Clock::now();
+  rtcIntersect16(valid, scene.get(), &context.embree, &primary);
+  tracer.primary_seconds += seconds_since(primary_start);
+  tracer.primary_rays += unsigned(count);
+
+  // What each ray met, and the occlusion rays that shading it needs.
+  enum class Met { nothing, ground, glyph, context };
+  Met met[kMaxPacket];
+  Vec3 facing[kMaxPacket], ground[kMaxPacket];
+  Visibility visibility[kMaxPacket];
+  OcclusionBatch batch;
+  for (int i = 0; i < count; ++i) {
+    const CameraRayJob& job = jobs[i];
+    const CameraRay& ray = job.ray;
+    CameraSample& s = out[i] = CameraSample{};
+    const unsigned id = primary.hit.geomID[i];
+    if (id == RTC_INVALID_GEOMETRY_ID) {
+      met[i] = background_sample(shading, job, s, ground[i]) ? Met::ground : Met::nothing;
+      if (met[i] == Met::ground) {
+        visibility[i].key = 0.0;
+        add_key_rays(shading, job, ground[i], Vec3::UnitZ(), shadow_offset, i, batch);
+      }
+      continue;
+    }
+    s.alpha = 1.0f;
+    if (id != scene.field_id()) {
+      // Box edges and trajectory tubes: round, lit by the key light alone.
+      met[i] = Met::context;
+      s.depth = primary.ray.tfar[i];
+      const Vec3 n = Vec3(primary.hit.Ng_x[i], primary.hit.Ng_y[i], primary.hit.Ng_z[i]).normalized();
+      const Rgb& base = id == scene.box_id() ? shading.box_color : shading.trajectory_color;
+      const double lit = id == scene.box_id()
+                             ? 1.0
+                             : 0.6 + 0.4 * std::max(0.0, facing_normal(n, -ray.direction).dot(shading.light_from.normalized()));
+      for (int c = 0; c < 3; ++c) s.color[std::size_t(c)] = float(base[std::size_t(c)] * lit);
+      continue;
+    }
+    met[i] = Met::glyph;
+    const SurfaceSample& surface = context.surface[std::size_t(i)];
+    const double t = context.t[std::size_t(i)];
+    s.depth = float(t);
+    s.normal = {float(surface.normal.x()), float(surface.normal.y()), float(surface.normal.z())};
+    s.scalar = surface.scalar;
+    s.id = std::int32_t(surface.source);
+    const Vec3 x = ray.origin + t * ray.direction;
+    facing[i] = facing_normal(surface.normal, -ray.direction);
+    visibility[i] = {0.0, shading.ao_samples > 0 ? 0.0 : 1.0};
+    // A side facing away from the key light is unlit whatever lies between.
+    if (shading.shadows && facing[i].dot(shading.light_from.normalized()) > -std::sin(0.5 * shading.light_size * M_PI / 180.0))
+      add_key_rays(shading, job, x, facing[i], shadow_offset, i, batch);
+    else if (!shading.shadows)
+      visibility[i].key = 1.0;
+    if (shading.ao_samples > 0) add_ambient_rays(shading, job, x, facing[i], shadow_offset, i, batch);
+  }
+  batch.trace(scene, tracer, visibility);
+
+  for (int i = 0; i < count; ++i) {
+    CameraSample& s = out[i];
+    if (met[i] == Met::glyph) {
+      const SurfaceSample& surface = context.surface[std::size_t(i)];
+      s.color = shade_surface(shading, surface.color, surface.normal, -jobs[i].ray.direction, visibility[i]);
+    } else if (met[i] == Met::ground) {
+      // Only the shadow shows: darker where the data hides the key light.
+      const double shadow = shading.ground_shadow * (1.0 - visibility[i].key);
+      if (shading.background_kind == BackgroundKind::transparent) {
+        s.alpha = float(shadow);  // black, premultiplied: zero colour
+      } else {
+        for (float& c : s.color) c = float(c * (1.0 - shadow));
+      }
+    }
+    if (scene.shell()) composite_shell(scene, shading, jobs[i].ray, s);
+  }
+}
+
+}  // namespace hsb

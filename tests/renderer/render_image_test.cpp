@@ -1,0 +1,81 @@
+// The film: the same bytes whatever the thread count and however often a
+// scene is rendered; alpha that composites; the pixel filter's weights.
+
+#include <gtest/gtest.h>
+
+#include <tbb/global_control.h>
+
+#include "renderer/app/prepared_scene.h"
+#include "renderer/render/pixel_filter.h"
+#include "renderer/render/ray_scene.h"
+
+namespace hsb {
+namespace {
+
+RenderOutput render(const std::string& scene, const std::vector<std::string>& overrides) {
+  const ColorManagement color("", "");
+  const std::unique_ptr<PreparedScene> p = prepare_scene(load_scene_text(scene, "film.toml", "", overrides), color);
+  static const EmbreeDevice device;
+  const RayScene rays(device, p->field, p->trace, p->context);
+  return render_image(rays, p->camera, p->shading, p->render);
+}
+
+// A blended pile with shadows, occlusion, a ground plane and the box: every
+// kind of ray the renderer sends.
+const std::string scene = "[[seeds.grid]]\ncorner = [-0.4, -0.4, 0.6]\nedge_u = [0.8, 0, 0]\nedge_v = [0, 0.8, 0]\n"
+                          "n = 3\nm = 3\n[trajectories]\nfamily = \"minor\"\n[render]\nwidth = 61\nheight = 47\n"
+                          "samples = 2\nground = true\n";
+
+TEST(RenderImage, SameBytesForAnyThreadCountAndEveryRun) {
+  RenderOutput two = render(scene, {});
+  RenderOutput again = render(scene, {});
+  const RenderOutput one = [] {
+    const tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
+    return render(scene, {});
+  }();
+  EXPECT_GT(two.shadow_rays, 0u);
+  for (Plane p : {Plane::color, Plane::alpha}) {
+    EXPECT_EQ(two.film.data(p), one.film.data(p)) << plane_info(p).name << ": 1 thread against 2";
+    EXPECT_EQ(two.film.data(p), again.film.data(p)) << plane_info(p).name << ": a second run";
+  }
+}
+
+TEST(RenderImage, TransparentBackgroundIsAlphaZeroOffTheGlyphsAndOneOnThem) {
+  const RenderOutput out = render(scene, {"render.background=transparent", "render.ground=false",
+                                          "render.box=false", "render.samples=1", "glyphs.mapping=normalized",
+                                          "glyphs.scale=0.6", "render.width=160", "render.height=120"});
+  const std::vector<float>& alpha = out.film.data(Plane::alpha);
+  int clear = 0, solid = 0;
+  for (std::size_t i = 0; i < alpha.size(); ++i) {
+    clear += alpha[i] == 0.0f;
+    solid += alpha[i] > 0.99f;
+  }
+  EXPECT_GT(clear, int(alpha.size()) / 4);  // the corners of the picture
+  EXPECT_GT(solid, 10);                     // the glyphs
+  // Off the glyphs the premultiplied colour is zero too.
+  const std::vector<float>& color = out.film.data(Plane::color);
+  for (std::size_t i = 0; i < alpha.size(); ++i)
+    if (alpha[i] == 0.0f) EXPECT_EQ(color[3 * i] + color[3 * i + 1] + color[3 * i + 2], 0.0f);
+}
+
+TEST(RenderImage, GradientBackgroundRunsFromTopToBottom) {
+  const RenderOutput out = render(scene, {"render.background=[1, 1, 1]", "render.background_bottom=[0, 0, 0]",
+                                          "render.ground=false", "render.box=false", "render.samples=1",
+                                          "glyphs.scale=1e-6", "glyphs.floor=1e-7"});
+  const Film& film = out.film;
+  const float top = film.data(Plane::color)[3 * std::size_t(film.width() / 2)];
+  const float bottom = film.data(Plane::color)[3 * (std::size_t(film.height() - 1) * std::size_t(film.width()))];
+  EXPECT_GT(top, 0.9f);
+  EXPECT_LT(bottom, 0.05f);
+}
+
+TEST(PixelFilter, BlackmanHarrisIsOneAtTheCentreAndZeroAtTheRadius) {
+  EXPECT_NEAR(filter_weight(0, 0), 1.0, 1e-5);
+  EXPECT_NEAR(filter_weight(kFilterRadius, 0), 0.0, 1e-4);
+  EXPECT_EQ(filter_weight(kFilterRadius + 0.01, 0), 0.0);
+  EXPECT_NEAR(filter_weight(0.5, 0.25), filter_weight(-0.5, 0.25), 1e-12);  // symmetric
+  EXPECT_NEAR(filter_weight(0.5, 0.25), filter_weight(0.5, 0) * filter_weight(0, 0.25), 1e-12);  // separable
+}
+
+}  // namespace
+}  // namespace hsb
