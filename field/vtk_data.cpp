@@ -24,18 +24,13 @@
 
 #include "field/data_error.h"
 #include "field/eigenvalue_range.h"
+#include "field/file_extension.h"
 #include "field/mesh_field.h"
 #include "field/uniform_grid.h"
 #include "field/vtk_session.h"
 
 namespace hsb {
 namespace {
-
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
 
 // The data set in `path`; VTK's complaints end up in `vtk`.
 vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSession& vtk) {

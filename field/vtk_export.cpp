@@ -10,9 +10,9 @@
 #include <vtkSmartPointer.h>
 #include <vtkXMLPolyDataWriter.h>
 
-#include <filesystem>
 
 #include "field/data_error.h"
+#include "field/partial_file.h"
 #include "field/vtk_session.h"
 
 namespace hsb {
@@ -34,24 +34,21 @@ void set_matrix(vtkDoubleArray* a, vtkIdType i, const Mat3& m) {
 
 // Written under a temporary name and renamed, so no half-written file stays.
 void write_polydata(vtkPolyData* poly, const std::string& path) {
-  const std::filesystem::path final_path(path);
-  const std::filesystem::path temp = final_path.parent_path() / ("." + final_path.filename().string() + ".partial");
+  PartialFile file(path);
   const VtkSession vtk;
   auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
-  writer->SetFileName(temp.string().c_str());
+  writer->SetFileName(file.path().c_str());
   writer->SetInputData(poly);
   writer->SetDataModeToAppended();
   writer->SetCompressorTypeToZLib();
-  std::error_code error;
   if (writer->Write() != 1) {
-    std::filesystem::remove(temp, error);
     const std::string why = vtk.last_error();
     throw DataError(path + ": cannot write the file" + (why.empty() ? "" : ": " + why));
   }
-  std::filesystem::rename(temp, final_path, error);
-  if (error) {
-    std::filesystem::remove(temp, error);
-    throw DataError(path + ": cannot move the finished file into place");
+  try {
+    file.commit();
+  } catch (const std::runtime_error& e) {
+    throw DataError(e.what());
   }
 }
 

@@ -19,6 +19,7 @@ packages=(
   libopencolorio-dev
   libtomlplusplus-dev libeigen3-dev libcli11-dev
   libvtk9-dev
+  libpango1.0-dev libcairo2-dev
   googletest libgtest-dev
   fonts-dejavu-core
 )

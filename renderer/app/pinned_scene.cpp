@@ -70,7 +70,10 @@ std::string pinned_scene_toml(const PreparedScene& p) {
   pin(!s.render.intersector, "render", "intersector", p.trace.intersector == Intersector::exact ? "exact" : "sphere");
   pin(!s.render.min_step, "render", "min_step", p.trace.min_step);
   pin(!s.output.file, "output", "file", p.output.file);
-  pin(!s.output.colorbar_title, "output", "colorbar_title", p.output.colorbar_title);
+  if (p.output.legend) pin(!s.output.colorbar_title, "output", "colorbar_title", p.output.legend->title);
+  pin(!s.output.bit_depth, "output", "bit_depth", p.output.bit_depth);
+  pin(!s.render.width, "render", "width", p.render.width);
+  pin(!s.render.height, "render", "height", p.render.height);
 
   std::ostringstream out;
   out << "# " << s.path << " with every automatic value written out: save this as a scene\n"

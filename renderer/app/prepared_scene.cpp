@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "renderer/image/colorbar.h"
 #include "renderer/image/image_output.h"
 #include <sstream>
 
@@ -17,6 +16,7 @@ constexpr double kShadowOffsetPerDiagonal = 1e-5;
 constexpr double kMinStepPerDiagonal = 1e-6;
 constexpr double kTubePerGlyph = 0.2;
 constexpr double kOcclusionPerGlyph = 4.0;
+constexpr int kDefaultPixels = 800;
 
 // The median of the glyphs' sizes (largest semi-axes alone); D/50 when
 // there are none.
@@ -31,22 +31,22 @@ double median_glyph_size(const std::vector<GlyphSource>& sources, double extent,
 
 const char* scalar_title(ColorScalar scalar) {
   switch (scalar) {
-    case ColorScalar::lambda1: return "major eigenvalue";
-    case ColorScalar::lambda2: return "medium eigenvalue";
-    case ColorScalar::lambda3: return "minor eigenvalue";
-    case ColorScalar::mean: return "mean eigenvalue";
-    case ColorScalar::von_mises: return "von Mises";
+    case ColorScalar::lambda1: return "major eigenvalue λ₁";
+    case ColorScalar::lambda2: return "medium eigenvalue λ₂";
+    case ColorScalar::lambda3: return "minor eigenvalue λ₃";
+    case ColorScalar::mean: return "mean eigenvalue (λ₁ + λ₂ + λ₃)/3";
+    case ColorScalar::von_mises: return "von Mises stress";
   }
   return "";
 }
 
 ColorScale color_scale(const ColorSpec& spec, const std::vector<GlyphSource>& sources) {
   const Colormap& map = colormap_named(spec.map);
-  if (spec.range) return {&map, (*spec.range)[0], (*spec.range)[1]};
+  if (spec.range) return {&map, (*spec.range)[0], (*spec.range)[1], spec.log};
   std::vector<double> values;
   values.reserve(sources.size());
   for (const GlyphSource& s : sources) values.push_back(s.scalar);
-  return auto_scale(map, values);
+  return auto_scale(map, values, spec.symmetric.value_or(map.diverging), spec.log);
 }
 
 Box3 merged(const Box3& a, const Box3& b) { return {a.lo.cwiseMin(b.lo), a.hi.cwiseMax(b.hi)}; }
@@ -93,6 +93,9 @@ std::vector<std::string> automatic_keys(const SceneSpec& s) {
   note(!s.render.min_step, "render.min_step");
   note(!s.output.file, "output.file");
   note(!s.output.colorbar_title, "output.colorbar_title");
+  note(!s.output.bit_depth, "output.bit_depth");
+  note(!s.render.width, "render.width");
+  note(!s.render.height, "render.height");
   return keys;
 }
 
@@ -169,11 +172,15 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   p.shading.trajectory_color = color.to_scene_linear(p.shading.trajectory_color);
   p.shading.ao_distance = s.light.ao_distance.value_or(kOcclusionPerGlyph * glyph);
 
-  p.render.width = s.render.width;
-  p.render.height = s.render.height;
+  // The picture's size: as given, else the print size at the DPI.
+  const auto pixels = [&](int axis) {
+    return s.output.print_size ? std::max(1, int(std::lround((*s.output.print_size)[std::size_t(axis)] / 25.4 * s.output.dpi)))
+                               : kDefaultPixels;
+  };
+  p.render.width = s.render.width.value_or(pixels(0));
+  p.render.height = s.render.height.value_or(pixels(1));
   p.render.samples = s.render.samples;
   p.render.shadow_offset = s.render.shadow_offset.value_or(kShadowOffsetPerDiagonal * diagonal);
-  if (is_scene_linear_format(s.output.file.value_or(""))) p.render.planes = {Plane::depth};
   // Exact wherever it applies: it was the faster of the two over the
   // figure scenes, and exact; blinn summed has no polynomial form.
   p.trace.intersector = s.render.intersector.value_or(
@@ -182,15 +189,26 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   p.trace.max_steps = s.render.max_steps;
 
   p.output.file = s.output.file.value_or(std::filesystem::path(s.path).stem().string() + ".png");
-  p.output.bit_depth = s.output.bit_depth;
-  p.output.colorbar = s.output.colorbar && !p.field.sources.empty() && !is_scene_linear_format(p.output.file);
-  p.output.colorbar_title = s.output.colorbar_title.value_or(scalar_title(s.pipeline.color));
+  const bool exr = is_scene_linear_format(p.output.file);
+  p.output.bit_depth = s.output.bit_depth.value_or(exr ? 32 : 8);
+  p.output.dpi = s.output.dpi;
+  if (exr) p.render.planes = s.output.layers;
+  PictureReserve reserve;
+  if (s.output.colorbar && !p.field.sources.empty() && !exr) {
+    LegendStyle style;
+    style.placement = s.output.colorbar_position;
+    style.font_size = s.output.font_size;
+    style.length = s.output.colorbar_length;
+    style.dpi = s.output.dpi;
+    p.output.legend = layout_legend(p.scale, s.output.colorbar_title.value_or(scalar_title(s.pipeline.color)),
+                                    style, p.render.width, p.render.height);
+    (style.placement == LegendPlacement::right ? reserve.right : reserve.bottom) = p.output.legend->reserved;
+  }
 
-  const double legend = p.output.colorbar ? colorbar_width_fraction(s.render.width, s.render.height) : 0.0;
   CameraRequest camera = s.camera;
   if (!camera.view) camera.view = automatic_view(domain);
   const Box3 framed = framed_box(s.camera.frame, p);
-  p.camera = frame_camera(camera, framed, s.render.width, s.render.height, legend);
+  p.camera = frame_camera(camera, framed, p.render.width, p.render.height, reserve);
   p.shading.ground = s.context.ground;
   p.shading.ground_height = s.context.ground_height.value_or(framed.lo.z());
 

@@ -9,6 +9,7 @@
 #include "field/glyph_pipeline.h"
 #include "renderer/image/color_management.h"
 #include "renderer/image/colormap.h"
+#include "renderer/image/legend.h"
 #include "renderer/render/ray_scene.h"
 #include "renderer/scene/scene_spec.h"
 #include "renderer/surface/blob_field.h"
@@ -18,9 +19,9 @@ namespace hsb {
 // The output side, resolved.
 struct OutputSettings {
   std::string file;  // relative to the output folder
-  int bit_depth = 8;
-  bool colorbar = true;
-  std::string colorbar_title;
+  int bit_depth = 8;  // PNG/TIFF: 8 or 16; EXR: 16 (half) or 32 (float)
+  double dpi = 300.0;
+  std::optional<LegendLayout> legend;  // none: no colour bar
 };
 
 struct PreparedScene {

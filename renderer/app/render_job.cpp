@@ -2,6 +2,7 @@
 
 #include <OpenImageIO/hash.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <map>
@@ -9,7 +10,9 @@
 
 #include "renderer/app/prepared_scene.h"
 #include "renderer/image/color_management.h"
-#include "renderer/image/colorbar.h"
+#include "renderer/image/display_image.h"
+#include "renderer/image/legend.h"
+#include "renderer/image/vector_figure.h"
 #include "renderer/image/colormap.h"
 #include "renderer/image/image_output.h"
 #include "renderer/render/ray_scene.h"
@@ -62,6 +65,42 @@ std::map<std::string, std::string> image_metadata(const SceneSpec& spec, const C
 
 }  // namespace
 
+namespace {
+
+// The EXR's channels: RGBA, then each of the film's other planes.
+ImageToWrite scene_linear_image(const Film& film) {
+  ImageToWrite image;
+  image.width = film.width();
+  image.height = film.height();
+  const std::vector<Plane> planes = film.planes();
+  image.channels = 0;
+  for (Plane p : planes) {
+    const PlaneInfo& info = plane_info(p);
+    for (int c = 0; c < info.channels; ++c) {
+      if (p == Plane::id) image.integer_channels.push_back(image.channels);
+      image.channel_names.push_back(info.channel_names[std::size_t(c)]);
+      ++image.channels;
+    }
+  }
+  const std::size_t pixels = std::size_t(film.width()) * std::size_t(film.height());
+  image.pixels.resize(pixels * std::size_t(image.channels));
+  std::size_t offset = 0;
+  for (Plane p : planes) {
+    const std::vector<float>& data = film.data(p);
+    const std::size_t n = std::size_t(plane_info(p).channels);
+    for (std::size_t i = 0; i < pixels; ++i)
+      for (std::size_t c = 0; c < n; ++c) {
+        float v = data[i * n + c];
+        if (p == Plane::id) v += 1.0f;  // unsigned: 0 where no glyph, else the source's index + 1
+        image.pixels[i * std::size_t(image.channels) + offset + c] = v;
+      }
+    offset += n;
+  }
+  return image;
+}
+
+}  // namespace
+
 RenderSummary run_render_job(const RenderJob& job) {
   const auto start = Clock::now();
   SceneSpec loaded = load_scene_or_data_file(job.scene_path, job.overrides);
@@ -70,55 +109,48 @@ RenderSummary run_render_job(const RenderJob& job) {
   const SceneSpec& spec = prepared->spec;
   const BlobField& field = prepared->field;
   const ColorScale& scale = prepared->scale;
+  const OutputSettings& output = prepared->output;
 
   static const EmbreeDevice device;
   const RayScene scene(device, field, prepared->trace, prepared->context);
   const double build_seconds = seconds_since(start);
   RenderOutput rendered = render_image(scene, prepared->camera, prepared->shading, prepared->render);
 
-  // Image: display transform (or scene-linear EXR), colour bar, metadata.
+  // Render → result (the film) → display image → annotation → file.
   const auto output_start = Clock::now();
-  const std::filesystem::path image_path = std::filesystem::path(job.output_dir) / prepared->output.file;
+  const std::filesystem::path image_path = std::filesystem::path(job.output_dir) / output.file;
   std::filesystem::create_directories(image_path.parent_path());
-  Film& film = rendered.film;
-  ImageToWrite image;
-  image.width = film.width();
-  image.height = film.height();
-  image.bit_depth = prepared->output.bit_depth;
-  image.metadata = image_metadata(spec, scale, color, field.sources.size());
-  const std::size_t pixels = std::size_t(film.width()) * std::size_t(film.height());
-  const std::vector<float>& rgb = film.data(Plane::color);
-  const std::vector<float>& alpha = film.data(Plane::alpha);
+  std::map<std::string, std::string> metadata = image_metadata(spec, scale, color, field.sources.size());
   if (is_scene_linear_format(image_path.string())) {
-    // EXR keeps scene-linear data, with the camera distance as a Z channel.
-    image.channels = 5;
-    image.channel_names = {"R", "G", "B", "A", "Z"};
-    image.pixels.resize(pixels * 5);
-    const std::vector<float>& depth = film.data(Plane::depth);
-    for (std::size_t i = 0; i < pixels; ++i) {
-      for (int c = 0; c < 3; ++c) image.pixels[i * 5 + std::size_t(c)] = rgb[i * 3 + std::size_t(c)];
-      image.pixels[i * 5 + 3] = alpha[i];
-      image.pixels[i * 5 + 4] = depth[i];
-    }
+    ImageToWrite image = scene_linear_image(rendered.film);
+    image.bit_depth = output.bit_depth;
+    image.dpi = output.dpi;
+    image.metadata = std::move(metadata);
+    write_image(image, image_path.string());
   } else {
-    // The display transform works on colours, not on colours times
-    // coverage: undo the premultiplication around it.
+    const int width = rendered.film.width(), height = rendered.film.height();
     const bool transparent = prepared->shading.background_kind == BackgroundKind::transparent;
-    std::vector<float> rgba(pixels * 4);
-    for (std::size_t i = 0; i < pixels; ++i) {
-      const float a = transparent ? alpha[i] : 1.0f;
-      for (int c = 0; c < 3; ++c) rgba[i * 4 + std::size_t(c)] = a > 0.0f ? rgb[i * 3 + std::size_t(c)] / a : 0.0f;
-      rgba[i * 4 + 3] = a;
+    std::vector<float> rgba = display_pixels(rendered.film, color, transparent);
+    rendered.film = Film(1, 1);  // its memory is no longer needed
+    const LegendLayout* legend = output.legend ? &*output.legend : nullptr;
+    const float ink = legend ? ink_over(rgba, width, std::clamp(int(legend->bar_x0) - 2, 0, width - 1),
+                                        std::clamp(int(legend->bar_y0), 0, height - 1))
+                             : 0.0f;
+    if (is_vector_format(image_path.string())) {
+      VectorFigure figure{&rgba, width, height, output.dpi, legend, &scale, ink, std::move(metadata)};
+      write_vector_figure(figure, color, image_path.string());
+    } else {
+      if (legend) draw_legend(rgba, width, height, *legend, scale, color, ink);
+      ImageToWrite image;
+      image.width = width;
+      image.height = height;
+      image.bit_depth = output.bit_depth;
+      image.dpi = output.dpi;
+      image.metadata = std::move(metadata);
+      image.pixels = std::move(rgba);
+      write_image(image, image_path.string());
     }
-    film = Film(1, 1);  // its memory is no longer needed
-    color.apply_display(rgba, image.width, image.height);
-    for (std::size_t i = 0; i < pixels; ++i)
-      for (int c = 0; c < 3; ++c) rgba[i * 4 + std::size_t(c)] *= rgba[i * 4 + 3];
-    if (prepared->output.colorbar)
-      draw_colorbar(rgba, image.width, image.height, scale, {prepared->output.colorbar_title}, color);
-    image.pixels = std::move(rgba);
   }
-  write_image(image, image_path.string());
 
   RenderSummary summary;
   summary.image_path = image_path.string();

@@ -4,35 +4,27 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "renderer/image/colormap_tables.h"
+
 namespace hsb {
 namespace {
 
-Rgb bytes(int r, int g, int b) { return {float(r) / 255.0f, float(g) / 255.0f, float(b) / 255.0f}; }
-
-Colormap make_viridis() {
-  // matplotlib's viridis (van der Walt and Smith) at nine evenly spaced
-  // points (#440154 … #FDE725), interpolated linearly in between.
-  return {"viridis",
-          {bytes(68, 1, 84), bytes(71, 45, 123), bytes(59, 82, 139), bytes(44, 114, 142),
-           bytes(33, 144, 140), bytes(39, 173, 129), bytes(93, 200, 99), bytes(170, 220, 50),
-           bytes(253, 231, 37)},
-          false};
+// Every published table, and each reversed as "<name>_r".
+std::vector<Colormap> make_colormaps() {
+  std::vector<Colormap> maps;
+  for (const ColormapTable& t : colormap_tables()) {
+    Colormap map{t.name, {}, t.diverging};
+    for (const auto& c : t.colors) map.table.push_back({c[0], c[1], c[2]});
+    Colormap reversed{map.name + "_r", {map.table.rbegin(), map.table.rend()}, t.diverging};
+    maps.push_back(std::move(map));
+    maps.push_back(std::move(reversed));
+  }
+  return maps;
 }
 
-Colormap make_coolwarm() {
-  // Moreland's smooth cool–warm diverging map ("Diverging Color Maps for
-  // Scientific Visualization", 2009), 33 samples.
-  return {"coolwarm",
-          {bytes(59, 76, 192),   bytes(68, 90, 204),   bytes(77, 104, 215),  bytes(87, 117, 225),
-           bytes(98, 130, 234),  bytes(108, 142, 241), bytes(119, 154, 247), bytes(130, 165, 251),
-           bytes(141, 176, 254), bytes(152, 185, 255), bytes(163, 194, 255), bytes(174, 201, 253),
-           bytes(184, 208, 249), bytes(194, 213, 244), bytes(204, 217, 238), bytes(213, 219, 230),
-           bytes(221, 221, 221), bytes(229, 216, 209), bytes(236, 211, 197), bytes(241, 204, 185),
-           bytes(245, 196, 173), bytes(247, 187, 160), bytes(247, 177, 148), bytes(247, 166, 135),
-           bytes(244, 154, 123), bytes(241, 141, 111), bytes(236, 127, 99),  bytes(229, 112, 88),
-           bytes(222, 96, 77),   bytes(213, 80, 66),   bytes(203, 62, 56),   bytes(192, 40, 47),
-           bytes(180, 4, 38)},
-          true};
+const std::vector<Colormap>& colormaps() {
+  static const std::vector<Colormap> maps = make_colormaps();
+  return maps;
 }
 
 }  // namespace
@@ -49,19 +41,25 @@ Rgb Colormap::at(double u) const {
 }
 
 const std::vector<std::string>& colormap_names() {
-  static const std::vector<std::string> names{"viridis", "coolwarm"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const Colormap& m : colormaps()) out.push_back(m.name);
+    return out;
+  }();
   return names;
 }
 
 const Colormap& colormap_named(const std::string& name) {
-  static const Colormap viridis = make_viridis();
-  static const Colormap coolwarm = make_coolwarm();
-  if (name == "viridis") return viridis;
-  if (name == "coolwarm") return coolwarm;
+  for (const Colormap& m : colormaps())
+    if (m.name == name) return m;
   throw std::invalid_argument("unknown colormap \"" + name + "\"");
 }
 
-double ColorScale::normalized(double value) const { return (value - lo) / (hi - lo); }
+double ColorScale::normalized(double value) const {
+  if (!log) return (value - lo) / (hi - lo);
+  if (!(value > 0.0)) return 0.0;
+  return (std::log10(value) - std::log10(lo)) / (std::log10(hi) - std::log10(lo));
+}
 
 namespace {
 
@@ -74,10 +72,23 @@ double quantile(std::vector<double> values, double q) {
 
 }  // namespace
 
-ColorScale auto_scale(const Colormap& map, const std::vector<double>& values) {
-  ColorScale scale{&map, 0.0, 1.0};
+ColorScale auto_scale(const Colormap& map, const std::vector<double>& values, bool symmetric, bool log) {
+  ColorScale scale{&map, 0.0, 1.0, log};
+  if (log) {
+    std::vector<double> positive;
+    for (double v : values)
+      if (v > 0.0 && std::isfinite(v)) positive.push_back(v);
+    if (positive.empty()) {
+      scale.lo = 1.0, scale.hi = 10.0;
+      return scale;
+    }
+    scale.lo = quantile(positive, 0.02);
+    scale.hi = quantile(positive, 0.98);
+    if (!(scale.hi > scale.lo)) scale.lo /= 10.0, scale.hi *= 10.0;
+    return scale;
+  }
   if (values.empty()) return scale;
-  if (map.diverging) {
+  if (symmetric) {
     std::vector<double> magnitudes(values.size());
     std::transform(values.begin(), values.end(), magnitudes.begin(), [](double v) { return std::fabs(v); });
     const double m = quantile(std::move(magnitudes), 0.98);

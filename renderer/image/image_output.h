@@ -1,5 +1,5 @@
 #pragma once
-// Writing finished images through OpenImageIO.
+// Writing finished raster images through OpenImageIO.
 
 #include <map>
 #include <string>
@@ -11,8 +11,12 @@ struct ImageToWrite {
   int width = 0, height = 0;
   int channels = 4;
   std::vector<std::string> channel_names;  // empty: OIIO's defaults (R, G, B, A)
-  std::vector<float> pixels;               // width*height*channels, top row first
-  int bit_depth = 8;                       // 8 or 16 for PNG/TIFF; ignored for EXR (float)
+  std::vector<float> pixels;               // width*height*channels, top row first; colour premultiplied by alpha
+  // PNG and TIFF: 8 or 16 bits an integer channel. EXR: 16 (half) or 32
+  // (float) bits.
+  int bit_depth = 8;
+  std::vector<int> integer_channels;  // EXR: channels stored as 32-bit unsigned integers (ids)
+  double dpi = 0.0;                   // written as the image's resolution when > 0
   std::map<std::string, std::string> metadata;
 };
 
@@ -22,11 +26,12 @@ struct ImageToWrite {
 // std::runtime_error with OIIO's message on failure.
 void write_image(const ImageToWrite& image, const std::string& path);
 
-// True for the extensions write_image() accepts: .png, .tif, .tiff, .exr
-// (any case).
+// True for every extension a picture can be written to: .png, .tif,
+// .tiff, .exr (write_image), .pdf, .svg (vector_figure.h); any case.
 bool is_supported_image_path(const std::string& path);
-
 // True for extensions whose images hold scene-linear data (EXR).
 bool is_scene_linear_format(const std::string& path);
+// True for the vector formats, PDF and SVG.
+bool is_vector_format(const std::string& path);
 
 }  // namespace hsb

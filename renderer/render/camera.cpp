@@ -16,12 +16,14 @@ Camera::Camera(const CameraSpec& spec, int width, int height)
   down_ = forward_.cross(right_);  // image y grows downwards
   half_height_ = projection_ == Projection::perspective ? std::tan(0.5 * spec.fov_degrees * M_PI / 180.0)
                                                          : 0.5 * spec.height;
-  half_width_ = half_height_ * double(width) / double(height);
+  frame_width_ = spec.frame_width * width;
+  frame_height_ = spec.frame_height * height;
+  half_width_ = half_height_ * frame_width_ / frame_height_;
 }
 
 CameraRay Camera::ray(double x, double y) const {
-  const double sx = (2.0 * x / width_ - 1.0) * half_width_;
-  const double sy = (2.0 * y / height_ - 1.0) * half_height_;
+  const double sx = (2.0 * x / frame_width_ - 1.0) * half_width_;
+  const double sy = (2.0 * y / frame_height_ - 1.0) * half_height_;
   if (projection_ == Projection::orthographic) return {origin_ + sx * right_ + sy * down_, forward_};
   return {origin_, (forward_ + sx * right_ + sy * down_).normalized()};
 }

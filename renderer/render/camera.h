@@ -14,6 +14,10 @@ struct CameraSpec {
   Projection projection = Projection::perspective;
   double fov_degrees = 30.0;  // perspective: vertical field of view
   double height = 1.0;        // orthographic: the view's height, in world units
+  // The part of the picture the view above describes, from its top-left
+  // corner, as fractions of its width and height; the rest (a legend's
+  // place) extends the same view to the right and below.
+  double frame_width = 1.0, frame_height = 1.0;
 };
 
 struct CameraRay {
@@ -34,7 +38,8 @@ class Camera {
 
  private:
   Vec3 origin_, forward_, right_, down_;
-  double half_height_, half_width_;  // perspective: tangents; orthographic: lengths
+  double half_height_, half_width_;  // of the frame; perspective: tangents; orthographic: lengths
+  double frame_width_, frame_height_;  // in pixels
   int width_, height_;
   Projection projection_;
 };

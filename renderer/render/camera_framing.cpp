@@ -68,7 +68,7 @@ Vec3 automatic_view(const Box3& data) {
 }
 
 CameraSpec frame_camera(const CameraRequest& request, const Box3& framed, int width, int height,
-                        double reserved) {
+                        const PictureReserve& reserve) {
   // Something to frame even when nothing is drawn.
   Box3 box = framed;
   if (!(box.diagonal() > 0.0) || !box.lo.allFinite() || !box.hi.allFinite()) {
@@ -89,14 +89,17 @@ CameraSpec frame_camera(const CameraRequest& request, const Box3& framed, int wi
   const Vec3 right = forward.cross(camera.up).normalized();
   const Vec3 up = right.cross(forward);
   const std::array<Vec3, 8> points = corners(box);
-  // The free part of the picture: its aspect, and how far its centre lies
-  // left of the picture's, in half-widths.
-  const double free = std::clamp(1.0 - reserved, 0.6, 1.0);
-  const double aspect = free * double(width) / double(height);
-  const double offset = 1.0 - free;
-  const double shrink = std::max(0.05, 1.0 - 2.0 * request.margin);
   const bool recentre = !request.look_at;
   Vec3 target = request.look_at.value_or(box.centre());
+
+  // The camera describes the free part of the picture, the frame (its
+  // top-left part); the legend's place extends the same view. The window
+  // is the frame less the margin, in the frame's own coordinates: x from
+  // −1 (left) to 1 (right), y from −1 (bottom) to 1.
+  camera.frame_width = 1.0 - std::clamp(reserve.right, 0.0, 0.4);
+  camera.frame_height = 1.0 - std::clamp(reserve.bottom, 0.0, 0.4);
+  const double u_lo = -1.0 + 2.0 * request.margin, u_hi = -u_lo, v_lo = u_lo, v_hi = u_hi;
+  const double aspect = camera.frame_width * double(width) / (camera.frame_height * double(height));
 
   if (camera.projection == Projection::orthographic) {
     double x_lo = INFINITY, x_hi = -INFINITY, y_lo = INFINITY, y_hi = -INFINITY;
@@ -104,14 +107,18 @@ CameraSpec frame_camera(const CameraRequest& request, const Box3& framed, int wi
       x_lo = std::min(x_lo, (p - target).dot(right)), x_hi = std::max(x_hi, (p - target).dot(right));
       y_lo = std::min(y_lo, (p - target).dot(up)), y_hi = std::max(y_hi, (p - target).dot(up));
     }
+    // The view's half-height h: the window is [u_lo, u_hi]·h·aspect by
+    // [v_lo, v_hi]·h in the view plane.
+    double half;
     if (recentre) {
-      target += 0.5 * (x_lo + x_hi) * right + 0.5 * (y_lo + y_hi) * up;
-      const double half_x = 0.5 * (x_hi - x_lo), half_y = 0.5 * (y_hi - y_lo);
-      x_lo = -half_x, x_hi = half_x, y_lo = -half_y, y_hi = half_y;
+      half = std::max((x_hi - x_lo) / ((u_hi - u_lo) * aspect), (y_hi - y_lo) / (v_hi - v_lo));
+      // Put the box's middle at the window's middle.
+      target += (0.5 * (x_lo + x_hi) - 0.5 * (u_lo + u_hi) * half * aspect) * right +
+                (0.5 * (y_lo + y_hi) - 0.5 * (v_lo + v_hi) * half) * up;
+    } else {
+      half = std::max({x_hi / (u_hi * aspect), x_lo / (u_lo * aspect), y_hi / v_hi, y_lo / v_lo});
     }
-    const double half_x = std::max(-x_lo, x_hi), half_y = std::max(-y_lo, y_hi);
-    camera.height = request.height.value_or(2.0 * std::max(half_y, half_x / aspect) / shrink);
-    if (recentre) target += offset * 0.5 * camera.height * double(width) / double(height) * right;
+    camera.height = request.height.value_or(2.0 * half);
     camera.look_at = target;
     // In front of everything: rays start on the plane through the position.
     camera.position =
@@ -124,14 +131,9 @@ CameraSpec frame_camera(const CameraRequest& request, const Box3& framed, int wi
     camera.position = *request.position;
     return camera;
   }
-  // The free part of the picture, less the margin, as tangents of the
-  // angle from the view axis: x ∈ [x_lo, x_hi], y ∈ [−y_half, y_half].
-  const double tan_y_full = std::tan(0.5 * request.fov_degrees * M_PI / 180.0);
-  const double tan_x_full = tan_y_full * double(width) / double(height);
-  const double free_width = 2.0 * free * tan_x_full;
-  const double x_lo = -tan_x_full + request.margin * free_width;
-  const double x_hi = tan_x_full - 2.0 * offset * tan_x_full - request.margin * free_width;
-  const double y_half = tan_y_full * shrink;
+  // The window as tangents of the angle from the view axis.
+  const double tan_y = std::tan(0.5 * request.fov_degrees * M_PI / 180.0), tan_x = tan_y * aspect;
+  const double x_lo = u_lo * tan_x, x_hi = u_hi * tan_x, y_lo = v_lo * tan_y, y_hi = v_hi * tan_y;
   const double clearance = 1e-3 * box.diagonal();
 
   // Corners in the camera's frame about the target: r along `right`, u
@@ -164,14 +166,14 @@ CameraSpec frame_camera(const CameraRequest& request, const Box3& framed, int wi
       }
       return 0.5 * (from + to);
     };
-    p_f = std::min({p_f, closest(0, x_lo, x_hi), closest(1, -y_half, y_half)});
+    p_f = std::min({p_f, closest(0, x_lo, x_hi), closest(1, y_lo, y_hi)});
     p_r = middle(0, x_lo, x_hi);
-    p_u = middle(1, -y_half, y_half);
+    p_u = middle(1, y_lo, y_hi);
   } else {
     // The view passes through the given look_at: only the distance is free.
     for (const Vec3& corner : c) {
       const double x = corner.x(), y = corner.y();
-      p_f = std::min({p_f, corner.z() - (x > 0.0 ? x / x_hi : x / x_lo), corner.z() - std::fabs(y) / y_half});
+      p_f = std::min({p_f, corner.z() - (x > 0.0 ? x / x_hi : x / x_lo), corner.z() - (y > 0.0 ? y / y_hi : y / y_lo)});
     }
   }
   camera.position = target + p_r * right + p_u * up + p_f * forward;

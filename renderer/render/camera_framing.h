@@ -45,12 +45,20 @@ Vec3 automatic_up(const Vec3& view);
 // above, its length across the picture, the near end a little closer.
 Vec3 automatic_view(const Box3& data);
 
-// The camera for `request`, framing `box` in a width×height picture of
-// which the right `reserved` fraction holds a legend. Given position and
-// look_at win; whatever is missing is found so that the box's corners
-// project inside the margin of the free part (perspective: the distance
-// along the view; orthographic: the view height), centred in it.
+// The parts of the picture a legend takes, as fractions of its width (at
+// the right) and of its height (at the bottom); at most 0.4 each.
+struct PictureReserve {
+  double right = 0.0, bottom = 0.0;
+};
+
+// The camera for `request`, framing `box` in a width×height picture less
+// `reserve`. The camera describes the free part (CameraSpec::frame_width,
+// frame_height), so a view framed by hand, or pinned by `hsb info`, stays
+// clear of the legend. Given position and look_at win; whatever is missing is found
+// so that the box's corners project inside the margin of the free part
+// (perspective: the distance along the view; orthographic: the view
+// height), centred in it.
 CameraSpec frame_camera(const CameraRequest& request, const Box3& box, int width, int height,
-                        double reserved = 0.0);
+                        const PictureReserve& reserve = {});
 
 }  // namespace hsb

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "field/file_extension.h"
 #include "renderer/image/colormap.h"
 #include "renderer/image/image_output.h"
 #include "renderer/scene/scene_spec.h"
@@ -45,8 +46,7 @@ void apply_override(toml::table& root, const std::string& text) {
 }
 
 bool has_data_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  const std::string ext = lower_extension(path);
   return ext == ".vtk" || ext == ".vti" || ext == ".vtu" || ext == ".vts" || ext == ".vtr";
 }
 
@@ -167,8 +167,12 @@ void read_color(TableReader& c, ColorSpec& spec) {
   std::vector<std::pair<std::string, std::string>> maps;
   for (const std::string& name : colormap_names()) maps.emplace_back(name, name);
   spec.map = c.choice<std::string>("map", "viridis", maps);
+  spec.log = c.choice("scale", false, {{"linear", false}, {"log", true}});
+  spec.symmetric = c.optional_boolean("symmetric");
+  if (spec.log && spec.symmetric.value_or(false)) c.fail_at("symmetric", "cannot be true with color.scale = \"log\"");
   if (const std::vector<double> r = c.numbers("range", 2); !r.empty()) {
     if (!(r[1] > r[0])) c.fail_at("range", "must be [low, high] with low < high");
+    if (spec.log && !(r[0] > 0.0)) c.fail_at("range", "must be above zero with color.scale = \"log\"");
     spec.range = std::array<double, 2>{r[0], r[1]};
   }
   c.finish();
@@ -258,8 +262,9 @@ void read_background(TableReader& r, ShadingSpec& spec) {
 
 void read_render(TableReader& r, SceneSpec& spec) {
   RenderSpec& render = spec.render;
-  render.width = r.integer("width", render.width, 1, 16384);
-  render.height = r.integer("height", render.height, 1, 16384);
+  if (r.has("width")) render.width = r.integer("width", 0, 1, 16384);
+  if (r.has("height")) render.height = r.integer("height", 0, 1, 16384);
+  r.integer("width", 0), r.integer("height", 0);  // known keys even when absent
   render.samples = r.integer("samples", render.samples, 1, 16);
   render.shadow_offset = r.optional_number("shadow_offset", positive);
   read_background(r, spec.shading);
@@ -295,12 +300,39 @@ void read_render(TableReader& r, SceneSpec& spec) {
 void read_output(TableReader& o, OutputSpec& spec) {
   spec.file = o.optional_string("file");
   if (spec.file && !is_supported_image_path(*spec.file))
-    o.fail_at("file", "must end in .png, .tif, .tiff or .exr, got \"" + *spec.file + "\"");
-  spec.bit_depth = o.integer("bit_depth", spec.bit_depth, 8, 16);
-  if (spec.bit_depth != 8 && spec.bit_depth != 16) o.fail_at("bit_depth", "must be 8 or 16");
+    o.fail_at("file", "must end in .png, .tif, .tiff, .exr, .pdf or .svg, got \"" + *spec.file + "\"");
+  const bool exr = spec.file && is_scene_linear_format(*spec.file);
+  if (o.has("bit_depth")) {
+    spec.bit_depth = o.integer("bit_depth", 8, 8, 32);
+    if (exr ? *spec.bit_depth != 16 && *spec.bit_depth != 32 : *spec.bit_depth != 8 && *spec.bit_depth != 16)
+      o.fail_at("bit_depth", exr ? "must be 16 (half) or 32 (float) for an EXR" : "must be 8 or 16");
+  } else {
+    o.integer("bit_depth", 8);  // a known key even when absent
+  }
+  if (o.has("layers")) {
+    spec.layers.clear();
+    std::vector<std::pair<std::string, Plane>> names;
+    for (Plane p : {Plane::depth, Plane::normal, Plane::scalar, Plane::id}) names.emplace_back(plane_info(p).name, p);
+    for (const std::string& name : o.strings("layers")) {
+      const auto it = std::find_if(names.begin(), names.end(), [&](const auto& n) { return n.first == name; });
+      if (it == names.end()) o.fail_at("layers", "must name layers among \"depth\", \"normal\", \"scalar\", \"id\", got \"" + name + "\"");
+      spec.layers.push_back(it->second);
+    }
+  } else {
+    o.strings("layers");  // a known key even when absent
+  }
+  spec.dpi = o.number("dpi", spec.dpi, {1.0, 10000.0, false});
+  if (const std::vector<double> size = o.numbers("print_size", 2); !size.empty()) {
+    if (!(size[0] > 0.0 && size[1] > 0.0)) o.fail_at("print_size", "must be [width, height] in millimetres, both > 0");
+    spec.print_size = std::array<double, 2>{size[0], size[1]};
+  }
   spec.display = o.optional_string("display");
   spec.view = o.optional_string("view");
   spec.colorbar = o.boolean("colorbar", spec.colorbar);
+  spec.colorbar_position = o.choice("colorbar_position", spec.colorbar_position,
+                                    {{"right", LegendPlacement::right}, {"bottom", LegendPlacement::bottom}});
+  spec.colorbar_length = o.number("colorbar_length", spec.colorbar_length, {0.1, 1.0, false});
+  spec.font_size = o.number("font_size", spec.font_size, {1.0, 72.0, false});
   spec.colorbar_title = o.optional_string("colorbar_title");
   o.finish();
 }

@@ -14,6 +14,7 @@
 #include <toml++/toml.h>
 
 #include "field/glyph_pipeline.h"
+#include "renderer/image/legend.h"
 #include "renderer/render/camera_framing.h"
 #include "renderer/render/render_image.h"
 #include "renderer/render/shading.h"
@@ -33,6 +34,8 @@ struct SurfaceSpec {
 struct ColorSpec {
   std::string map = "viridis";
   std::optional<std::array<double, 2>> range;  // automatic: from the sources
+  std::optional<bool> symmetric;               // automatic: for a diverging map
+  bool log = false;                            // by the logarithm of the scalar
 };
 
 // What is drawn around the glyphs. Automatic: a box frames an analytic
@@ -57,7 +60,8 @@ struct LightLengths {
 
 // The [render] table's image and tracing keys.
 struct RenderSpec {
-  int width = 800, height = 800;
+  // Automatic: output.print_size at output.dpi, or 800 × 800.
+  std::optional<int> width, height;
   int samples = 2;
   std::optional<double> shadow_offset;     // in the data's units; automatic: D·1e-5
   std::optional<Intersector> intersector;  // automatic: exact where it applies
@@ -67,9 +71,15 @@ struct RenderSpec {
 
 struct OutputSpec {
   std::optional<std::string> file;  // relative to the output folder; automatic: <scene stem>.png
-  int bit_depth = 8;                // PNG/TIFF
+  std::optional<int> bit_depth;     // automatic: 8 for PNG and TIFF, 32 (float) for EXR
+  std::vector<Plane> layers{Plane::depth, Plane::normal, Plane::scalar, Plane::id};  // an EXR's, besides RGBA
+  double dpi = 300.0;
+  std::optional<std::array<double, 2>> print_size;  // millimetres
   std::optional<std::string> display, view;  // OCIO; automatic: the config's defaults
   bool colorbar = true;
+  LegendPlacement colorbar_position = LegendPlacement::right;
+  double colorbar_length = 0.6;
+  double font_size = 7.0;  // points
   std::optional<std::string> colorbar_title;  // automatic: named after glyphs.color_by
 };
 

@@ -144,6 +144,19 @@ std::vector<double> TableReader::numbers(std::string_view key, std::size_t count
   return out;
 }
 
+std::vector<std::string> TableReader::strings(std::string_view key) {
+  const toml::node* node = lookup(key);
+  if (!node) return {};
+  const toml::array* array = node->as_array();
+  if (!array) fail(*node, key, "must be an array of strings, got " + describe(*node));
+  std::vector<std::string> out;
+  for (const toml::node& element : *array) {
+    if (!element.is_string()) fail(element, key, "must be an array of strings, got an element " + describe(element));
+    out.push_back(element.as_string()->get());
+  }
+  return out;
+}
+
 Vec3 TableReader::vec3(std::string_view key, const Vec3& fallback) {
   if (!table_.contains(key)) {
     known_.emplace(key);

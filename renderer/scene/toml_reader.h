@@ -58,6 +58,8 @@ class TableReader {
   Rgb color(std::string_view key, const Rgb& fallback);
   // Numbers, exactly `count` of them (any count when count is 0).
   std::vector<double> numbers(std::string_view key, std::size_t count);
+  // An array of strings (empty when absent).
+  std::vector<std::string> strings(std::string_view key);
 
   // One of a fixed set of names, mapped to a value.
   template <class T>

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "renderer/render/camera.h"
 #include "renderer/render/camera_framing.h"
 
 namespace hsb {
@@ -24,13 +25,16 @@ Projected project(const CameraSpec& c, int width, int height, const Vec3& p) {
   const double depth = q.dot(forward);
   const double half_h = c.projection == Projection::perspective ? std::tan(0.5 * c.fov_degrees * M_PI / 180.0)
                                                                 : 0.5 * c.height;
-  const double half_w = half_h * width / height;
+  // The view describes the frame, the picture's top-left part.
+  const double frame_w = c.frame_width * width, frame_h = c.frame_height * height;
+  const double half_w = half_h * frame_w / frame_h;
   const double scale = c.projection == Projection::perspective ? depth : 1.0;
-  return {(q.dot(right) / scale / half_w + 1.0) * 0.5 * width, (q.dot(down) / scale / half_h + 1.0) * 0.5 * height,
+  return {(q.dot(right) / scale / half_w + 1.0) * 0.5 * frame_w, (q.dot(down) / scale / half_h + 1.0) * 0.5 * frame_h,
           depth};
 }
 
-void expect_framed(const CameraSpec& camera, const Box3& box, int width, int height, double reserved, double margin) {
+void expect_framed(const CameraSpec& camera, const Box3& box, int width, int height, const PictureReserve& reserve,
+                   double margin) {
   double x_lo = 1e300, x_hi = -1e300, y_lo = 1e300, y_hi = -1e300;
   for (int i = 0; i < 8; ++i) {
     const Vec3 corner(i & 1 ? box.hi.x() : box.lo.x(), i & 2 ? box.hi.y() : box.lo.y(), i & 4 ? box.hi.z() : box.lo.z());
@@ -38,19 +42,19 @@ void expect_framed(const CameraSpec& camera, const Box3& box, int width, int hei
     EXPECT_GT(p.depth, 0.0) << "a corner behind the camera";
     x_lo = std::min(x_lo, p.x), x_hi = std::max(x_hi, p.x), y_lo = std::min(y_lo, p.y), y_hi = std::max(y_hi, p.y);
   }
-  // The margin is a fraction of the free part's width and of the height.
-  const double free_width = (1.0 - reserved) * width;
-  const double slack = 0.01 * std::max(free_width, double(height));
+  // The margin is a fraction of the free part's width and height.
+  const double free_width = (1.0 - reserve.right) * width, free_height = (1.0 - reserve.bottom) * height;
+  const double slack = 0.01 * std::max(free_width, free_height);
   EXPECT_GE(x_lo, margin * free_width - slack);
   EXPECT_LE(x_hi, free_width - margin * free_width + slack);
-  EXPECT_GE(y_lo, margin * height - slack);
-  EXPECT_LE(y_hi, height - margin * height + slack);
+  EXPECT_GE(y_lo, margin * free_height - slack);
+  EXPECT_LE(y_hi, free_height - margin * free_height + slack);
   // And it is not a speck: it fills the free part in one direction.
-  EXPECT_TRUE(x_hi - x_lo > 0.75 * free_width || y_hi - y_lo > 0.75 * height)
+  EXPECT_TRUE(x_hi - x_lo > 0.75 * free_width || y_hi - y_lo > 0.75 * free_height)
       << "x " << x_lo << "…" << x_hi << ", y " << y_lo << "…" << y_hi;
   // Centred in the free part.
   EXPECT_NEAR(0.5 * (x_lo + x_hi), 0.5 * free_width, 0.06 * free_width);
-  EXPECT_NEAR(0.5 * (y_lo + y_hi), 0.5 * height, 0.06 * height);
+  EXPECT_NEAR(0.5 * (y_lo + y_hi), 0.5 * free_height, 0.06 * free_height);
   // Outside the box.
   EXPECT_FALSE(box.contains(camera.position));
 }
@@ -63,14 +67,15 @@ TEST(CameraFraming, FitsTheBoxFromEveryViewAtAnyScale) {
   for (const Box3& box : boxes) {
     for (const char* name : {"iso", "front", "back", "left", "right", "top", "bottom"}) {
       for (const Projection projection : {Projection::perspective, Projection::orthographic}) {
-        for (const auto& [width, height, reserved] : {std::tuple{800, 800, 0.0}, std::tuple{1000, 400, 0.14},
-                                                      std::tuple{300, 900, 0.3}}) {
+        for (const auto& [width, height, reserve] :
+             {std::tuple{800, 800, PictureReserve{}}, std::tuple{1000, 400, PictureReserve{0.14, 0.0}},
+              std::tuple{300, 900, PictureReserve{0.3, 0.0}}, std::tuple{600, 700, PictureReserve{0.0, 0.2}}}) {
           SCOPED_TRACE(std::string(name) + " " + std::to_string(width) + "x" + std::to_string(height));
           CameraRequest request;
           request.view = named_view(name);
           request.projection = projection;
-          const CameraSpec camera = frame_camera(request, box, width, height, reserved);
-          expect_framed(camera, box, width, height, reserved, request.margin);
+          const CameraSpec camera = frame_camera(request, box, width, height, reserve);
+          expect_framed(camera, box, width, height, reserve, request.margin);
         }
       }
     }
@@ -93,6 +98,21 @@ TEST(CameraFraming, GivenPositionAndLookAtWin) {
   const CameraSpec a = frame_camera(aimed, Box3{Vec3::Zero(), Vec3::Ones()}, 100, 100);
   EXPECT_EQ(a.look_at, Vec3(0.5, 0.5, 0.5));
   EXPECT_NEAR((a.position - a.look_at).normalized().y(), -1.0, 1e-12);
+}
+
+TEST(CameraFraming, AFixedViewDescribesThePartLeftOfTheLegend) {
+  CameraRequest request;
+  request.position = Vec3(5, 6, 7);
+  request.look_at = Vec3(1, 2, 3);
+  const int width = 1000, height = 600;
+  const CameraSpec spec = frame_camera(request, Box3{Vec3::Zero(), Vec3::Ones()}, width, height, {0.2, 0.0});
+  const Camera camera(spec, width, height);
+  // The ray through the middle of the free part (800 px wide) looks at look_at.
+  const CameraRay middle = camera.ray(0.5 * 0.8 * width, 0.5 * height);
+  EXPECT_NEAR(middle.direction.dot((request.look_at.value() - spec.position).normalized()), 1.0, 1e-12);
+  // The field of view spans the picture's height, as without a legend.
+  const CameraRay top = camera.ray(0.5 * 0.8 * width, 0.0);
+  EXPECT_NEAR(std::acos(top.direction.dot(middle.direction)) * 180.0 / M_PI, 0.5 * spec.fov_degrees, 1e-9);
 }
 
 TEST(CameraFraming, UpIsVerticalUnlessLookingAlongIt) {

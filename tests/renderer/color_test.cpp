@@ -72,8 +72,9 @@ TEST_F(Color, UnknownViewIsAnError) { EXPECT_ANY_THROW(ColorManagement("sRGB", "
 
 TEST_F(Color, ColormapEndsAndInterpolation) {
   const Colormap& v = colormap_named("viridis");
-  EXPECT_NEAR(v.at(0.0)[0], 68 / 255.0, 1e-6);
-  EXPECT_NEAR(v.at(1.0)[1], 231 / 255.0, 1e-6);
+  // The ends are #440154 and #fde725 to the byte.
+  EXPECT_NEAR(v.at(0.0)[0], 68 / 255.0, 0.5 / 255.0);
+  EXPECT_NEAR(v.at(1.0)[1], 231 / 255.0, 0.5 / 255.0);
   EXPECT_EQ(v.at(-3.0), v.at(0.0));
   EXPECT_EQ(v.at(7.0), v.at(1.0));
   EXPECT_EQ(v.at(std::nan("")), v.at(0.0));
@@ -83,18 +84,29 @@ TEST_F(Color, ColormapEndsAndInterpolation) {
   EXPECT_THROW(colormap_named("jet"), std::invalid_argument);
 }
 
+TEST_F(Color, EveryMapHasAReversedTwin) {
+  for (const char* name : {"viridis", "cividis", "magma", "coolwarm", "RdBu"}) {
+    const Colormap& map = colormap_named(name);
+    const Colormap& reversed = colormap_named(std::string(name) + "_r");
+    EXPECT_EQ(reversed.diverging, map.diverging) << name;
+    for (double u : {0.0, 0.13, 0.5, 0.77, 1.0})
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(reversed.at(u)[std::size_t(c)], map.at(1.0 - u)[std::size_t(c)], 1e-6) << name << " at " << u;
+  }
+}
+
 TEST_F(Color, AutoRangeIgnoresSingularOutliersAndCentresDivergingMaps) {
   std::vector<double> values;
   for (int i = 0; i < 1000; ++i) values.push_back(-1.0 + i / 1000.0);  // [−1, 0)
   values.push_back(-1e6);  // a singular point's value
-  const ColorScale seq = auto_scale(colormap_named("viridis"), values);
+  const ColorScale seq = auto_scale(colormap_named("viridis"), values, false, false);
   EXPECT_GT(seq.lo, -1.0);
   EXPECT_LT(seq.lo, -0.9);
   EXPECT_LT(seq.hi, 0.0);
-  const ColorScale div = auto_scale(colormap_named("coolwarm"), values);
+  const ColorScale div = auto_scale(colormap_named("coolwarm"), values, true, false);
   EXPECT_DOUBLE_EQ(div.lo, -div.hi);
   EXPECT_NEAR(div.normalized(0.0), 0.5, 1e-12);
-  const ColorScale flat = auto_scale(colormap_named("viridis"), {2.0, 2.0});
+  const ColorScale flat = auto_scale(colormap_named("viridis"), {2.0, 2.0}, false, false);
   EXPECT_LT(flat.lo, flat.hi);
 }
 

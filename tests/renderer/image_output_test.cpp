@@ -51,6 +51,7 @@ TEST(ImageOutput, PngAt8And16BitsWithMetadata) {
 TEST(ImageOutput, ExrKeepsFloatsBeyondOne) {
   ImageToWrite image = gradient(5);
   image.channel_names = {"R", "G", "B", "A", "Z"};
+  image.bit_depth = 32;
   image.pixels[0] = 7.5f;
   const std::string path = (temp_dir() / "g.exr").string();
   write_image(image, path);

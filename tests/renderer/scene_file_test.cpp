@@ -41,7 +41,6 @@ TEST_F(SceneFile, MinimalSceneGetsDocumentedDefaults) {
   EXPECT_DOUBLE_EQ(spec.surface.influence_radius, 1.0);
   EXPECT_EQ(spec.pipeline.color, ColorScalar::lambda3);
   EXPECT_EQ(spec.pipeline.size.mapping, RadiusMapping::sqrt);
-  EXPECT_EQ(spec.render.width, 800);
   EXPECT_EQ(spec.pipeline.data.kind, DataKind::point_load);
   // Values that depend on the data are automatic until it is read.
   EXPECT_FALSE(spec.pipeline.spacing);
@@ -55,6 +54,9 @@ TEST_F(SceneFile, MinimalSceneGetsDocumentedDefaults) {
   EXPECT_FALSE(spec.context.shell);
   EXPECT_FALSE(spec.render.intersector);
   EXPECT_FALSE(spec.output.file);
+  EXPECT_FALSE(spec.render.width);  // output.print_size at output.dpi, or 800
+  EXPECT_FALSE(spec.render.height);
+  EXPECT_DOUBLE_EQ(spec.output.dpi, 300.0);
   EXPECT_EQ(spec.camera.projection, Projection::perspective);
   EXPECT_FALSE(spec.camera.view);
   EXPECT_EQ(spec.pipeline.seeds.points.size(), 1u);
@@ -236,7 +238,7 @@ TEST_F(SceneFile, MissingDataFileAndBadImageTypeAreLocated) {
                     "the scene file)");
   const std::string image = error_of(std::string(minimal) + "[output]\nfile = \"x.bmp\"\n");
   EXPECT_EQ(image,
-            path_ + ":4:8: output.file must end in .png, .tif, .tiff or .exr, got \"x.bmp\"");
+            path_ + ":4:8: output.file must end in .png, .tif, .tiff, .exr, .pdf or .svg, got \"x.bmp\"");
 }
 
 TEST_F(SceneFile, SeedsOutsideTheDataGiveAWarning) {

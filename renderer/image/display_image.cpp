@@ -1,0 +1,28 @@
+#include "renderer/image/display_image.h"
+
+namespace hsb {
+
+std::vector<float> display_pixels(const Film& film, const ColorManagement& color, bool keep_alpha) {
+  const std::size_t pixels = std::size_t(film.width()) * std::size_t(film.height());
+  const std::vector<float>& rgb = film.data(Plane::color);
+  const std::vector<float>& alpha = film.data(Plane::alpha);
+  std::vector<float> rgba(pixels * 4);
+  for (std::size_t i = 0; i < pixels; ++i) {
+    const float a = keep_alpha ? alpha[i] : 1.0f;
+    for (std::size_t c = 0; c < 3; ++c) rgba[i * 4 + c] = a > 0.0f ? rgb[i * 3 + c] / a : 0.0f;
+    rgba[i * 4 + 3] = a;
+  }
+  color.apply_display(rgba, film.width(), film.height());
+  for (std::size_t i = 0; i < pixels; ++i)
+    for (std::size_t c = 0; c < 3; ++c) rgba[i * 4 + c] *= rgba[i * 4 + 3];
+  return rgba;
+}
+
+float ink_over(const std::vector<float>& rgba, int width, int x, int y) {
+  const float* p = &rgba[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4];
+  if (p[3] < 0.5f) return 0.0f;
+  const float luminance = (0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]) / p[3];
+  return luminance > 0.5f ? 0.0f : 1.0f;
+}
+
+}  // namespace hsb

@@ -1,0 +1,21 @@
+#pragma once
+// The film's colour made display-referred: what a screen or a printer is
+// given. Colour stays premultiplied by alpha; the display transform itself
+// works on unpremultiplied colour.
+
+#include <vector>
+
+#include "renderer/image/color_management.h"
+#include "renderer/render/film.h"
+
+namespace hsb {
+
+// RGBA, display-referred, premultiplied, top row first. Without
+// `keep_alpha` the picture is opaque (the background is part of it).
+std::vector<float> display_pixels(const Film& film, const ColorManagement& color, bool keep_alpha);
+
+// The grey of text drawn over `rgba` near (x, y): black over light
+// pixels, white over dark ones, black over transparent ones.
+float ink_over(const std::vector<float>& rgba, int width, int x, int y);
+
+}  // namespace hsb

@@ -1,0 +1,85 @@
+#include "renderer/image/ticks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace hsb {
+namespace {
+
+const char* const kMinus = "\u2212";
+
+std::string superscript(int n) {
+  static const char* const digits[] = {"\u2070", "\u00b9", "\u00b2", "\u00b3", "\u2074",
+                                       "\u2075", "\u2076", "\u2077", "\u2078", "\u2079"};
+  std::string out = n < 0 ? "\u207b" : "";
+  const std::string text = std::to_string(std::abs(n));
+  for (char c : text) out += digits[c - '0'];
+  return out;
+}
+
+// `value` with `decimals` digits after the point, a true minus sign, and
+// no "−0".
+std::string fixed(double value, int decimals) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", std::max(0, decimals), value);
+  std::string s = text;
+  if (s[0] == '-') {
+    const bool zero = s.find_first_not_of("-0.") == std::string::npos;
+    s = zero ? s.substr(1) : kMinus + s.substr(1);
+  }
+  return s;
+}
+
+// 1, 2 or 5 × 10ⁿ: the round step nearest to giving `target` intervals.
+double round_step(double span, int target) {
+  const double raw = span / std::max(1, target);
+  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+  const double m = raw / magnitude;
+  return magnitude * (m < 1.5 ? 1.0 : m < 3.5 ? 2.0 : m < 7.5 ? 5.0 : 10.0);
+}
+
+}  // namespace
+
+std::string power_of_ten(int exponent) { return "10" + superscript(exponent); }
+
+TickSet linear_ticks(double lo, double hi, int target) {
+  TickSet set;
+  if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi)) return set;
+  double step = round_step(hi - lo, target);
+  // Fewer than two ticks inside is no scale: halve the step until there are.
+  for (int tries = 0; tries < 4 && std::floor(hi / step) - std::ceil(lo / step) < 1.0; ++tries)
+    step = round_step(step, 2);
+  const double largest = std::max(std::fabs(lo), std::fabs(hi));
+  // Plain digits between 10⁻³ and 10⁴; beyond, a shared factor of 10ᵉ
+  // (a multiple of three, as engineers write units).
+  int exponent = 0;
+  if (largest >= 1e4 || largest < 1e-3) exponent = 3 * int(std::floor(std::log10(largest) / 3.0));
+  const double unit = std::pow(10.0, exponent);
+  if (exponent != 0) set.factor = "\u00d7" + power_of_ten(exponent);
+  const int decimals = std::max(0, -int(std::floor(std::log10(step / unit) + 1e-9)));
+  for (double k = std::ceil(lo / step - 1e-9); k * step <= hi * (1.0 + 1e-12) + 1e-300; k += 1.0) {
+    const double v = k * step;
+    set.ticks.push_back({v, fixed(v / unit, decimals)});
+  }
+  return set;
+}
+
+TickSet log_ticks(double lo, double hi) {
+  TickSet set;
+  if (!(lo > 0.0) || !(hi > lo)) return set;
+  const int first = int(std::ceil(std::log10(lo) - 1e-9)), last = int(std::floor(std::log10(hi) + 1e-9));
+  const bool fine = std::log10(hi / lo) < 2.0;
+  for (int e = first - 1; e <= last; ++e) {
+    for (const double m : {1.0, 2.0, 5.0}) {
+      if (m != 1.0 && !fine) continue;
+      const double v = m * std::pow(10.0, e);
+      if (v < lo * (1.0 - 1e-12) || v > hi * (1.0 + 1e-12)) continue;
+      const bool plain = e >= -3 && e <= 3;
+      set.ticks.push_back({v, plain ? fixed(v, std::max(0, -e)) : (m == 1.0 ? "" : fixed(m, 0) + "\u00d7") + power_of_ten(e)});
+    }
+  }
+  return set;
+}
+
+}  // namespace hsb

@@ -1,0 +1,29 @@
+#pragma once
+// A figure as a PDF or SVG page, the way journals ask for figures: the
+// rendered picture embedded as an image at its DPI (the page is as large
+// as the picture prints), and the legend over it as vector shapes and
+// text that stays sharp and searchable.
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "renderer/image/legend.h"
+
+namespace hsb {
+
+struct VectorFigure {
+  const std::vector<float>* rgba = nullptr;  // display-referred, premultiplied
+  int width = 0, height = 0;
+  double dpi = 300.0;
+  const LegendLayout* legend = nullptr;      // none: no legend
+  const ColorScale* scale = nullptr;
+  float ink = 0.0f;
+  std::map<std::string, std::string> metadata;  // "Software", "ImageDescription", … (PDF only)
+};
+
+// Writes the page to `path` (.pdf or .svg), complete or not at all.
+// Throws std::runtime_error when it cannot.
+void write_vector_figure(const VectorFigure& figure, const ColorManagement& color, const std::string& path);
+
+}  // namespace hsb
