@@ -15,38 +15,48 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// Occlusion rays of one packet of camera samples, traced 16 at a time: each
-// unblocked ray adds its weight to its sample's key or ambient visibility.
+// Occlusion rays of one packet of camera samples: each unblocked ray adds
+// its weight to its sample's key or ambient visibility. Rays towards the
+// key light leave nearby points in nearly one direction: they share BVH
+// traversals as 16-ray packets. Ambient rays scatter over the hemisphere,
+// where a packet's lanes would mostly wait for each other (twice as slow
+// over fig06's cap): they go one at a time.
 class OcclusionBatch {
  public:
   void add(const Vec3& origin, const Vec3& direction, double tfar, int lane, double weight, bool ambient) {
-    rays_.push_back({origin, direction, tfar, lane, weight, ambient});
+    (ambient ? ambient_ : key_).push_back({origin, direction, tfar, lane, weight});
   }
 
   void trace(const RayScene& scene, SampleTracer& tracer, Visibility* visibility) {
     const auto start = Clock::now();
-    for (std::size_t first = 0; first < rays_.size(); first += kMaxPacket) {
-      const int count = int(std::min<std::size_t>(kMaxPacket, rays_.size() - first));
-      FieldRayContext context(tracer.tracers, tracer.stats);
-      context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;  // nearby origins, similar directions
+    FieldRayContext context(tracer.tracers, tracer.stats);
+    for (const Pending& r : ambient_) {
+      RTCRayHit rh = make_embree_ray(r.origin, r.direction, 0.0f, float(r.tfar));
+      rh.ray.mask = RayScene::kShadowRayMask;
+      rtcOccluded1(scene.get(), &context.embree, &rh.ray);
+      if (rh.ray.tfar >= 0.0f) visibility[r.lane].ambient += r.weight;  // not blocked
+    }
+    context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    for (std::size_t first = 0; first < key_.size(); first += kMaxPacket) {
+      const int count = int(std::min<std::size_t>(kMaxPacket, key_.size() - first));
       alignas(64) int valid[kMaxPacket] = {};
       alignas(64) RTCRayHit16 packet{};
       auto* rays = reinterpret_cast<RTCRayHitN*>(&packet);
       for (int i = 0; i < count; ++i) {
-        const Pending& r = rays_[first + std::size_t(i)];
+        const Pending& r = key_[first + std::size_t(i)];
         set_embree_ray(rays, kMaxPacket, unsigned(i), r.origin, r.direction, 0.0f, r.tfar, RayScene::kShadowRayMask);
         valid[i] = -1;
       }
       rtcOccluded16(valid, scene.get(), &context.embree, &packet.ray);
       for (int i = 0; i < count; ++i) {
-        const Pending& r = rays_[first + std::size_t(i)];
-        if (packet.ray.tfar[i] < 0.0f) continue;  // blocked
-        (r.ambient ? visibility[r.lane].ambient : visibility[r.lane].key) += r.weight;
+        const Pending& r = key_[first + std::size_t(i)];
+        if (packet.ray.tfar[i] >= 0.0f) visibility[r.lane].key += r.weight;
       }
-      tracer.shadow_rays += unsigned(count);
     }
+    tracer.shadow_rays += unsigned(key_.size() + ambient_.size());
     tracer.shadow_seconds += seconds_since(start);
-    rays_.clear();
+    key_.clear();
+    ambient_.clear();
   }
 
  private:
@@ -55,9 +65,8 @@ class OcclusionBatch {
     double tfar;
     int lane;
     double weight;
-    bool ambient;
   };
-  std::vector<Pending> rays_;
+  std::vector<Pending> key_, ambient_;
 };
 
 // Point k of the n a camera sample takes, stratified over all the n·samples
