@@ -19,7 +19,7 @@ packages=(
   libopencolorio-dev
   libtomlplusplus-dev libeigen3-dev libcli11-dev
   libvtk9-dev
-  libpango1.0-dev libcairo2-dev
+  libpango1.0-dev libcairo2-dev poppler-utils
   googletest libgtest-dev
   fonts-dejavu-core
 )

@@ -13,7 +13,7 @@ std::vector<std::string> run_export_job(const ExportJob& job) {
   const std::filesystem::path dir(job.output_dir);
   std::filesystem::create_directories(dir);
   const std::string stem = std::filesystem::path(job.scene_path).stem().string();
-  const ColorManagement color(spec.output.display.value_or(""), spec.output.view.value_or(""));
+  const ColorManagement color = scene_color_management(spec);
   const std::unique_ptr<PreparedScene> p = prepare_scene(std::move(spec), color);
 
   if (job.format == ExportFormat::pov) {

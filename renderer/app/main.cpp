@@ -159,7 +159,7 @@ int main(int argc, char** argv) {
       hsb::SceneSpec spec = hsb::load_scene_or_data_file(input, overrides);
       std::istringstream description(hsb::describe_data(spec.pipeline.data));
       for (std::string line; std::getline(description, line);) std::printf("# %s\n", line.c_str());
-      const hsb::ColorManagement color(spec.output.display.value_or(""), spec.output.view.value_or(""));
+      const hsb::ColorManagement color = scene_color_management(spec);
       const std::unique_ptr<hsb::PreparedScene> prepared = hsb::prepare_scene(std::move(spec), color);
       for (const std::string& warning : prepared->warnings) std::printf("# warning: %s\n", warning.c_str());
       std::fputs(hsb::pinned_scene_toml(*prepared).c_str(), stdout);

@@ -128,6 +128,15 @@ double glyph_extent(const SurfaceSpec& surface) {
   return surface.influence_radius * kernel_level_radius(surface.kernel, surface.isovalue);
 }
 
+ColorManagement scene_color_management(const SceneSpec& spec) {
+  const OutputSpec& o = spec.output;
+  try {
+    return ColorManagement(o.display.value_or(""), o.view.value_or(""), o.ocio_config);
+  } catch (const std::exception& e) {
+    throw SceneError(spec.path + ": output.display/output.view/output.ocio_config: " + e.what());
+  }
+}
+
 std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManagement& color) {
   auto prepared = std::make_unique<PreparedScene>();
   PreparedScene& p = *prepared;

@@ -47,6 +47,12 @@ struct PreparedScene {
   PreparedScene(PreparedScene&&) = delete;
 };
 
+// The colour management the scene's [output] asks for: its OCIO config
+// (else $OCIO, else the built-in one), display and view. Throws SceneError
+// naming the scene when the config cannot be read or has no such display
+// or view.
+ColorManagement scene_color_management(const SceneSpec& spec);
+
 // `color` is the colour management for spec.output's display and view.
 // Throws DataError for unusable data and SceneError for a scene that cannot
 // be rendered (a camera that cannot be built).

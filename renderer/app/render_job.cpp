@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <sstream>
 
+#include "renderer/app/pinned_scene.h"
 #include "renderer/app/prepared_scene.h"
 #include "renderer/image/color_management.h"
 #include "renderer/image/display_image.h"
@@ -37,15 +39,35 @@ std::string sha1_hex(const std::string& text) {
   return hash.digest();
 }
 
-// The scene's text and overrides: what its hash covers.
-std::string scene_fingerprint(const SceneSpec& spec) {
+// The SHA-1 of a file's bytes; "" when there is no file.
+std::string file_sha1(const std::string& path) {
+  if (path.empty()) return "";
+  std::ifstream in(path, std::ios::binary);
+  OIIO::SHA1 hash;
+  std::vector<char> buffer(1 << 20);
+  while (in) {
+    in.read(buffer.data(), std::streamsize(buffer.size()));
+    hash.append(buffer.data(), std::size_t(in.gcount()));
+  }
+  return hash.digest();
+}
+
+// The scene's text and overrides.
+std::string scene_text(const SceneSpec& spec) {
   std::string text = spec.text;
   for (const std::string& o : spec.overrides) text += "\n--set " + o;
   return text;
 }
 
-std::map<std::string, std::string> image_metadata(const SceneSpec& spec, const ColorScale& scale,
-                                                  const ColorManagement& color, std::size_t sources) {
+// Everything the picture is made from as written in the image: the scene,
+// its overrides and, by its hash, the data file.
+std::map<std::string, std::string> image_metadata(const PreparedScene& prepared, const ColorManagement& color) {
+  const SceneSpec& spec = prepared.spec;
+  const ColorScale& scale = prepared.scale;
+  const std::size_t sources = prepared.field.sources.size();
+  const std::string& data_file = spec.pipeline.data.kind == DataKind::vtk_file ? spec.pipeline.data.file.path : "";
+  const std::string data_sha1 = file_sha1(data_file);
+  const std::string text = scene_text(spec);
   std::ostringstream description;
   description << "Hyperstreamball render of " << std::filesystem::path(spec.path).filename().string()
               << ": " << sources << " sources, kernel " << kernel_name(spec.surface.kernel)
@@ -55,7 +77,11 @@ std::map<std::string, std::string> image_metadata(const SceneSpec& spec, const C
       {"Software", std::string("Hyperstreamball ") + HSB_VERSION},
       {"ImageDescription", description.str()},
       {"hsb:scene", spec.path},
-      {"hsb:scene_sha1", sha1_hex(scene_fingerprint(spec))},
+      {"hsb:scene_text", text},
+      {"hsb:scene_sha1", sha1_hex(text + "\n" + data_sha1)},
+      {"hsb:data_file", data_file},
+      {"hsb:data_sha1", data_sha1},
+      {"hsb:resolved", pinned_scene_toml(prepared)},
       {"hsb:sources", std::to_string(sources)},
       {"hsb:kernel", kernel_name(spec.surface.kernel)},
       {"hsb:color_range", std::to_string(scale.lo) + " " + std::to_string(scale.hi)},
@@ -104,7 +130,7 @@ ImageToWrite scene_linear_image(const Film& film) {
 RenderSummary run_render_job(const RenderJob& job) {
   const auto start = Clock::now();
   SceneSpec loaded = load_scene_or_data_file(job.scene_path, job.overrides);
-  const ColorManagement color(loaded.output.display.value_or(""), loaded.output.view.value_or(""));
+  const ColorManagement color = scene_color_management(loaded);
   const std::unique_ptr<PreparedScene> prepared = prepare_scene(std::move(loaded), color);
   const SceneSpec& spec = prepared->spec;
   const BlobField& field = prepared->field;
@@ -120,7 +146,7 @@ RenderSummary run_render_job(const RenderJob& job) {
   const auto output_start = Clock::now();
   const std::filesystem::path image_path = std::filesystem::path(job.output_dir) / output.file;
   std::filesystem::create_directories(image_path.parent_path());
-  std::map<std::string, std::string> metadata = image_metadata(spec, scale, color, field.sources.size());
+  std::map<std::string, std::string> metadata = image_metadata(*prepared, color);
   if (is_scene_linear_format(image_path.string())) {
     ImageToWrite image = scene_linear_image(rendered.film);
     image.bit_depth = output.bit_depth;

@@ -8,8 +8,13 @@ namespace OCIO = OCIO_NAMESPACE;
 namespace hsb {
 namespace {
 
-// $OCIO if set, else the built-in config; `name` says which.
-OCIO::ConstConfigRcPtr load_config(std::string& name) {
+// `file` if given, else $OCIO if set, else the built-in config; `name`
+// says which.
+OCIO::ConstConfigRcPtr load_config(const std::string& file, std::string& name) {
+  if (!file.empty()) {
+    name = file;
+    return OCIO::Config::CreateFromFile(file.c_str());
+  }
   const char* env = std::getenv("OCIO");
   if (env && *env) {
     name = env;
@@ -22,8 +27,8 @@ OCIO::ConstConfigRcPtr load_config(std::string& name) {
 
 }  // namespace
 
-ColorManagement::ColorManagement(const std::string& display, const std::string& view)
-    : config_(load_config(config_name_)) {
+ColorManagement::ColorManagement(const std::string& display, const std::string& view, const std::string& config)
+    : config_(load_config(config, config_name_)) {
   display_ = display.empty() ? config_->getDefaultDisplay() : display;
   view_ = view.empty() ? config_->getDefaultView(display_.c_str()) : view;
 

@@ -14,10 +14,11 @@ namespace hsb {
 
 class ColorManagement {
  public:
-  // Uses $OCIO when it is set, else the config compiled into the program
+  // Uses the config file `config` when given, else $OCIO when it is set,
+  // else the config compiled into the program
   // (renderer/image/hyperstreamball.ocio). Empty display/view select the
   // config's defaults. Throws with OCIO's message on a bad config or name.
-  ColorManagement(const std::string& display, const std::string& view);
+  ColorManagement(const std::string& display, const std::string& view, const std::string& config = "");
 
   // A colour picked in display terms (role color_picking) in scene-linear.
   Rgb to_scene_linear(const Rgb& picked) const;
@@ -30,7 +31,7 @@ class ColorManagement {
 
   const std::string& display() const { return display_; }
   const std::string& view() const { return view_; }
-  // The config in use: $OCIO's value at construction, or "built-in".
+  // The config in use: its file, or "built-in hyperstreamball".
   const std::string& config_name() const { return config_name_; }
 
  private:

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #include "field/file_extension.h"
@@ -31,6 +33,52 @@ cairo_surface_t* picture_surface(const VectorFigure& f) {
   return surface;
 }
 
+// `text` with XML's five special characters escaped.
+std::string xml_escaped(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+// Cairo writes no metadata into an SVG: add a <metadata> element, one
+// entry a key, right after the opening <svg> tag.
+void add_svg_metadata(const std::string& path, const std::map<std::string, std::string>& metadata) {
+  std::string svg;
+  {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    svg = text.str();
+  }
+  const std::size_t open = svg.find("<svg");
+  const std::size_t end = open == std::string::npos ? open : svg.find('>', open);
+  if (end == std::string::npos) throw std::runtime_error(path + ": cairo wrote no <svg> element");
+  std::string block = "\n<metadata>\n";
+  for (const auto& [key, value] : metadata)
+    block += "<hsb:entry xmlns:hsb=\"urn:hyperstreamball\" key=\"" + xml_escaped(key) + "\">" + xml_escaped(value) +
+             "</hsb:entry>\n";
+  block += "</metadata>";
+  svg.insert(end + 1, block);
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << svg;
+  if (!out.flush()) throw std::runtime_error(path + ": cannot write the figure's metadata");
+}
+
+// The value of `key`, or "".
+std::string entry(const std::map<std::string, std::string>& metadata, const char* key) {
+  const auto it = metadata.find(key);
+  return it == metadata.end() ? "" : it->second;
+}
+
 }  // namespace
 
 void write_vector_figure(const VectorFigure& f, const ColorManagement& color, const std::string& path) {
@@ -42,13 +90,19 @@ void write_vector_figure(const VectorFigure& f, const ColorManagement& color, co
   cairo_surface_t* page = pdf ? cairo_pdf_surface_create(file.path().c_str(), page_w, page_h)
                               : cairo_svg_surface_create(file.path().c_str(), page_w, page_h);
   if (pdf) {
-    const auto meta = [&](cairo_pdf_metadata_t key, const char* name) {
-      const auto it = f.metadata.find(name);
-      if (it != f.metadata.end()) cairo_pdf_surface_set_metadata(page, key, it->second.c_str());
-    };
-    meta(CAIRO_PDF_METADATA_CREATOR, "Software");
-    meta(CAIRO_PDF_METADATA_SUBJECT, "ImageDescription");
-    meta(CAIRO_PDF_METADATA_KEYWORDS, "hsb:scene_sha1");
+    // Cairo 1.16 writes only the standard document information: the
+    // hashes go into Keywords, the scene and its resolved values into
+    // Subject, after the description.
+    const auto& m = f.metadata;
+    const std::string keywords = "hsb:scene_sha1=" + entry(m, "hsb:scene_sha1") +
+                                 "; hsb:data_sha1=" + entry(m, "hsb:data_sha1") +
+                                 "; hsb:data_file=" + entry(m, "hsb:data_file");
+    const std::string subject = entry(m, "ImageDescription") + "\n\nScene:\n" + entry(m, "hsb:scene_text") +
+                                "\n\nResolved:\n" + entry(m, "hsb:resolved");
+    cairo_pdf_surface_set_metadata(page, CAIRO_PDF_METADATA_CREATOR, entry(m, "Software").c_str());
+    cairo_pdf_surface_set_metadata(page, CAIRO_PDF_METADATA_TITLE, entry(m, "hsb:scene").c_str());
+    cairo_pdf_surface_set_metadata(page, CAIRO_PDF_METADATA_SUBJECT, subject.c_str());
+    cairo_pdf_surface_set_metadata(page, CAIRO_PDF_METADATA_KEYWORDS, keywords.c_str());
   }
   cairo_t* cr = cairo_create(page);
   // User space in the picture's pixels.
@@ -65,6 +119,7 @@ void write_vector_figure(const VectorFigure& f, const ColorManagement& color, co
   cairo_surface_destroy(page);
   if (status != CAIRO_STATUS_SUCCESS)
     throw std::runtime_error(path + ": cannot write the figure: " + cairo_status_to_string(status));
+  if (!pdf) add_svg_metadata(file.path(), f.metadata);
   file.commit();
 }
 

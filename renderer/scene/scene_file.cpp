@@ -57,6 +57,17 @@ void refuse_keys(TableReader& data, std::initializer_list<const char*> keys, con
     if (data.has(key)) data.fail_at(key, std::string("applies only to data.kind = \"") + kind + "\"");
 }
 
+// `file`, relative to the scene file unless absolute, and an error at
+// `key` unless it names a file.
+std::string existing_file(TableReader& table, std::string_view key, const std::string& file,
+                          const std::string& base_dir) {
+  const std::filesystem::path p(file);
+  const std::string path = p.is_absolute() ? file : (std::filesystem::path(base_dir) / p).lexically_normal().string();
+  if (!std::filesystem::is_regular_file(path))
+    table.fail_at(key, "names no file: " + path + " (relative paths are relative to the scene file)");
+  return path;
+}
+
 void read_data(TableReader& data, DataSpec& spec, const std::string& base_dir) {
   // A file means VTK data unless the scene says otherwise.
   const std::optional<std::string> file = data.optional_string("file");
@@ -68,10 +79,7 @@ void read_data(TableReader& data, DataSpec& spec, const std::string& base_dir) {
     if (!has_data_extension(*file))
       data.fail_at("file", "must be a .vtk, .vti, .vtu, .vts or .vtr file, got \"" + *file + "\"");
     // Relative to the scene file, so scenes can be run from anywhere.
-    const std::filesystem::path p(*file);
-    spec.file.path = p.is_absolute() ? *file : (std::filesystem::path(base_dir) / p).lexically_normal().string();
-    if (!std::filesystem::is_regular_file(spec.file.path))
-      data.fail_at("file", "names no file: " + spec.file.path + " (relative paths are relative to the scene file)");
+    spec.file.path = existing_file(data, "file", *file, base_dir);
     spec.file.array = data.string("array", "");
     spec.file.association = data.choice("association", TensorAssociation::automatic,
                                         {{"auto", TensorAssociation::automatic},
@@ -297,7 +305,7 @@ void read_render(TableReader& r, SceneSpec& spec) {
   r.finish();
 }
 
-void read_output(TableReader& o, OutputSpec& spec) {
+void read_output(TableReader& o, OutputSpec& spec, const std::string& base_dir) {
   spec.file = o.optional_string("file");
   if (spec.file && !is_supported_image_path(*spec.file))
     o.fail_at("file", "must end in .png, .tif, .tiff, .exr, .pdf or .svg, got \"" + *spec.file + "\"");
@@ -326,6 +334,8 @@ void read_output(TableReader& o, OutputSpec& spec) {
     if (!(size[0] > 0.0 && size[1] > 0.0)) o.fail_at("print_size", "must be [width, height] in millimetres, both > 0");
     spec.print_size = std::array<double, 2>{size[0], size[1]};
   }
+  if (const std::optional<std::string> config = o.optional_string("ocio_config"))
+    spec.ocio_config = existing_file(o, "ocio_config", *config, base_dir);
   spec.display = o.optional_string("display");
   spec.view = o.optional_string("view");
   spec.colorbar = o.boolean("colorbar", spec.colorbar);
@@ -373,7 +383,7 @@ SceneSpec load_scene_text(const std::string& text, const std::string& path, cons
   if (auto c = top.table("camera")) read_camera(*c, spec.camera);
   if (auto l = top.table("light")) read_light(*l, spec.shading, spec.light);
   if (auto r = top.table("render")) read_render(*r, spec);
-  if (auto o = top.table("output")) read_output(*o, spec.output);
+  if (auto o = top.table("output")) read_output(*o, spec.output, base_dir);
   top.finish();
   return spec;
 }

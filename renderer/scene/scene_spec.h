@@ -75,6 +75,7 @@ struct OutputSpec {
   std::vector<Plane> layers{Plane::depth, Plane::normal, Plane::scalar, Plane::id};  // an EXR's, besides RGBA
   double dpi = 300.0;
   std::optional<std::array<double, 2>> print_size;  // millimetres
+  std::string ocio_config;                    // an OCIO config file; empty: $OCIO, else the built-in one
   std::optional<std::string> display, view;  // OCIO; automatic: the config's defaults
   bool colorbar = true;
   LegendPlacement colorbar_position = LegendPlacement::right;

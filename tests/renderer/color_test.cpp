@@ -49,15 +49,23 @@ TEST_F(Color, DisplayTransformEncodesSceneLinearAsSrgb) {
   EXPECT_FLOAT_EQ(px[3], 0.7f);  // alpha untouched
 }
 
-TEST_F(Color, OcioEnvironmentVariableSelectsAnotherConfig) {
-  // The built-in config with Raw as the sRGB display's first (default) view.
+// The built-in config with Raw as the sRGB display's first (default) view,
+// written to a file.
+std::string raw_first_config() {
   std::string text = builtin_ocio_config();
-  const std::string standard = "    - !<View> {name: Standard, colorspace: srgb}\n";
   const std::string raw = "    - !<View> {name: Raw, colorspace: raw}\n";
-  text.replace(text.find(standard), standard.size() + raw.size(), raw + standard);
-  text.replace(text.find("active_views: [Standard, Raw]"), 29, "active_views: [Raw, Standard]");
+  const std::string standard = "    - !<View> {name: Standard, colorspace: srgb}\n";
+  text.erase(text.find(raw), raw.size());
+  text.insert(text.find(standard), raw);
+  const std::string views = "active_views: [Standard, Filmic, Raw]";
+  text.replace(text.find(views), views.size(), "active_views: [Raw, Standard, Filmic]");
   const std::string path = (std::filesystem::temp_directory_path() / "hsb_raw_first.ocio").string();
   std::ofstream(path) << text;
+  return path;
+}
+
+TEST_F(Color, OcioEnvironmentVariableSelectsAnotherConfig) {
+  const std::string path = raw_first_config();
   setenv("OCIO", path.c_str(), 1);
   const ColorManagement color("", "");
   unsetenv("OCIO");
@@ -66,6 +74,39 @@ TEST_F(Color, OcioEnvironmentVariableSelectsAnotherConfig) {
   std::vector<float> px{0.214f, 0.5f, 1.0f, 1.0f};
   color.apply_display(px, 1, 1);
   EXPECT_FLOAT_EQ(px[0], 0.214f);  // Raw passes scene-linear values through
+}
+
+TEST_F(Color, AConfigFileWinsOverOcio) {
+  setenv("OCIO", "/nonexistent/config.ocio", 1);
+  const ColorManagement color("", "", raw_first_config());
+  unsetenv("OCIO");
+  EXPECT_EQ(color.view(), "Raw");
+}
+
+TEST_F(Color, AFlatColourMakesTheRoundTripExactly) {
+  // A colormap colour picked in display sRGB, lit by light of 1, reaches
+  // the display as it was defined: what the colour bar promises.
+  const ColorManagement color("", "");
+  for (const Rgb& picked : {Rgb{0.267f, 0.005f, 0.329f}, Rgb{0.5f, 0.5f, 0.5f}, Rgb{0.993f, 0.906f, 0.144f}}) {
+    const Rgb linear = color.to_scene_linear(picked);
+    std::vector<float> px{linear[0], linear[1], linear[2], 1.0f};
+    color.apply_display(px, 1, 1);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(px[std::size_t(c)], picked[std::size_t(c)], 1e-4);
+  }
+}
+
+TEST_F(Color, FilmicViewRollsHighlightsOffInsteadOfClipping) {
+  const ColorManagement filmic("sRGB", "Filmic");
+  std::vector<float> px;
+  for (float v : {0.0f, 0.02f, 0.18f, 1.0f, 4.0f, 16.0f}) px.insert(px.end(), {v, v, v, 1.0f});
+  filmic.apply_display(px, 6, 1);
+  for (std::size_t i = 1; i < 6; ++i) EXPECT_GT(px[4 * i], px[4 * (i - 1)]) << "monotonic";
+  EXPECT_NEAR(px[0], 0.0f, 0.01f);
+  EXPECT_GT(px[4 * 2], 0.3f);   // middle grey stays a middle grey
+  EXPECT_LT(px[4 * 2], 0.6f);
+  EXPECT_LT(px[4 * 3], 0.95f);  // white light is not yet clipped ...
+  EXPECT_LT(px[4 * 5], 1.0f);   // ... and four stops above it still is not
+  EXPECT_NEAR(px[4 * 3 + 1], px[4 * 3], 1e-3);  // grey stays grey
 }
 
 TEST_F(Color, UnknownViewIsAnError) { EXPECT_ANY_THROW(ColorManagement("sRGB", "NoSuchView")); }

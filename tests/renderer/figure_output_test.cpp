@@ -1,0 +1,183 @@
+// Figures as files: the colour under every colour-bar tick is the
+// colormap's; EXR layers and metadata; DPI and the scene, data and
+// resolved settings in every file; a PDF whose labels are text.
+
+#include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "renderer/app/prepared_scene.h"
+#include "renderer/app/render_job.h"
+
+namespace hsb {
+namespace {
+
+namespace fs = std::filesystem;
+
+class FigureOutput : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("hsb_figure_" + std::string(
+        ::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  // Writes `text` as a scene beside a copy of the shipped plate data set.
+  std::string scene(const std::string& text) {
+    fs::copy_file(fs::path(HSB_SOURCE_DIR) / "scenes/data/generated/plate_with_hole_mm_pa.vtu", dir_ / "plate.vtu",
+                  fs::copy_options::overwrite_existing);
+    const std::string path = (dir_ / "s.toml").string();
+    std::ofstream(path) << text;
+    return path;
+  }
+  RenderSummary render(const std::string& path, const std::vector<std::string>& overrides = {}) {
+    return run_render_job({path, overrides, (dir_ / "out").string()});
+  }
+  fs::path dir_;
+};
+
+const char* const kPlate = "[data]\nfile = \"plate.vtu\"\n[render]\nwidth = 400\nheight = 300\nsamples = 1\n";
+
+std::unique_ptr<OIIO::ImageInput> open_image(const std::string& path) {
+  auto in = OIIO::ImageInput::open(path);
+  EXPECT_TRUE(in) << path << ": " << OIIO::geterror();
+  return in;
+}
+
+TEST_F(FigureOutput, TheColourUnderEachTickIsTheColormaps) {
+  for (const char* placement : {"right", "bottom"}) {
+    SCOPED_TRACE(placement);
+    const std::string path = scene(kPlate);
+    const std::vector<std::string> overrides{"color.map=magma", std::string("output.colorbar_position=") + placement,
+                                             "render.width=600", "render.height=500"};
+    const RenderSummary summary = render(path, overrides);
+    const ColorManagement color("", "");
+    const std::unique_ptr<PreparedScene> p = prepare_scene(load_scene(path, overrides), color);
+    ASSERT_TRUE(p->output.legend);
+    const LegendLayout& legend = *p->output.legend;
+    ASSERT_GE(legend.ticks.ticks.size(), 3u);
+
+    auto in = open_image(summary.image_path);
+    ASSERT_TRUE(in);
+    const OIIO::ImageSpec& spec = in->spec();
+    std::vector<float> pixels(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(spec.nchannels));
+    ASSERT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()));
+    const bool right = legend.style.placement == LegendPlacement::right;
+    for (const Tick& tick : legend.ticks.ticks) {
+      const double along = legend.position(p->scale, tick.value);
+      // The middle of the strip across, the pixel whose centre is nearest the tick along.
+      const int x = right ? int(0.5 * (legend.bar_x0 + legend.bar_x1)) : int(std::lround(along - 0.5));
+      const int y = right ? int(std::lround(along - 0.5)) : int(0.5 * (legend.bar_y0 + legend.bar_y1));
+      const float* px = &pixels[(std::size_t(y) * std::size_t(spec.width) + std::size_t(x)) * std::size_t(spec.nchannels)];
+      // The colormap's colour at the tick, through the same colour path.
+      const Rgb linear = color.to_scene_linear(p->scale.srgb(tick.value));
+      std::vector<float> expected{linear[0], linear[1], linear[2], 1.0f};
+      color.apply_display(expected, 1, 1);
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(px[c], expected[std::size_t(c)], 3.0 / 255.0) << "tick " << tick.label << " channel " << c;
+    }
+  }
+}
+
+TEST_F(FigureOutput, PngCarriesDpiSceneDataAndResolvedSettings) {
+  const std::string path = scene(kPlate);
+  const RenderSummary summary = render(path, {"output.dpi=600"});
+  auto in = open_image(summary.image_path);
+  ASSERT_TRUE(in);
+  const OIIO::ImageSpec& spec = in->spec();
+  EXPECT_NEAR(spec.get_float_attribute("XResolution"), 600.0f, 0.01f);  // PNG stores pixels per metre
+  EXPECT_EQ(spec.get_string_attribute("ResolutionUnit"), "inch");
+  EXPECT_EQ(std::string(spec.get_string_attribute("Software")).rfind("Hyperstreamball ", 0), 0u);
+  EXPECT_NE(spec.get_string_attribute("hsb:scene_text").find("file = \"plate.vtu\""), std::string::npos);
+  EXPECT_NE(spec.get_string_attribute("hsb:scene_text").find("--set output.dpi=600"), std::string::npos);
+  EXPECT_EQ(spec.get_string_attribute("hsb:data_sha1").size(), 40u);
+  EXPECT_NE(spec.get_string_attribute("hsb:data_file").find("plate.vtu"), std::string::npos);
+  EXPECT_NE(spec.get_string_attribute("hsb:resolved").find("scale = "), std::string::npos);
+  // The scene hash covers the data: another data file under the same name
+  // gives another hash.
+  const std::string first = spec.get_string_attribute("hsb:scene_sha1");
+  in.reset();
+  fs::copy_file(fs::path(HSB_SOURCE_DIR) / "scenes/data/generated/beam_bending.vtu", dir_ / "plate.vtu",
+                fs::copy_options::overwrite_existing);
+  const RenderSummary again = run_render_job({path, {"output.dpi=600"}, (dir_ / "out").string()});
+  auto second = open_image(again.image_path);
+  ASSERT_TRUE(second);
+  EXPECT_NE(second->spec().get_string_attribute("hsb:scene_sha1"), first);
+}
+
+TEST_F(FigureOutput, ExrHasTheLayersAFigureIsComposedFrom) {
+  const std::string path = scene(std::string(kPlate) + "[output]\nfile = \"x.exr\"\n");
+  const RenderSummary summary = render(path);
+  auto in = open_image(summary.image_path);
+  ASSERT_TRUE(in);
+  const OIIO::ImageSpec& spec = in->spec();
+  const std::vector<std::string> names{"R", "G", "B", "A", "Z", "N.X", "N.Y", "N.Z", "scalar", "id"};
+  for (const std::string& name : names)
+    EXPECT_GE(spec.channelindex(name), 0) << name << " missing";
+  ASSERT_EQ(spec.nchannels, int(names.size()));
+  EXPECT_EQ(spec.channelformat(spec.channelindex("id")), OIIO::TypeDesc::UINT);
+  EXPECT_EQ(spec.channelformat(spec.channelindex("R")), OIIO::TypeDesc::FLOAT);
+  EXPECT_FALSE(spec.get_string_attribute("hsb:scene_sha1").empty());
+
+  std::vector<float> px(std::size_t(spec.width) * std::size_t(spec.height) * names.size());
+  ASSERT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()));
+  const int a = spec.channelindex("A"), id = spec.channelindex("id"), nx = spec.channelindex("N.X");
+  const int scalar = spec.channelindex("scalar"), z = spec.channelindex("Z");
+  int on_glyph = 0;
+  for (std::size_t i = 0; i < px.size(); i += names.size()) {
+    if (px[i + std::size_t(a)] < 1.0f || px[i + std::size_t(id)] == 0.0f) continue;  // edges, the shell, background
+    ++on_glyph;
+    const double n = std::hypot(px[i + std::size_t(nx)], px[i + std::size_t(nx) + 1], px[i + std::size_t(nx) + 2]);
+    EXPECT_GT(n, 0.5);  // unit normals, averaged over a pixel
+    EXPECT_LE(n, 1.0 + 1e-5);
+    EXPECT_TRUE(std::isfinite(px[i + std::size_t(scalar)]));
+    EXPECT_GT(px[i + std::size_t(z)], 0.0f);
+  }
+  EXPECT_GT(on_glyph, 100);
+
+  const std::string half = scene(std::string(kPlate) + "[output]\nfile = \"h.exr\"\nbit_depth = 16\n");
+  auto h = open_image(render(half).image_path);
+  ASSERT_TRUE(h);
+  EXPECT_EQ(h->spec().channelformat(0), OIIO::TypeDesc::HALF);
+}
+
+// Runs `command`; its standard output.
+std::string output_of(const std::string& command) {
+  std::string out;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return out;
+  std::array<char, 4096> buffer;
+  while (std::fgets(buffer.data(), int(buffer.size()), pipe)) out += buffer.data();
+  pclose(pipe);
+  return out;
+}
+
+TEST_F(FigureOutput, PdfPrintsAtItsDpiWithTheLegendAsText) {
+  const std::string path = scene(std::string(kPlate) + "[output]\nfile = \"x.pdf\"\ncolorbar_title = \"λ₃ (Pa)\"\n");
+  const RenderSummary summary = render(path);
+  // 400 × 300 pixels at 300 DPI: 96 × 72 points.
+  const std::string info = output_of("pdfinfo '" + summary.image_path + "'");
+  EXPECT_NE(info.find(" 96 x 72 pts"), std::string::npos) << info;
+  EXPECT_NE(info.find("Creator:         Hyperstreamball"), std::string::npos) << info;
+  EXPECT_NE(info.find("hsb:scene_sha1="), std::string::npos) << info;
+  const std::string text = output_of("pdftotext '" + summary.image_path + "' -");
+  EXPECT_NE(text.find("λ₃ (Pa)"), std::string::npos) << text;
+  EXPECT_NE(text.find("×10⁶"), std::string::npos) << text;  // stresses in pascals share a factor
+
+  const std::string svg_scene = scene(std::string(kPlate) + "[output]\nfile = \"x.svg\"\n");
+  std::ifstream svg(render(svg_scene).image_path);
+  std::ostringstream svg_text;
+  svg_text << svg.rdbuf();
+  EXPECT_NE(svg_text.str().find("key=\"hsb:scene_sha1\""), std::string::npos);
+  EXPECT_NE(svg_text.str().find("<image"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace hsb
