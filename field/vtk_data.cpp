@@ -13,12 +13,18 @@
 #include <vtkPolyDataNormals.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
+#include <vtkCell.h>
+#include <vtkCellArray.h>
+#include <vtkIdList.h>
+#include <vtkPoints.h>
 #include <vtkTriangleFilter.h>
+#include <vtkUnstructuredGrid.h>
 #include <vtkXMLGenericDataObjectReader.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -32,8 +38,88 @@
 namespace hsb {
 namespace {
 
+// A file of random bytes, or of another format, gets a clear message
+// before VTK sees it: legacy files start with their version line, XML
+// files with "<?xml" or "<VTKFile".
+void check_header(const std::string& path, const std::string& ext) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(256, '\0');
+  in.read(head.data(), std::streamsize(head.size()));
+  head.resize(std::size_t(in.gcount()));
+  if (ext == ".vtk") {
+    if (head.rfind("# vtk DataFile Version", 0) != 0)
+      throw DataError(path + ": not a legacy VTK file: its first line is not \"# vtk DataFile Version x.y\"");
+    return;
+  }
+  std::size_t start = head.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;  // a UTF-8 byte-order mark
+  start = head.find_first_not_of(" \t\r\n", start);
+  if (start == std::string::npos || (head.compare(start, 5, "<?xml") != 0 && head.compare(start, 8, "<VTKFile") != 0))
+    throw DataError(path + ": not a VTK XML file: it does not start with \"<?xml\" or \"<VTKFile\"");
+}
+
+// What no reader checks but everything after relies on: finite point
+// coordinates, cells that name existing points, and some volume to sample.
+void check_dataset(vtkDataSet* data, const std::string& path) {
+  const vtkIdType points = data->GetNumberOfPoints();
+  for (vtkIdType i = 0; i < points; ++i) {
+    double p[3];
+    data->GetPoint(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {
+      std::ostringstream message;
+      message << path << ": point " << i << " has a non-finite coordinate (" << p[0] << ", " << p[1] << ", " << p[2]
+              << ")";
+      throw DataError(message.str());
+    }
+  }
+  if (auto* grid = vtkUnstructuredGrid::SafeDownCast(data)) {
+    vtkDataArray* connectivity = grid->GetCells() ? grid->GetCells()->GetConnectivityArray() : nullptr;
+    if (connectivity && connectivity->GetNumberOfTuples() > 0) {
+      double range[2];
+      connectivity->GetRange(range, 0);
+      if (range[0] < 0.0 || range[1] >= double(points)) {
+        std::ostringstream message;
+        message << path << ": a cell names point " << (range[0] < 0.0 ? range[0] : range[1]) << ", but the points are 0 to "
+                << points - 1;
+        throw DataError(message.str());
+      }
+    }
+  }
+  const vtkIdType cells = data->GetNumberOfCells();
+  if (cells == 0) throw DataError(path + ": the data set has no cells: there is no volume to sample tensors in");
+  // One cell with volume is enough: degenerate cells among good ones are
+  // legal (no point lies inside them). Tetrahedra from VTK's own
+  // triangulation of each 3D cell.
+  double bounds[6];
+  data->GetBounds(bounds);
+  const double diagonal = std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]);
+  const double tiny = 1e-12 * diagonal * diagonal * diagonal;
+  auto ids = vtkSmartPointer<vtkIdList>::New();
+  auto corners = vtkSmartPointer<vtkPoints>::New();
+  vtkIdType three_d = 0;
+  for (vtkIdType i = 0; i < cells; ++i) {
+    vtkCell* cell = data->GetCell(i);
+    if (cell->GetCellDimension() != 3) continue;
+    ++three_d;
+    if (!cell->Triangulate(0, ids, corners)) continue;
+    for (vtkIdType t = 0; t + 3 < corners->GetNumberOfPoints(); t += 4) {
+      double a[3], b[3], c[3], d[3];
+      corners->GetPoint(t, a), corners->GetPoint(t + 1, b), corners->GetPoint(t + 2, c), corners->GetPoint(t + 3, d);
+      const Vec3 pa(a[0], a[1], a[2]);
+      const double volume = std::fabs((Vec3(b[0], b[1], b[2]) - pa).dot(
+                                (Vec3(c[0], c[1], c[2]) - pa).cross(Vec3(d[0], d[1], d[2]) - pa))) / 6.0;
+      if (volume > tiny) return;
+    }
+  }
+  std::ostringstream message;
+  message << path << ": none of its " << cells << " cells has any volume ("
+          << (three_d ? std::to_string(three_d) + " are 3D cells, all flat" : std::string("none is a 3D cell"))
+          << "): tensors are sampled inside 3D cells";
+  throw DataError(message.str());
+}
+
 // The data set in `path`; VTK's complaints end up in `vtk`.
 vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSession& vtk) {
+  if (std::filesystem::is_directory(path)) throw DataError(path + ": a directory, not a data file");
   if (!std::filesystem::is_regular_file(path)) throw DataError(path + ": no such data file");
 
   const std::string ext = lower_extension(path);
@@ -54,11 +140,16 @@ vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSessi
     throw DataError(path + ": unsupported data file type \"" + ext +
                     "\" (expected .vtk, .vti, .vtu, .vts or .vtr)");
   }
+  check_header(path, ext);
   reader->Update();
   vtkSmartPointer<vtkDataSet> data = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
-  const std::string error = vtk.last_error();
+  // A reader's warning is a file it could not read as declared (a
+  // truncated array reads as garbage, with only a warning): an error here.
+  std::string error = vtk.first_error();
+  if (error.empty()) error = vtk.first_warning();
   if (!error.empty() || !data || data->GetNumberOfPoints() == 0)
     throw DataError(path + ": cannot read it as a VTK data set: " + (error.empty() ? "no points in it" : error));
+  check_dataset(data, path);
   return data;
 }
 
@@ -85,9 +176,25 @@ struct ChosenArray {
   std::string name;
 };
 
+// The one array of 6 or 9 components among `attributes`' arrays; null
+// when there is none or more than one.
+vtkDataArray* only_tensor_like_array(vtkDataSetAttributes* attributes) {
+  vtkDataArray* found = nullptr;
+  for (int i = 0; i < attributes->GetNumberOfArrays(); ++i) {
+    vtkDataArray* a = attributes->GetArray(i);
+    if (!a || (a->GetNumberOfComponents() != 6 && a->GetNumberOfComponents() != 9)) continue;
+    if (found) return nullptr;
+    found = a;
+  }
+  return found;
+}
+
+// The named array; without a name, the active tensors, else the only
+// array of 6 or 9 components.
 ChosenArray choose_tensor_array(vtkDataSet* data, const VtkFileSpec& spec) {
   auto pick = [&](vtkDataSetAttributes* attributes) -> vtkDataArray* {
-    return spec.array.empty() ? attributes->GetTensors() : attributes->GetArray(spec.array.c_str());
+    if (!spec.array.empty()) return attributes->GetArray(spec.array.c_str());
+    return attributes->GetTensors() ? attributes->GetTensors() : only_tensor_like_array(attributes);
   };
   ChosenArray chosen;
   if (spec.association != TensorAssociation::cell) chosen.array = pick(data->GetPointData());
@@ -99,7 +206,8 @@ ChosenArray choose_tensor_array(vtkDataSet* data, const VtkFileSpec& spec) {
                       : spec.association == TensorAssociation::cell ? " in its cell data"
                                                                      : "";
   if (!chosen.array) {
-    const std::string what = spec.array.empty() ? "no active tensors" : "no array named \"" + spec.array + "\"";
+    const std::string what = spec.array.empty() ? "no active tensors and no single array of 6 or 9 components"
+                                                : "no array named \"" + spec.array + "\"";
     throw DataError(spec.path + ": " + what + where + "; the file has " + list_arrays(data));
   }
   chosen.name = chosen.array->GetName() ? chosen.array->GetName() : "(unnamed)";

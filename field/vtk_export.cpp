@@ -42,7 +42,7 @@ void write_polydata(vtkPolyData* poly, const std::string& path) {
   writer->SetDataModeToAppended();
   writer->SetCompressorTypeToZLib();
   if (writer->Write() != 1) {
-    const std::string why = vtk.last_error();
+    const std::string why = vtk.first_error();
     throw DataError(path + ": cannot write the file" + (why.empty() ? "" : ": " + why));
   }
   try {

@@ -3,8 +3,8 @@
 //  - quiet: VTK reports problems by printing them, through its output
 //    window and as coloured log lines on stderr. A user given fifteen lines
 //    of VTK's log before the real message, or VTK's log and no message at
-//    all, is lost; so nothing is printed and the last error is kept, for
-//    the caller to turn into one DataError naming the file;
+//    all, is lost; so nothing is printed and the first error and warning
+//    are kept, for the caller to turn into one DataError naming the file;
 //  - deterministic: VTK's own threading (vtkSMPTools) builds cell locators
 //    and averages cell data in an order that depends on scheduling, which
 //    moved trajectories by a few ulps between runs and so changed images.
@@ -25,10 +25,12 @@ class VtkSession {
   VtkSession(const VtkSession&) = delete;
   VtkSession& operator=(const VtkSession&) = delete;
 
-  // The last error since the session began, reduced to the part a user can
-  // act on (its last line, without VTK's source file and object address);
-  // "" when there was none.
-  std::string last_error() const;
+  // The first error (or warning) since the session began, reduced to the
+  // part a user can act on (its first line, without VTK's source file and
+  // object address); "" when there was none. The first, because VTK's
+  // later messages are consequences ("returned failure for request ...").
+  std::string first_error() const;
+  std::string first_warning() const;
 
  private:
   std::unique_lock<std::mutex> lock_;

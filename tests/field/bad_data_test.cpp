@@ -1,0 +1,199 @@
+// Data files a user may give by mistake or that broke on the way: each
+// gets one DataError naming the file and what is wrong, never a crash.
+// The files are legacy ASCII, written here line by line, so that each
+// test breaks exactly one thing.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <random>
+#include <sstream>
+
+#include "field/data_error.h"
+#include "field/vtk_data.h"
+
+namespace hsb {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A 2×2×2 block of hexahedra (27 points, 8 cells) with point tensors, as
+// legacy ASCII; `edit` may change the lines before they are joined.
+struct LegacyGrid {
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<long, 8>> cells;
+  std::vector<std::array<double, 9>> tensors;
+  long declared_cells = -1;  // the CELLS count written, when not the real one
+  int cell_type = 12;        // VTK_HEXAHEDRON
+
+  LegacyGrid() {
+    for (int k = 0; k < 3; ++k)
+      for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i) {
+          points.push_back({0.5 * i, 0.5 * j, 0.5 * k});
+          tensors.push_back({1.0 + i, 0.1, 0, 0.1, 0.5 + k, 0, 0, 0, -1});
+        }
+    const auto n = [](int i, int j, int k) { return long(k * 9 + j * 3 + i); };
+    for (int k = 0; k < 2; ++k)
+      for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i)
+          cells.push_back({n(i, j, k), n(i + 1, j, k), n(i + 1, j + 1, k), n(i, j + 1, k), n(i, j, k + 1),
+                           n(i + 1, j, k + 1), n(i + 1, j + 1, k + 1), n(i, j + 1, k + 1)});
+  }
+
+  std::string text() const {
+    std::ostringstream out;
+    out.precision(17);
+    out << "# vtk DataFile Version 4.2\nbad data\nASCII\nDATASET UNSTRUCTURED_GRID\n";
+    out << "POINTS " << points.size() << " double\n";
+    for (const auto& p : points) out << p[0] << " " << p[1] << " " << p[2] << "\n";
+    out << "CELLS " << (declared_cells >= 0 ? declared_cells : long(cells.size())) << " " << cells.size() * 9 << "\n";
+    for (const auto& c : cells) {
+      out << 8;
+      for (long id : c) out << " " << id;
+      out << "\n";
+    }
+    out << "CELL_TYPES " << cells.size() << "\n";
+    for (std::size_t i = 0; i < cells.size(); ++i) out << cell_type << "\n";
+    out << "POINT_DATA " << points.size() << "\nTENSORS stress double\n";
+    for (const auto& t : tensors)
+      out << t[0] << " " << t[1] << " " << t[2] << "\n" << t[3] << " " << t[4] << " " << t[5] << "\n"
+          << t[6] << " " << t[7] << " " << t[8] << "\n";
+    return out.str();
+  }
+};
+
+class BadData : public ::testing::Test {
+ protected:
+  fs::path write(const std::string& name, const std::string& text) {
+    const fs::path dir = fs::temp_directory_path() / "hsb_bad_data";
+    fs::create_directories(dir);
+    const fs::path path = dir / name;
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+  }
+  // The message of the DataError that loading `path` throws.
+  static std::string error_of(const fs::path& path) {
+    try {
+      VtkFileSpec spec;
+      spec.path = path.string();
+      load_vtk_data(spec);
+    } catch (const DataError& e) {
+      return e.what();
+    }
+    return "no error";
+  }
+};
+
+TEST_F(BadData, TheWellFormedGridReads) {
+  VtkFileSpec spec;
+  spec.path = write("good.vtk", LegacyGrid().text()).string();
+  EXPECT_NO_THROW(load_vtk_data(spec));
+}
+
+TEST_F(BadData, ACellCountLargerThanTheCells) {
+  for (long declared : {1000L, 2000000000L}) {
+    LegacyGrid grid;
+    grid.declared_cells = declared;
+    const fs::path path = write("cells_" + std::to_string(declared) + ".vtk", grid.text());
+    EXPECT_EQ(error_of(path).rfind(path.string() + ": cannot read it as a VTK data set: Error reading", 0), 0u)
+        << error_of(path);
+  }
+}
+
+TEST_F(BadData, ACellNamingAPointThatDoesNotExist) {
+  LegacyGrid grid;
+  grid.cells[3][2] = 99999;
+  const fs::path path = write("bad_point.vtk", grid.text());
+  EXPECT_EQ(error_of(path), path.string() + ": a cell names point 99999, but the points are 0 to 26");
+  grid.cells[3][2] = -4;
+  const fs::path negative = write("negative_point.vtk", grid.text());
+  EXPECT_NE(error_of(negative).find("names point -4"), std::string::npos) << error_of(negative);
+}
+
+TEST_F(BadData, NoCellsAtAll) {
+  LegacyGrid grid;
+  grid.cells.clear();
+  const fs::path path = write("no_cells.vtk", grid.text());
+  EXPECT_EQ(error_of(path), path.string() + ": the data set has no cells: there is no volume to sample tensors in");
+}
+
+TEST_F(BadData, OnlyFlatCells) {
+  LegacyGrid grid;
+  for (auto& p : grid.points) p[2] = 0.0;  // every hexahedron squashed flat
+  const fs::path path = write("flat.vtk", grid.text());
+  EXPECT_EQ(error_of(path), path.string() + ": none of its 8 cells has any volume (8 are 3D cells, all flat): "
+                                            "tensors are sampled inside 3D cells");
+  LegacyGrid quads;
+  quads.cell_type = 11;  // VTK_VOXEL is 3D too; a pixel is not
+  for (auto& c : quads.cells) c = {c[0], c[1], c[3], c[2], c[4], c[5], c[7], c[6]};
+  EXPECT_EQ(error_of(write("voxels.vtk", quads.text())), "no error");  // voxels with volume are fine
+}
+
+TEST_F(BadData, NonFinitePointCoordinates) {
+  // Legacy ASCII cannot even spell NaN ...
+  LegacyGrid grid;
+  grid.points[5][1] = std::nan("");
+  const fs::path legacy = write("nan_point.vtk", grid.text());
+  EXPECT_EQ(error_of(legacy), legacy.string() + ": cannot read it as a VTK data set: Unrecognized keyword: nan");
+  // ... XML can: one tetrahedron with a NaN corner.
+  const std::string xml =
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n<UnstructuredGrid>\n"
+      "<Piece NumberOfPoints=\"4\" NumberOfCells=\"1\">\n"
+      "<PointData Tensors=\"stress\"><DataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"6\" "
+      "format=\"ascii\">1 2 3 0 0 0 1 2 3 0 0 0 1 2 3 0 0 0 1 2 3 0 0 0</DataArray></PointData>\n"
+      "<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">"
+      "0 0 0 1 0 0 0 nan 0 0 0 1</DataArray></Points>\n"
+      "<Cells><DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0 1 2 3</DataArray>"
+      "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">4</DataArray>"
+      "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">10</DataArray></Cells>\n"
+      "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  const fs::path path = write("nan_point.vtu", xml);
+  EXPECT_EQ(error_of(path), path.string() + ": point 2 has a non-finite coordinate (0, nan, 0)");
+}
+
+TEST_F(BadData, TruncatedFiles) {
+  const std::string text = LegacyGrid().text();
+  for (double fraction : {0.2, 0.5, 0.9, 0.99}) {
+    const fs::path path = write("truncated.vtk", text.substr(0, std::size_t(fraction * double(text.size()))));
+    const std::string e = error_of(path);
+    EXPECT_EQ(e.rfind(path.string() + ": ", 0), 0u) << fraction << ": " << e;
+    EXPECT_NE(e, "no error") << fraction;
+  }
+}
+
+TEST_F(BadData, RandomBytesWithAVtkExtension) {
+  std::mt19937 rng(3);
+  for (const char* ext : {".vtk", ".vtu", ".vti", ".vts", ".vtr"}) {
+    std::string bytes(3000, '\0');
+    for (char& c : bytes) c = char(rng());
+    const fs::path path = write(std::string("random") + ext, bytes);
+    const std::string e = error_of(path);
+    EXPECT_EQ(e.rfind(path.string() + ": not a ", 0), 0u) << e;
+  }
+  // Well-formed XML that is not a VTK file.
+  const fs::path xml = write("other.vtu", "<?xml version=\"1.0\"?>\n<html><body>hello</body></html>\n");
+  EXPECT_EQ(error_of(xml).rfind(xml.string() + ": cannot read it as a VTK data set: ", 0), 0u) << error_of(xml);
+}
+
+TEST_F(BadData, ADirectoryNamedLikeADataFile) {
+  const fs::path dir = fs::temp_directory_path() / "hsb_bad_data" / "folder.vtu";
+  fs::create_directories(dir);
+  EXPECT_EQ(error_of(dir), dir.string() + ": a directory, not a data file");
+}
+
+TEST_F(BadData, WrongComponentCount) {
+  std::string text = LegacyGrid().text();
+  text = text.substr(0, text.find("TENSORS"));
+  text += "VECTORS velocity double\n";
+  for (int i = 0; i < 27; ++i) text += "1 0 0\n";
+  const fs::path path = write("vectors.vtk", text);
+  const std::string e = error_of(path);
+  EXPECT_NE(e.find("no active tensors and no single array of 6 or 9 components"), std::string::npos) << e;
+  EXPECT_NE(e.find("velocity (3 components)"), std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace hsb
