@@ -6,6 +6,7 @@
 #include <tbb/parallel_for.h>
 
 #include "field/automatic_values.h"
+#include "field/memory_budget.h"
 #include "field/seeding.h"
 #include "field/uniform_grid.h"
 
@@ -28,6 +29,40 @@ LoadedField make_field(const DataSpec& spec) {
 }
 
 namespace {
+
+// Memory a trajectory point and a glyph source take, all copies included
+// (a point: its position, with the vector's growth; a source: the field's
+// and the renderer's copies and its share of the BVH), rounded up: the
+// estimates below guard against scenes a thousand times too large, not
+// against a few per cent.
+constexpr double kBytesPerTrajectoryPoint = 48.0;
+constexpr double kBytesPerSource = 600.0;
+
+std::size_t seed_count(const SeedSpec& spec) {
+  double n = double(spec.points.size());
+  for (const SeedGridSpec& g : spec.grids) n += double(g.n) * double(g.m);
+  return std::size_t(n);
+}
+
+// Before the seeds are even made: the seeds and the longest trajectories
+// they could grow must fit in memory.
+void check_seed_and_trajectory_memory(const GlyphValues& values, SourcePlacement placement) {
+  const double seeds = double(seed_count(values.seeds));
+  std::ostringstream what;
+  if (placement == SourcePlacement::at_seeds) {
+    what << "the glyphs (one at each of " << std::size_t(seeds) << " seeds)";
+    check_memory(seeds * kBytesPerSource, what.str(), "use fewer seeds (seeds.points, seeds.grid n and m)");
+    return;
+  }
+  const TrajectoryOptions& t = values.trajectory;
+  const double points = 2.0 * (std::min(double(t.max_steps), std::ceil(t.max_length / t.step)) + 1.0);
+  what << "the trajectories (" << std::size_t(seeds) << " seeds, each up to " << std::size_t(points)
+       << " points at trajectories.step "
+       << t.step << ")";
+  check_memory(seeds * points * kBytesPerTrajectoryPoint, what.str(),
+               "use fewer seeds (seeds.points, seeds.grid n and m), a larger trajectories.step, or a smaller "
+               "trajectories.max_length or trajectories.max_steps");
+}
 
 std::vector<Vec3> all_seeds(const SeedSpec& spec, const Box3& bounds) {
   std::vector<Vec3> seeds = spec.points;
@@ -107,6 +142,7 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent)
   scene.values = resolve_lengths(spec, scene.domain);
   if (data.kind == DataKind::point_load) scene.values.singular_radius = data.point_load.singular_radius;
   const GlyphValues& values = scene.values;
+  check_seed_and_trajectory_memory(values, spec.placement);
   const std::vector<Vec3> seeds = all_seeds(values.seeds, scene.domain);
 
   if (spec.placement == SourcePlacement::at_seeds) {
@@ -118,9 +154,17 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent)
     // Each seed writes only its own slots, and the slots are concatenated in
     // seed order afterwards, so the result is independent of scheduling.
     scene.trajectories.resize(seeds.size());
-    std::vector<std::vector<GlyphSource>> per_seed(seeds.size());
     tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t i) {
       scene.trajectories[i] = trace_trajectory(*field, seeds[i], values.trajectory);
+    });
+    double sources = 0.0;
+    for (const Trajectory& t : scene.trajectories) sources += double(source_count(t, values.spacing));
+    std::ostringstream what;
+    what << "the glyph sources (" << std::size_t(sources) << " of them along " << seeds.size()
+         << " trajectories at glyphs.spacing " << values.spacing << ")";
+    check_memory(sources * kBytesPerSource, what.str(), "raise glyphs.spacing");
+    std::vector<std::vector<GlyphSource>> per_seed(seeds.size());
+    tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t i) {
       per_seed[i] = place_sources(*field, scene.trajectories[i], values.spacing, spec.color);
     });
     for (const std::vector<GlyphSource>& sources : per_seed)

@@ -29,6 +29,13 @@ void size_sources(std::vector<GlyphSource>& sources, const GlyphMapping& mapping
   for (GlyphSource& s : sources) s.radii = map_radii(s.eigenvalues, mapping);
 }
 
+std::size_t source_count(const Trajectory& trajectory, double spacing) {
+  if (trajectory.points.empty()) return 0;
+  // The epsilon keeps a length that is a whole number of spacings (up to
+  // rounding) from losing its last source.
+  return static_cast<std::size_t>(std::floor(trajectory.length() / spacing + 1e-9)) + 1;
+}
+
 std::vector<GlyphSource> place_sources(const TensorField& field, const Trajectory& trajectory,
                                        double spacing, ColorScalar color) {
   if (!(spacing > 0.0) || !std::isfinite(spacing))
@@ -38,10 +45,9 @@ std::vector<GlyphSource> place_sources(const TensorField& field, const Trajector
   if (pts.empty()) return sources;
 
   // As many sources as fit at `spacing`, the run centred on the curve so
-  // both ends look alike. The epsilon keeps a length that is a whole number
-  // of spacings (up to rounding) from losing its last source.
+  // both ends look alike.
   const double total = trajectory.length();
-  const auto count = static_cast<std::size_t>(std::floor(total / spacing + 1e-9)) + 1;
+  const std::size_t count = source_count(trajectory, spacing);
   const double first = 0.5 * (total - static_cast<double>(count - 1) * spacing);
   sources.reserve(count);
 

@@ -20,6 +20,10 @@ struct GlyphSource {
   double scalar = 0.0;
 };
 
+// How many sources place_sources() puts along `trajectory` at `spacing`
+// (some may then be skipped where the field cannot be sampled).
+std::size_t source_count(const Trajectory& trajectory, double spacing);
+
 // Sources at arc-length `spacing` along `trajectory` (the paper's sample
 // ratio), the run of them centred on the curve's length. Each takes the
 // tensor sampled at its centre; points where the field cannot be sampled

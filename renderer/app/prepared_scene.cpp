@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "field/memory_budget.h"
 #include "renderer/image/image_output.h"
 #include <sstream>
 
@@ -17,6 +18,12 @@ constexpr double kMinStepPerDiagonal = 1e-6;
 constexpr double kTubePerGlyph = 0.2;
 constexpr double kOcclusionPerGlyph = 4.0;
 constexpr int kDefaultPixels = 800;
+// Influence regions a ray crosses on average beyond which a render is slow
+// (the figure scenes stay under 10; fig05 without its ceiling is over 2000).
+constexpr double kCrowdedRay = 100.0;
+// Memory a pixel takes at most: the film with every plane, the display
+// image and the encoder's copy.
+constexpr double kBytesPerPixel = 64.0;
 
 // The median of the glyphs' sizes (largest semi-axes alone); D/50 when
 // there are none.
@@ -117,6 +124,31 @@ void warn_about_the_picture(PreparedScene& p, double extent) {
          << "): lower glyphs.scale or glyphs.ceiling, or leave them out for automatic sizes";
     p.warnings.push_back(text.str());
   }
+  // Glyphs so large that every ray crosses hundreds of their influence
+  // regions make a render take hours, not seconds: say so before it starts.
+  // The mean number a ray crosses is about the sum over glyphs of the
+  // share of the view each one's largest cross-section covers (at most
+  // all of it), at the framed distance.
+  const CameraSpec& c = p.camera;
+  const double aspect = c.frame_width * p.render.width / (c.frame_height * p.render.height);
+  const double view_height = c.projection == Projection::perspective
+                                 ? 2.0 * std::tan(0.5 * c.fov_degrees * M_PI / 180.0) * (c.look_at - c.position).norm()
+                                 : c.height;
+  const double view_area = view_height * view_height * aspect;
+  const double R = p.spec.surface.influence_radius;
+  double crossed = 0.0;
+  for (const GlyphSource& s : p.glyphs.sources) {
+    Vec3 r = s.radii;
+    std::sort(r.data(), r.data() + 3);
+    crossed += std::min(1.0, M_PI * R * r[2] * R * r[1] / view_area);
+  }
+  if (crossed > kCrowdedRay) {
+    std::ostringstream text;
+    text << "the glyphs overlap so much that a ray crosses about " << std::lround(crossed)
+         << " of their influence regions: the render will be slow; lower glyphs.scale or glyphs.ceiling, or "
+            "raise glyphs.spacing";
+    p.warnings.push_back(text.str());
+  }
   if (!p.field.sources.empty() && field_value(p.field, p.camera.position) >= p.field.isovalue)
     p.warnings.push_back("the camera is inside the surface: every ray starts inside a glyph; move camera.position "
                          "out, or leave it out to frame the glyphs from outside");
@@ -188,6 +220,10 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   };
   p.render.width = s.render.width.value_or(pixels(0));
   p.render.height = s.render.height.value_or(pixels(1));
+  std::ostringstream picture;
+  picture << "the picture (" << p.render.width << " × " << p.render.height << " pixels)";
+  check_memory(kBytesPerPixel * p.render.width * p.render.height, picture.str(),
+               "lower render.width and render.height (or output.print_size or output.dpi)");
   p.render.samples = s.render.samples;
   p.render.shadow_offset = s.render.shadow_offset.value_or(kShadowOffsetPerDiagonal * diagonal);
   // Exact wherever it applies: it was the faster of the two over the

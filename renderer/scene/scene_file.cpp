@@ -63,6 +63,7 @@ std::string existing_file(TableReader& table, std::string_view key, const std::s
                           const std::string& base_dir) {
   const std::filesystem::path p(file);
   const std::string path = p.is_absolute() ? file : (std::filesystem::path(base_dir) / p).lexically_normal().string();
+  if (std::filesystem::is_directory(path)) table.fail_at(key, "names a directory, not a file: " + path);
   if (!std::filesystem::is_regular_file(path))
     table.fail_at(key, "names no file: " + path + " (relative paths are relative to the scene file)");
   return path;

@@ -217,7 +217,11 @@ std::vector<Vec3> TableReader::points(std::string_view key) {
     if (!numeric)
       fail(element, key, "must be an array of [x, y, z] points, got an element " + describe(element));
     Vec3 v;
-    for (std::size_t k = 0; k < 3; ++k) v[Eigen::Index(k)] = *(*p)[k].value<double>();
+    for (std::size_t k = 0; k < 3; ++k) {
+      v[Eigen::Index(k)] = *(*p)[k].value<double>();
+      if (!std::isfinite(v[Eigen::Index(k)]))
+        fail((*p)[k], key, "must hold finite coordinates, got " + describe((*p)[k]));
+    }
     out.push_back(v);
   }
   return out;

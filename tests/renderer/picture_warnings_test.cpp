@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "field/memory_budget.h"
 #include "renderer/app/prepared_scene.h"
 
 namespace hsb {
@@ -34,6 +35,51 @@ TEST(PictureWarnings, CameraInsideTheSurface) {
   const auto w = warnings_for(seeds + "[camera]\nposition = [0, 0, 0.5]\nlook_at = [1, 0, 0.5]\n");
   EXPECT_TRUE(mentions(w, "camera is inside the surface"));
   EXPECT_FALSE(mentions(warnings_for(seeds), "camera is inside"));
+}
+
+TEST(PictureWarnings, RaysThroughHundredsOfGlyphs) {
+  // Dense spacing and large glyphs over a framed box: every ray crosses
+  // most of them.
+  const std::string crowded = seeds +
+                              "[glyphs]\nspacing = 0.002\nmapping = \"constant\"\nscale = 2\n"
+                              "[camera]\nframe = \"data\"\n";
+  EXPECT_TRUE(mentions(warnings_for(crowded), "a ray crosses about"));
+  EXPECT_FALSE(mentions(warnings_for(seeds), "a ray crosses about"));
+}
+
+// The message of the ResourceError that preparing `scene` throws.
+std::string refusal(const std::string& scene) {
+  try {
+    warnings_for(scene);
+  } catch (const ResourceError& e) {
+    return e.what();
+  }
+  return "not refused";
+}
+
+TEST(ResourceLimits, ScenesLargerThanTheMachineAreRefusedBeforeAllocating) {
+  // Each would take terabytes: refused at once, naming the estimate and the key.
+  const std::string seeds_grid = refusal("[[seeds.grid]]\nn = 10000\nm = 10000\n");
+  EXPECT_NE(seeds_grid.find("the trajectories (100000000 seeds"), std::string::npos) << seeds_grid;
+  EXPECT_NE(seeds_grid.find("seeds.grid n and m"), std::string::npos) << seeds_grid;
+  const std::string step = refusal(seeds + "[trajectories]\nstep = 1e-9\nmax_steps = 1000000000\n");
+  EXPECT_NE(step.find("trajectories.step"), std::string::npos) << step;
+  const std::string spacing = refusal(seeds + "[glyphs]\nspacing = 1e-9\n");
+  EXPECT_NE(spacing.find("raise glyphs.spacing"), std::string::npos) << spacing;
+  EXPECT_NE(spacing.find("would take about"), std::string::npos) << spacing;
+  const std::string at_seeds = refusal("[glyphs]\nplacement = \"seeds\"\n[[seeds.grid]]\nn = 10000\nm = 10000\n"
+                                       "[[seeds.grid]]\nn = 10000\nm = 10000\n[[seeds.grid]]\nn = 10000\nm = 10000\n"
+                                       "[[seeds.grid]]\nn = 10000\nm = 10000\n");
+  EXPECT_NE(at_seeds.find("one at each of 400000000 seeds"), std::string::npos) << at_seeds;
+  // What fits is not refused.
+  EXPECT_EQ(refusal(seeds), "not refused");
+}
+
+TEST(ResourceLimits, HumanSizes) {
+  EXPECT_EQ(human_bytes(512), "512 bytes");
+  EXPECT_EQ(human_bytes(2.345e9), "2.35 GB");
+  EXPECT_EQ(human_bytes(7.69e12), "7.69 TB");
+  EXPECT_GT(memory_budget_bytes(), std::size_t(100) << 20);
 }
 
 }  // namespace

@@ -144,6 +144,14 @@ TEST_F(SceneFile, NonFiniteNumbersAreRefusedExceptAnInfiniteCeiling) {
   EXPECT_NE(error_of(std::string(minimal) + "[camera]\nposition = [1, inf, 0]\n").find("camera.position"),
             std::string::npos);
   EXPECT_EQ(error_of(std::string(minimal) + "[glyphs]\nceiling = inf\n"), "");
+  const std::string seed = error_of("[seeds]\npoints = [[0, 0, 0.5], [0, nan, 0.5]]\n");
+  EXPECT_EQ(seed, path_ + ":2:28: seeds.points must hold finite coordinates, got nan");
+}
+
+TEST_F(SceneFile, ADirectoryIsNoDataFile) {
+  std::filesystem::create_directories("/tmp/hsb_scene_test/folder.vtu");
+  const std::string e = error_of("[data]\nfile = \"folder.vtu\"\n");
+  EXPECT_EQ(e, path_ + ":2:8: data.file names a directory, not a file: /tmp/hsb_scene_test/folder.vtu");
 }
 
 TEST_F(SceneFile, UnknownKeyIsAnErrorNotIgnored) {
