@@ -2,40 +2,45 @@
 // A file that appears complete or not at all: written under a temporary
 // name beside its final path (".NAME.partial.EXT", hidden), then renamed
 // into place, which replaces a file of that name only at the very end.
+//
+// Every temporary name is registered while it exists, so that a signal
+// handler can remove them all before the program exits
+// (remove_partial_files, async-signal-safe): an interrupted run leaves
+// neither a temporary file nor a half-written one under a final name.
 
 #include <filesystem>
-#include <stdexcept>
 #include <string>
 
 namespace hsb {
 
 class PartialFile {
  public:
-  explicit PartialFile(const std::string& final_path)
-      : final_(final_path),
-        temp_(final_.parent_path() / ("." + final_.stem().string() + ".partial" + final_.extension().string())) {}
-  ~PartialFile() {
-    std::error_code ignored;
-    if (!done_) std::filesystem::remove(temp_, ignored);
-  }
+  explicit PartialFile(const std::string& final_path);
+  ~PartialFile();
   PartialFile(const PartialFile&) = delete;
   PartialFile& operator=(const PartialFile&) = delete;
 
   // Where to write.
   std::string path() const { return temp_.string(); }
 
+  // Writes `size` bytes to path(), checking every step down to the disk
+  // (a full disk, a file size limit): throws std::runtime_error naming the
+  // final path when any fails. For writers that report no errors of their
+  // own, which write into memory and hand the bytes here.
+  void write(const void* data, std::size_t size) const;
+
   // Moves the finished file into place; throws std::runtime_error (and
   // removes it) when that fails.
-  void commit() {
-    std::error_code error;
-    std::filesystem::rename(temp_, final_, error);
-    if (error) throw std::runtime_error(final_.string() + ": cannot move the finished file into place: " + error.message());
-    done_ = true;
-  }
+  void commit();
 
  private:
   std::filesystem::path final_, temp_;
+  int slot_ = -1;  // in the registry
   bool done_ = false;
 };
+
+// Removes every registered temporary file. Safe to call from a signal
+// handler: it only reads fixed buffers and calls unlink().
+void remove_partial_files();
 
 }  // namespace hsb

@@ -37,7 +37,9 @@ void write_polydata(vtkPolyData* poly, const std::string& path) {
   PartialFile file(path);
   const VtkSession vtk;
   auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
-  writer->SetFileName(file.path().c_str());
+  // Into memory, then to disk through PartialFile::write, which checks
+  // every write: VTK's own file output ignores a full disk.
+  writer->WriteToOutputStringOn();
   writer->SetInputData(poly);
   writer->SetDataModeToAppended();
   writer->SetCompressorTypeToZLib();
@@ -46,6 +48,8 @@ void write_polydata(vtkPolyData* poly, const std::string& path) {
     throw DataError(path + ": cannot write the file" + (why.empty() ? "" : ": " + why));
   }
   try {
+    const std::string bytes = writer->GetOutputString();
+    file.write(bytes.data(), bytes.size());
     file.commit();
   } catch (const std::runtime_error& e) {
     throw DataError(e.what());

@@ -1,15 +1,22 @@
 // hsb: the Hyperstreamball command line.
 
 #include <CLI/CLI.hpp>
+#include <tbb/global_control.h>
+
+#include <signal.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
 #include <exception>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "field/data_info.h"
+#include "field/partial_file.h"
+#include "renderer/app/batch.h"
 #include "renderer/app/export_job.h"
 #include "renderer/app/pinned_scene.h"
 #include "renderer/app/prepared_scene.h"
@@ -23,6 +30,28 @@
 #endif
 
 namespace {
+
+// Ctrl-C or a scheduler's SIGTERM: stop at once, wherever the program is
+// (reading data, tracing, writing an image), removing every temporary file
+// first. Images only ever reach their final names complete (PartialFile),
+// so an existing image at an output path stays as it was.
+extern "C" void stop_on_signal(int signal) {
+  hsb::remove_partial_files();
+  static const char message[] = "\nhsb: interrupted; no partial file left behind\n";
+  const ssize_t ignored = write(STDERR_FILENO, message, sizeof message - 1);
+  (void)ignored;
+  _exit(128 + signal);
+}
+
+void install_signal_handlers() {
+  struct sigaction action {};
+  action.sa_handler = stop_on_signal;
+  sigemptyset(&action.sa_mask);
+  for (int signal : {SIGINT, SIGTERM}) sigaction(signal, &action, nullptr);
+  // A hang-up stops the batch too, unless it runs under nohup.
+  struct sigaction hangup {};
+  if (sigaction(SIGHUP, nullptr, &hangup) == 0 && hangup.sa_handler != SIG_IGN) sigaction(SIGHUP, &action, nullptr);
+}
 
 void print_summary(const hsb::RenderSummary& s, bool with_stats) {
   for (const std::string& warning : s.warnings) std::fprintf(stderr, "hsb: warning: %s\n", warning.c_str());
@@ -54,6 +83,7 @@ void print_summary(const hsb::RenderSummary& s, bool with_stats) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  install_signal_handlers();
   CLI::App app{"Hyperstreamball " HSB_VERSION
                ": ray-traced hyperstreamballs (anisotropic metaballs along stress\n"
                "trajectories) for symmetric tensor fields."};
@@ -82,10 +112,25 @@ int main(int argc, char** argv) {
   render->footer(
       "Prints one line per image: file, sources, trajectories, time (build, render) and Mrays/s.\n"
       "A scene that fails prints one error (file:line:column: what was expected, what was found)\n"
-      "and leaves no image; the others still render. Exit status: 0 when all scenes rendered, 1 if\n"
-      "any failed, 106-109 for command-line usage errors.");
+      "and leaves no image; the others still render, and a summary at the end lists every failure.\n"
+      "Progress goes to standard error: a line updated in place on a terminal, a line every 10 s\n"
+      "of a long image otherwise, nothing with --quiet.\n"
+      "Sweeps: --set glyphs.spacing=0.02,0.05,0.1 renders one image per value (named after it);\n"
+      "several swept keys give every combination; a scene's [sweep] table does the same.\n"
+      "Ctrl-C or SIGTERM stops at once and leaves no partial file.\n"
+      "Exit status: 0 when every image rendered (or was up to date), 1 if any failed, 2 for a bad\n"
+      "--shard, 106-109 for other command-line errors, 130 after Ctrl-C, 143 after SIGTERM.");
   render->add_flag("--stats", stats,
                    "Also print ray counts, support intervals and field evaluations per ray");
+  bool quiet = false, skip_existing = false;
+  std::string shard_text;
+  render->add_flag("-q,--quiet", quiet, "No progress and no line per image; warnings and errors only");
+  render->add_flag("--skip-existing", skip_existing,
+                   "Skip an image whose file exists and holds this scene's hash (scene text, --set values,\n"
+                   "data file): a re-run batch renders only what changed");
+  render->add_option("--shard", shard_text,
+                     "K/N: render only the K-th of N shares of the batch (item i when i mod N = K-1), e.g.\n"
+                     "--shard $((SLURM_ARRAY_TASK_ID+1))/$SLURM_ARRAY_TASK_COUNT in a Slurm job array");
 
   CLI::App* info = app.add_subcommand(
       "info",
@@ -126,34 +171,47 @@ int main(int argc, char** argv) {
       "pov: writes <scene>.pov and <scene>.ini: the same sources as one POV-Ray blob, with the\n"
       "scene's camera, key light, shadows, background and image size.");
 
-  CLI11_PARSE(app, argc, argv);
+  int threads = 0;
+  app.add_option("--threads", threads, "Use at most N threads (default: every core)")->check(CLI::PositiveNumber);
 
-  // Runs `work` for each input, reporting each failure once; returns the exit status.
+  CLI11_PARSE(app, argc, argv);
+  std::optional<tbb::global_control> thread_limit;
+
+  if (threads > 0) thread_limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+
+  // Runs `work` for each input; each failure is reported once as it
+  // happens and again, with the others, in a summary at the end.
   auto for_each = [](const std::vector<std::string>& inputs, const char* noun, auto&& work) {
-    int failures = 0;
-    for (const std::string& input : inputs) {
+    std::vector<std::string> failures;
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+      const std::string& input = inputs[i];
+      std::string message;
       try {
-        work(input);
+        work(i);
+        continue;
       } catch (const hsb::SceneError& e) {
-        std::fprintf(stderr, "hsb: %s\n", e.what());
-        ++failures;
+        message = e.what();
       } catch (const std::exception& e) {
         // Data errors already start with the data file's path; name the
         // input only when it adds something.
-        const std::string message = e.what();
-        if (message.rfind(input + ":", 0) == 0)
-          std::fprintf(stderr, "hsb: %s\n", message.c_str());
-        else
-          std::fprintf(stderr, "hsb: %s: %s\n", input.c_str(), message.c_str());
-        ++failures;
+        message = e.what();
+        if (message.rfind(input + ":", 0) != 0) message = input + ": " + message;
       }
+      std::fprintf(stderr, "hsb: %s\n", message.c_str());
+      failures.push_back(message);
     }
-    if (failures) std::fprintf(stderr, "hsb: %d of %zu %s failed\n", failures, inputs.size(), noun);
-    return failures ? 1 : 0;
+    // One input's error needs no summary; a batch's failures are listed
+    // again at its end, where a long log is read first.
+    if (!failures.empty() && inputs.size() > 1) {
+      std::fprintf(stderr, "hsb: %zu of %zu %s failed:\n", failures.size(), inputs.size(), noun);
+      for (const std::string& f : failures) std::fprintf(stderr, "  %s\n", f.substr(0, f.find('\n')).c_str());
+    }
+    return failures.empty() ? 0 : 1;
   };
 
   if (*info) {
-    return for_each(info_inputs, "inputs", [&](const std::string& input) {
+    return for_each(info_inputs, "inputs", [&](std::size_t i) {
+      const std::string& input = info_inputs[i];
       std::vector<std::string> overrides = info_overrides;
       if (!info_array.empty()) overrides.push_back("data.array=" + info_array);
       hsb::SceneSpec spec = hsb::load_scene_or_data_file(input, overrides);
@@ -166,13 +224,51 @@ int main(int argc, char** argv) {
     });
   }
   if (*exporter) {
-    return for_each(export_scenes, "scenes", [&](const std::string& scene) {
+    return for_each(export_scenes, "scenes", [&](std::size_t i) {
       const hsb::ExportFormat f = format == "pov" ? hsb::ExportFormat::pov : hsb::ExportFormat::vtp;
-      for (const std::string& path : hsb::run_export_job({scene, export_overrides, export_dir, f}))
+      for (const std::string& path : hsb::run_export_job({export_scenes[i], export_overrides, export_dir, f}))
         std::printf("%s\n", path.c_str());
     });
   }
-  return for_each(scenes, "scenes", [&](const std::string& scene) {
-    print_summary(hsb::run_render_job({scene, overrides, output_dir}), stats);
+  // The batch: every scene times every swept value, this node's share.
+  std::vector<hsb::BatchItem> items = hsb::expand_batch(scenes, overrides);
+  if (!shard_text.empty()) {
+    try {
+      items = hsb::shard_items(items, hsb::parse_shard(shard_text));
+    } catch (const std::invalid_argument& e) {
+      std::fprintf(stderr, "hsb: %s\n", e.what());
+      return 2;
+    }
+  }
+  std::vector<std::string> names;
+  for (const hsb::BatchItem& item : items)
+    names.push_back(item.variant.empty() ? item.scene : item.scene + " [" + item.variant + "]");
+  hsb::BatchProgress progress(hsb::BatchProgress::mode_for(quiet), items.size());
+  std::size_t skipped = 0;
+  const int status = for_each(names, "images", [&](std::size_t i) {
+    const hsb::BatchItem& item = items[i];
+    progress.start(i, std::filesystem::path(item.scene).filename().string() +
+                          (item.variant.empty() ? "" : " [" + item.variant + "]"));
+    hsb::RenderJob job{item.scene, item.overrides, output_dir, item.variant, skip_existing,
+                       [&](hsb::JobStage stage, double fraction) { progress.update(stage, fraction); }};
+    hsb::RenderSummary summary;
+    try {
+      summary = hsb::run_render_job(job);
+    } catch (...) {
+      progress.finish();
+      throw;
+    }
+    progress.finish();
+    if (summary.skipped) {
+      ++skipped;
+      if (!quiet) std::printf("%s  up to date, skipped\n", summary.image_path.c_str());
+      std::fflush(stdout);
+    } else if (!quiet) {
+      print_summary(summary, stats);
+    } else {
+      for (const std::string& w : summary.warnings) std::fprintf(stderr, "hsb: warning: %s\n", w.c_str());
+    }
   });
+  if (skipped && !quiet) std::printf("%zu of %zu images up to date, skipped\n", skipped, items.size());
+  return status;
 }

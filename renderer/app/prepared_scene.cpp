@@ -160,6 +160,10 @@ double glyph_extent(const SurfaceSpec& surface) {
   return surface.influence_radius * kernel_level_radius(surface.kernel, surface.isovalue);
 }
 
+std::string output_file_name(const SceneSpec& spec) {
+  return spec.output.file.value_or(std::filesystem::path(spec.path).stem().string() + ".png");
+}
+
 ColorManagement scene_color_management(const SceneSpec& spec) {
   const OutputSpec& o = spec.output;
   try {
@@ -233,7 +237,7 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   p.trace.min_step = s.render.min_step.value_or(kMinStepPerDiagonal * diagonal);
   p.trace.max_steps = s.render.max_steps;
 
-  p.output.file = s.output.file.value_or(std::filesystem::path(s.path).stem().string() + ".png");
+  p.output.file = output_file_name(s);
   const bool exr = is_scene_linear_format(p.output.file);
   p.output.bit_depth = s.output.bit_depth.value_or(exr ? 32 : 8);
   p.output.dpi = s.output.dpi;

@@ -47,6 +47,10 @@ struct PreparedScene {
   PreparedScene(PreparedScene&&) = delete;
 };
 
+// The image's file name, relative to the output folder: output.file, else
+// the scene's (or data file's) name with .png.
+std::string output_file_name(const SceneSpec& spec);
+
 // The colour management the scene's [output] asks for: its OCIO config
 // (else $OCIO, else the built-in one), display and view. Throws SceneError
 // naming the scene when the config cannot be read or has no such display

@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 
+#include "renderer/app/batch.h"
 #include "renderer/app/pinned_scene.h"
 #include "renderer/app/prepared_scene.h"
 #include "renderer/image/color_management.h"
@@ -59,13 +60,18 @@ std::string scene_text(const SceneSpec& spec) {
   return text;
 }
 
+const std::string& data_file_of(const SceneSpec& spec) {
+  static const std::string none;
+  return spec.pipeline.data.kind == DataKind::vtk_file ? spec.pipeline.data.file.path : none;
+}
+
 // Everything the picture is made from as written in the image: the scene,
 // its overrides and, by its hash, the data file.
 std::map<std::string, std::string> image_metadata(const PreparedScene& prepared, const ColorManagement& color) {
   const SceneSpec& spec = prepared.spec;
   const ColorScale& scale = prepared.scale;
   const std::size_t sources = prepared.field.sources.size();
-  const std::string& data_file = spec.pipeline.data.kind == DataKind::vtk_file ? spec.pipeline.data.file.path : "";
+  const std::string& data_file = data_file_of(spec);
   const std::string data_sha1 = file_sha1(data_file);
   const std::string text = scene_text(spec);
   std::ostringstream description;
@@ -78,7 +84,7 @@ std::map<std::string, std::string> image_metadata(const PreparedScene& prepared,
       {"ImageDescription", description.str()},
       {"hsb:scene", spec.path},
       {"hsb:scene_text", text},
-      {"hsb:scene_sha1", sha1_hex(text + "\n" + data_sha1)},
+      {"hsb:scene_sha1", scene_sha1(spec)},
       {"hsb:data_file", data_file},
       {"hsb:data_sha1", data_sha1},
       {"hsb:resolved", pinned_scene_toml(prepared)},
@@ -127,11 +133,30 @@ ImageToWrite scene_linear_image(const Film& film) {
 
 }  // namespace
 
+std::string scene_sha1(const SceneSpec& spec) {
+  return sha1_hex(scene_text(spec) + "\n" + file_sha1(data_file_of(spec)));
+}
+
 RenderSummary run_render_job(const RenderJob& job) {
   const auto start = Clock::now();
+  const auto report = [&](JobStage stage, double fraction) {
+    if (job.progress) job.progress(stage, fraction);
+  };
+  report(JobStage::preparing, 0.0);
   SceneSpec loaded = load_scene_or_data_file(job.scene_path, job.overrides);
+  if (job.skip_existing) {
+    const std::string existing =
+        (std::filesystem::path(job.output_dir) / file_for_variant(output_file_name(loaded), job.variant)).string();
+    if (stored_scene_sha1(existing) == scene_sha1(loaded)) {
+      RenderSummary skipped;
+      skipped.image_path = existing;
+      skipped.skipped = true;
+      return skipped;
+    }
+  }
   const ColorManagement color = scene_color_management(loaded);
   const std::unique_ptr<PreparedScene> prepared = prepare_scene(std::move(loaded), color);
+  prepared->output.file = file_for_variant(prepared->output.file, job.variant);
   const SceneSpec& spec = prepared->spec;
   const BlobField& field = prepared->field;
   const ColorScale& scale = prepared->scale;
@@ -140,9 +165,13 @@ RenderSummary run_render_job(const RenderJob& job) {
   static const EmbreeDevice device;
   const RayScene scene(device, field, prepared->trace, prepared->context);
   const double build_seconds = seconds_since(start);
-  RenderOutput rendered = render_image(scene, prepared->camera, prepared->shading, prepared->render);
+  RenderSettings settings = prepared->render;
+  settings.progress = [&](double fraction) { report(JobStage::rendering, fraction); };
+  report(JobStage::rendering, 0.0);
+  RenderOutput rendered = render_image(scene, prepared->camera, prepared->shading, settings);
 
   // Render → result (the film) → display image → annotation → file.
+  report(JobStage::writing, 1.0);
   const auto output_start = Clock::now();
   const std::filesystem::path image_path = std::filesystem::path(job.output_dir) / output.file;
   std::filesystem::create_directories(image_path.parent_path());

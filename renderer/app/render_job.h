@@ -1,9 +1,12 @@
 #pragma once
 // One scene file rendered to one image: the whole data flow of design §4.
 
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "renderer/app/progress.h"
+#include "renderer/scene/scene_spec.h"
 #include "renderer/surface/trace_stats.h"
 
 namespace hsb {
@@ -12,10 +15,19 @@ struct RenderJob {
   std::string scene_path;
   std::vector<std::string> overrides;  // --set key=value
   std::string output_dir = "out";
+  // A sweep's values ("glyphs.spacing=0.02"), appended to the image's name.
+  std::string variant;
+  // Render only when the image there does not hold this scene's hash
+  // (scene text, overrides and data file): a re-run batch renders what
+  // changed.
+  bool skip_existing = false;
+  // Told each stage and, while rendering, the fraction done.
+  std::function<void(JobStage, double)> progress;
 };
 
 struct RenderSummary {
   std::string image_path;
+  bool skipped = false;  // skip_existing found it up to date
   std::size_t trajectories = 0;
   std::size_t sources = 0;
   double build_seconds = 0.0;   // data set, trajectories, sources, BVH
@@ -32,5 +44,9 @@ struct RenderSummary {
 // and std::runtime_error for anything else that prevents a complete image;
 // no partial image is ever left behind.
 RenderSummary run_render_job(const RenderJob& job);
+
+// The hash an image stores as hsb:scene_sha1: of the scene's text, its
+// overrides and the data file's bytes.
+std::string scene_sha1(const SceneSpec& spec);
 
 }  // namespace hsb

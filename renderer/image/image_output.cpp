@@ -1,10 +1,14 @@
 #include "renderer/image/image_output.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include "field/file_extension.h"
 #include "field/partial_file.h"
 
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 namespace hsb {
@@ -19,6 +23,25 @@ bool is_scene_linear_format(const std::string& path) { return lower_extension(pa
 bool is_vector_format(const std::string& path) {
   const std::string ext = lower_extension(path);
   return ext == ".pdf" || ext == ".svg";
+}
+
+std::string stored_scene_sha1(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path)) return "";
+  if (!is_vector_format(path)) {
+    auto in = OIIO::ImageInput::open(path);
+    return in ? std::string(in->spec().get_string_attribute("hsb:scene_sha1")) : "";
+  }
+  // Both vector formats keep it in plain text: "hsb:scene_sha1=HEX" in a
+  // PDF's uncompressed document information, key="hsb:scene_sha1">HEX in an SVG.
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  const std::string s = text.str();
+  for (const std::string marker : {"hsb:scene_sha1=", "key=\"hsb:scene_sha1\">"}) {
+    const std::size_t at = s.find(marker);
+    if (at != std::string::npos && at + marker.size() + 40 <= s.size()) return s.substr(at + marker.size(), 40);
+  }
+  return "";
 }
 
 void write_image(const ImageToWrite& image, const std::string& path) {
@@ -59,12 +82,18 @@ void write_image(const ImageToWrite& image, const std::string& path) {
   for (const auto& [key, value] : image.metadata) spec.attribute(key, value);
 
   PartialFile file(path);
+  // Where the format can, the encoder writes into memory and the bytes go
+  // to disk through PartialFile::write, which checks every write: libpng's
+  // own file output ignores a full disk and leaves a truncated image.
+  OIIO::Filesystem::IOVecOutput memory;
   auto out = OIIO::ImageOutput::create(file.path());
   if (!out) throw std::runtime_error(path + ": " + OIIO::geterror());
+  const bool in_memory = out->supports("ioproxy") && out->set_ioproxy(&memory);
   const bool ok = out->open(file.path(), spec) &&
                   out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data()) && out->close();
   if (!ok) throw std::runtime_error(path + ": " + out->geterror());
   out.reset();
+  if (in_memory) file.write(memory.buffer().data(), memory.buffer().size());
   file.commit();
 }
 

@@ -34,4 +34,9 @@ bool is_scene_linear_format(const std::string& path);
 // True for the vector formats, PDF and SVG.
 bool is_vector_format(const std::string& path);
 
+// The scene hash (hsb:scene_sha1) stored in an image this program wrote:
+// from the metadata of a PNG, TIFF or EXR, from a PDF's keywords or an
+// SVG's <metadata>. "" when the file is missing, unreadable or holds none.
+std::string stored_scene_sha1(const std::string& path);
+
 }  // namespace hsb

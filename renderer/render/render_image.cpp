@@ -176,6 +176,7 @@ RenderOutput render_image(const RayScene& scene, const CameraSpec& camera_spec, 
     tbb::parallel_for(band, band_end, [&](int y) {
       for (int x = 0; x < settings.width; ++x) gather_pixel(x, y, settings, per_pixel, rows, out.film);
     });
+    if (settings.progress) settings.progress(double(band_end) / settings.height);
   }
 
   for (const SampleTracer& t : tracers) {

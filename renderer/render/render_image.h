@@ -10,6 +10,7 @@
 // bands of samples, whatever the picture's size.
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "renderer/render/camera.h"
@@ -29,6 +30,9 @@ struct RenderSettings {
   double shadow_offset = 1e-5;
   // Film planes besides colour and alpha (an EXR's layers).
   std::vector<Plane> planes;
+  // Called after each band with the fraction of the picture made; empty:
+  // nobody is watching.
+  std::function<void(double)> progress;
 };
 
 struct RenderOutput {

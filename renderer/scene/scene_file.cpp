@@ -385,6 +385,7 @@ SceneSpec load_scene_text(const std::string& text, const std::string& path, cons
   if (auto l = top.table("light")) read_light(*l, spec.shading, spec.light);
   if (auto r = top.table("render")) read_render(*r, spec);
   if (auto o = top.table("output")) read_output(*o, spec.output, base_dir);
+  top.allow("sweep");  // read by the batch (renderer/app/batch.h), not here
   top.finish();
   return spec;
 }

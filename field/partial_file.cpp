@@ -1,0 +1,89 @@
+#include "field/partial_file.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+namespace hsb {
+namespace {
+
+// Temporary files in flight: a slot's path is complete before the slot is
+// marked ready, so a signal handler never reads half a name.
+constexpr int kSlots = 64;
+constexpr std::size_t kPathBytes = 4096;
+char registry_paths[kSlots][kPathBytes];
+std::atomic<int> registry_state[kSlots];  // 0 free, 1 being written, 2 ready
+
+int register_path(const std::string& path) {
+  if (path.size() >= kPathBytes) return -1;
+  for (int i = 0; i < kSlots; ++i) {
+    int free = 0;
+    if (!registry_state[i].compare_exchange_strong(free, 1)) continue;
+    std::memcpy(registry_paths[i], path.c_str(), path.size() + 1);
+    registry_state[i].store(2);
+    return i;
+  }
+  return -1;  // more files in flight than slots: that one is not covered
+}
+
+void unregister_path(int slot) {
+  if (slot >= 0) registry_state[slot].store(0);
+}
+
+}  // namespace
+
+void remove_partial_files() {
+  for (int i = 0; i < kSlots; ++i)
+    if (registry_state[i].load() == 2) unlink(registry_paths[i]);
+}
+
+PartialFile::PartialFile(const std::string& final_path)
+    : final_(final_path),
+      temp_(final_.parent_path() / ("." + final_.stem().string() + ".partial" + final_.extension().string())) {
+  slot_ = register_path(temp_.string());
+}
+
+PartialFile::~PartialFile() {
+  std::error_code ignored;
+  if (!done_) std::filesystem::remove(temp_, ignored);
+  unregister_path(slot_);
+}
+
+void PartialFile::write(const void* data, std::size_t size) const {
+  const auto fail = [&](const char* what) {
+    throw std::runtime_error(final_.string() + ": cannot write the file (" + what + ": " + std::strerror(errno) + ")");
+  };
+  const int fd = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) fail("open");
+  const char* bytes = static_cast<const char*>(data);
+  while (size > 0) {
+    const ssize_t n = ::write(fd, bytes, size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      if (n == 0) errno = ENOSPC;
+      ::close(fd);
+      fail("write");
+    }
+    bytes += n;
+    size -= std::size_t(n);
+  }
+  // A full disk may only show when the data reaches it.
+  if (::fsync(fd) != 0 && errno != EINVAL) {
+    ::close(fd);
+    fail("fsync");
+  }
+  if (::close(fd) != 0) fail("close");
+}
+
+void PartialFile::commit() {
+  std::error_code error;
+  std::filesystem::rename(temp_, final_, error);
+  if (error) throw std::runtime_error(final_.string() + ": cannot move the finished file into place: " + error.message());
+  done_ = true;
+}
+
+}  // namespace hsb

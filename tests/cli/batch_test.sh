@@ -1,0 +1,108 @@
+#!/usr/bin/env bash
+# hsb render as a batch tool: every shipped scene with deliberately broken
+# ones (good ones render, broken ones are summarised, exit 1); sweeps and
+# shards (the shards' union is the batch, each image once); --skip-existing;
+# interruption (SIGINT, SIGTERM: stops at once, no temporary file, an old
+# image intact); a full disk (an error, no file); progress and --quiet.
+set -uo pipefail
+hsb=$1
+src=$(cd "$(dirname "$0")/../.." && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+small=(--set render.width=48 --set render.height=48 --set render.samples=1)
+
+# --- A batch of every shipped scene plus broken ones.
+mkdir -p "$work/broken"
+printf '[glyphs]\nspacing = -1\n' > "$work/broken/negative_spacing.toml"
+printf '[seeds\n' > "$work/broken/malformed.toml"
+printf '[[seeds.grid]]\nn = 10000\nm = 10000\n' > "$work/broken/too_large.toml"
+head -c 3000 /dev/urandom > "$work/broken/random.vtu"
+printf '[data]\nfile = "random.vtu"\n' > "$work/broken/random_data.toml"
+"$hsb" render "$src"/scenes/*.toml "$work"/broken/*.toml -o "$work/all" "${small[@]}" > "$work/log" 2> "$work/err"
+status=$?
+[[ $status -eq 1 ]] || fail "batch with broken scenes exited $status: $(cat "$work/err")"
+for scene in "$src"/scenes/*.toml; do
+  name=$(basename "$scene" .toml)
+  [[ -s "$work/all/$name.png" ]] || fail "good scene $name not rendered: $(cat "$work/err")"
+done
+total=$(( $(ls "$src"/scenes/*.toml | wc -l) + 4 ))
+grep -q "hsb: 4 of $total images failed:" "$work/err" || fail "no summary: $(cat "$work/err")"
+for what in "glyphs.spacing must be > 0" "expected ']'" "would take about" "not a VTK XML file"; do
+  [[ $(grep -c -- "$what" "$work/err") -eq 2 ]] || fail "\"$what\" not reported once, then in the summary: $(cat "$work/err")"
+done
+[[ -z $(ls "$work/all" | grep -v '\.png$') ]] || fail "stray files: $(ls -A "$work/all")"
+
+# --- Sweeps, named after their values, and shards.
+"$hsb" render "$src/scenes/fig07_point_load_normalized.toml" -o "$work/sweep" "${small[@]}" \
+  --set glyphs.spacing=0.3,0.6 --set color.map=magma,cividis --quiet 2> "$work/err" || fail "sweep: $(cat "$work/err")"
+[[ ! -s "$work/err" ]] || fail "--quiet printed: $(cat "$work/err")"
+[[ $(ls "$work/sweep" | wc -l) -eq 4 ]] || fail "a 2 x 2 sweep gave: $(ls "$work/sweep")"
+[[ -s "$work/sweep/fig07_point_load_normalized_glyphs.spacing=0.6,color.map=magma.png" ]] \
+  || fail "sweep names: $(ls "$work/sweep")"
+printf '[sweep]\n"glyphs.spacing" = [0.3, 0.6, 0.9]\n' > "$work/swept.toml"
+batch=("$src/scenes/fig07_point_load_normalized.toml" "$work/swept.toml" "$src/scenes/fig10_cylinder_ellipsoids.toml")
+for k in 1 2 3; do
+  "$hsb" render "${batch[@]}" -o "$work/shard$k" "${small[@]}" --set render.samples=1,2 --shard "$k/3" --quiet \
+    || fail "shard $k/3"
+done
+"$hsb" render "${batch[@]}" -o "$work/whole" "${small[@]}" --set render.samples=1,2 --quiet || fail "whole batch"
+[[ $(ls "$work/whole" | wc -l) -eq 10 ]] || fail "the batch is not 10 images: $(ls "$work/whole")"
+diff <(ls "$work"/shard{1,2,3} | grep png | sort) <(ls "$work/whole" | sort) > /dev/null \
+  || fail "shards are not the batch: $(ls "$work"/shard{1,2,3})"
+[[ -z $(ls "$work"/shard{1,2,3} | grep png | sort | uniq -d) ]] || fail "an image in two shards"
+
+# --- --skip-existing: unchanged scenes are skipped, a changed value or data file is not.
+cp "$src/scenes/data/generated/beam_bending.vtu" "$work/beam.vtu"
+"$hsb" render "$work/beam.vtu" -o "$work/skip" "${small[@]}" --quiet || fail "first render"
+before=$(stat -c %Y.%s "$work/skip/beam.png"); sleep 1
+"$hsb" render "$work/beam.vtu" -o "$work/skip" "${small[@]}" --skip-existing > "$work/log" || fail "skip run"
+grep -q "up to date, skipped" "$work/log" || fail "not skipped: $(cat "$work/log")"
+[[ $(stat -c %Y.%s "$work/skip/beam.png") == "$before" ]] || fail "a skipped image was rewritten"
+"$hsb" render "$work/beam.vtu" -o "$work/skip" "${small[@]}" --set glyphs.mapping=linear --skip-existing > "$work/log" \
+  || fail "changed --set"
+grep -q "beam.png  sources=" "$work/log" || fail "a changed --set was skipped: $(cat "$work/log")"
+cp "$src/scenes/data/generated/thin_plate_shear.vtu" "$work/beam.vtu"
+"$hsb" render "$work/beam.vtu" -o "$work/skip" "${small[@]}" --set glyphs.mapping=linear --skip-existing > "$work/log" \
+  || fail "changed data"
+grep -q "beam.png  sources=" "$work/log" || fail "changed data was skipped: $(cat "$work/log")"
+
+# --- Interrupted: stops at once, the old image intact, no temporary file.
+long=("$src/scenes/fig09_point_load_hyperstreamsurface.toml" --set render.width=1400 --set render.height=1400)
+for signal in TERM INT; do
+  for delay in 0.6 2; do
+    rm -rf "$work/kill"; mkdir -p "$work/kill"
+    echo "the previous image" > "$work/kill/fig09_point_load_hyperstreamsurface.png"
+    "$hsb" render "${long[@]}" -o "$work/kill" > /dev/null 2> "$work/err" &
+    pid=$!
+    sleep "$delay"
+    kill -s "$signal" "$pid"
+    start=$(date +%s%N)
+    wait "$pid"; status=$?
+    elapsed_ms=$(( ($(date +%s%N) - start) / 1000000 ))
+    expected=$([[ $signal == TERM ]] && echo 143 || echo 130)
+    [[ $status -eq $expected ]] || fail "SIG$signal after ${delay}s: exit $status, expected $expected: $(cat "$work/err")"
+    (( elapsed_ms < 1000 )) || fail "SIG$signal took ${elapsed_ms} ms to stop"
+    [[ $(ls -A "$work/kill") == "fig09_point_load_hyperstreamsurface.png" ]] || fail "left: $(ls -A "$work/kill")"
+    [[ $(cat "$work/kill/fig09_point_load_hyperstreamsurface.png") == "the previous image" ]] \
+      || fail "SIG$signal replaced the previous image"
+  done
+done
+
+# --- A full disk (here a file size limit): an error and no file, for images and exports.
+mkdir -p "$work/full"
+( ulimit -f 8; trap '' XFSZ
+  "$hsb" render "$src/scenes/fig07_point_load_normalized.toml" -o "$work/full" --set render.width=300 \
+    --set render.height=300 2> "$work/err_png"; echo $? > "$work/status_png"
+  "$hsb" export "$src/scenes/fig09_point_load_hyperstreamsurface.toml" -o "$work/full" 2> "$work/err_vtp"
+  echo $? > "$work/status_vtp" )
+[[ $(cat "$work/status_png") -eq 1 ]] || fail "a full disk: PNG exit $(cat "$work/status_png")"
+grep -q "cannot write the file" "$work/err_png" || fail "PNG: $(cat "$work/err_png")"
+[[ $(cat "$work/status_vtp") -eq 1 ]] || fail "a full disk: export exit $(cat "$work/status_vtp")"
+[[ -z $(ls -A "$work/full") ]] || fail "a full disk left: $(ls -lA "$work/full")"
+
+# --- --threads 1 gives the same bytes; progress lines in a log.
+"$hsb" --threads 1 render "$src/scenes/fig07_point_load_normalized.toml" -o "$work/t1" "${small[@]}" --quiet || fail "--threads 1"
+cmp -s "$work/t1/fig07_point_load_normalized.png" "$work/sweep/../all/fig07_point_load_normalized.png" \
+  || fail "--threads 1 changed the picture"
+echo PASS
