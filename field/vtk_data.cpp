@@ -14,6 +14,8 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkCell.h>
+#include <vtkCellType.h>
+#include <vtkGenericCell.h>
 #include <vtkCellArray.h>
 #include <vtkIdList.h>
 #include <vtkPoints.h>
@@ -28,6 +30,7 @@
 #include <map>
 #include <sstream>
 
+#include "field/child_process.h"
 #include "field/data_error.h"
 #include "field/eigenvalue_range.h"
 #include "field/file_extension.h"
@@ -37,6 +40,24 @@
 
 namespace hsb {
 namespace {
+
+// VTK's readers trust the counts a file declares, and its filters the
+// cells they are given: a corrupt file can make them read past their
+// buffers (the data fuzzer found several). Each runs on the file in a
+// child process first, so such a file is a clear error and never a crash.
+// A generous time: a few seconds more than a read should take, however
+// large the file.
+void update_safely(vtkAlgorithm* algorithm, const std::string& path, const char* what) {
+  const double seconds = 30.0 + double(std::filesystem::file_size(path)) * 1e-6;
+  const ChildResult trial = run_in_child([&] { algorithm->Update(); }, seconds);
+  if (trial.outcome == ChildOutcome::crashed)
+    throw DataError(path + ": the file is corrupt: VTK's " + what + " crashed on it" +
+                    (trial.signal ? " (signal " + std::to_string(trial.signal) + ")" : std::string()));
+  if (trial.outcome == ChildOutcome::timed_out)
+    throw DataError(path + ": the file is corrupt: VTK's " + what + " did not finish it in " +
+                    std::to_string(int(seconds)) + " s");
+  algorithm->Update();
+}
 
 // A file of random bytes, or of another format, gets a clear message
 // before VTK sees it: legacy files start with their version line, XML
@@ -57,6 +78,52 @@ void check_header(const std::string& path, const std::string& ext) {
     throw DataError(path + ": not a VTK XML file: it does not start with \"<?xml\" or \"<VTKFile\"");
 }
 
+// VTK's cells index their points by their type's count: a hexahedron
+// listed with three points, or a biquadratic wedge with eight, is read past
+// its end by every filter. So every cell must have its type's count (VTK's
+// own, from an instance of the type), or at least the minimum for the
+// types of any size; higher-order Lagrange and Bezier cells and polyhedra,
+// whose layout lives in further arrays, are refused.
+void check_cell_sizes(vtkUnstructuredGrid* grid, const std::string& path) {
+  vtkCellArray* cells = grid->GetCells();
+  if (!cells) return;
+  const vtkIdType count = grid->GetNumberOfCells();
+  if (cells->GetNumberOfCells() != count || (count > 0 && !grid->GetCellTypesArray()))
+    throw DataError(path + ": the cell list and the cell types disagree on the number of cells");
+  std::map<int, vtkIdType> required;  // by type: the exact count, or −(the least) for any size
+  for (vtkIdType i = 0; i < count; ++i) {
+    const int type = grid->GetCellType(i);
+    auto known = required.find(type);
+    if (known == required.end()) {
+      const vtkSmartPointer<vtkCell> cell = vtkSmartPointer<vtkCell>::Take(vtkGenericCell::InstantiateCell(type));
+      std::ostringstream message;
+      if (!cell) {
+        message << path << ": cell " << i << " has type " << type << ", which is no VTK cell type";
+        throw DataError(message.str());
+      }
+      if (type == VTK_POLYHEDRON || (type >= VTK_LAGRANGE_CURVE && type <= VTK_BEZIER_WEDGE)) {
+        message << path << ": cell " << i << " is a " << cell->GetClassName()
+                << "; only linear and quadratic cells are supported (VTK's Tessellator filter turns others into them)";
+        throw DataError(message.str());
+      }
+      const vtkIdType fixed = cell->GetNumberOfPoints();
+      vtkIdType least = 1;
+      if (type == VTK_POLY_LINE) least = 2;
+      if (type == VTK_POLYGON || type == VTK_TRIANGLE_STRIP || type == VTK_QUADRATIC_POLYGON) least = 3;
+      if (type == VTK_CONVEX_POINT_SET) least = 4;
+      known = required.emplace(type, fixed > 0 ? fixed : -least).first;
+    }
+    const vtkIdType size = cells->GetCellSize(i);
+    const vtkIdType need = known->second;
+    if (need > 0 ? size != need : size < -need) {
+      std::ostringstream message;
+      message << path << ": cell " << i << " is a " << vtkCellTypes::GetClassNameFromTypeId(type) << " with " << size
+              << " points; it needs " << (need > 0 ? "" : "at least ") << std::abs(need);
+      throw DataError(message.str());
+    }
+  }
+}
+
 // What no reader checks but everything after relies on: finite point
 // coordinates, cells that name existing points, and some volume to sample.
 void check_dataset(vtkDataSet* data, const std::string& path) {
@@ -72,6 +139,7 @@ void check_dataset(vtkDataSet* data, const std::string& path) {
     }
   }
   if (auto* grid = vtkUnstructuredGrid::SafeDownCast(data)) {
+    check_cell_sizes(grid, path);
     vtkDataArray* connectivity = grid->GetCells() ? grid->GetCells()->GetConnectivityArray() : nullptr;
     if (connectivity && connectivity->GetNumberOfTuples() > 0) {
       double range[2];
@@ -141,7 +209,7 @@ vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSessi
                     "\" (expected .vtk, .vti, .vtu, .vts or .vtr)");
   }
   check_header(path, ext);
-  reader->Update();
+  update_safely(reader, path, "reader");
   vtkSmartPointer<vtkDataSet> data = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
   // A reader's warning is a file it could not read as declared (a
   // truncated array reads as garbage, with only a warning): an error here.
@@ -267,14 +335,14 @@ std::vector<Sym3> read_tensors(const ChosenArray& chosen, const std::string& pat
 }
 
 // The point-data version of a cell array, by VTK's averaging filter.
-ChosenArray averaged_onto_points(vtkDataSet* data, const ChosenArray& cells,
+ChosenArray averaged_onto_points(vtkDataSet* data, const ChosenArray& cells, const std::string& path,
                                  vtkSmartPointer<vtkDataSet>& keep_alive) {
   vtkSmartPointer<vtkDataSet> only_this = vtkSmartPointer<vtkDataSet>::Take(data->NewInstance());
   only_this->CopyStructure(data);
   only_this->GetCellData()->AddArray(cells.array);
   auto filter = vtkSmartPointer<vtkCellDataToPointData>::New();
   filter->SetInputData(only_this);
-  filter->Update();
+  update_safely(filter, path, "cell-to-point averaging");
   keep_alive = vtkDataSet::SafeDownCast(filter->GetOutputDataObject(0));
   return {keep_alive->GetPointData()->GetArray(cells.array->GetName()), true, cells.name};
 }
@@ -293,7 +361,7 @@ bool is_axis_aligned_image(vtkDataSet* data) {
 // The data set's outer surface as triangles with vertex normals. Edges
 // sharper than 40° split the normals, so a cylinder's faceted wall shades
 // smoothly while its rim stays a rim.
-TriangleMesh boundary_surface(vtkDataSet* data) {
+TriangleMesh boundary_surface(vtkDataSet* data, const std::string& path) {
   auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
   surface->SetInputData(data);
   auto triangles = vtkSmartPointer<vtkTriangleFilter>::New();
@@ -308,7 +376,7 @@ TriangleMesh boundary_surface(vtkDataSet* data) {
   normals->AutoOrientNormalsOff();  // a hollow body has no single outside
   normals->ComputePointNormalsOn();
   normals->ComputeCellNormalsOff();
-  normals->Update();
+  update_safely(normals, path, "surface extraction");
   vtkPolyData* poly = normals->GetOutput();
   vtkDataArray* point_normals = poly->GetPointData()->GetNormals();
   TriangleMesh mesh;
@@ -344,7 +412,7 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
   if (!chosen.on_points && spec.cell_tensors == CellTensors::averaged) {
     // The checks and warnings above name cells, which the user can find;
     // the averaged copy would only repeat them for points.
-    chosen = averaged_onto_points(data, chosen, averaged);
+    chosen = averaged_onto_points(data, chosen, spec.path, averaged);
     std::vector<std::string> repeated;
     tensors = read_tensors(chosen, spec.path, repeated);
   }
@@ -365,7 +433,7 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
         chosen.on_points && averaged ? averaged.Get() : data.Get(), std::move(tensors),
         chosen.on_points ? TensorLocation::points : TensorLocation::cells);
   }
-  out.boundary = boundary_surface(data);
+  out.boundary = boundary_surface(data, spec.path);
   return out;
 }
 

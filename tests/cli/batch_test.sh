@@ -52,6 +52,14 @@ diff <(ls "$work"/shard{1,2,3} | grep png | sort) <(ls "$work/whole" | sort) > /
   || fail "shards are not the batch: $(ls "$work"/shard{1,2,3})"
 [[ -z $(ls "$work"/shard{1,2,3} | grep png | sort | uniq -d) ]] || fail "an image in two shards"
 
+# The Slurm example script, as three array tasks (indices 4-6), is the batch too.
+for task in 4 5 6; do
+  SLURM_ARRAY_TASK_ID=$task SLURM_ARRAY_TASK_MIN=4 SLURM_ARRAY_TASK_COUNT=3 SLURM_CPUS_PER_TASK=1 HSB="$hsb" \
+    HSB_OUT="$work/slurm" HSB_SET="${small[*]} --set render.samples=1,2 --quiet" \
+    bash "$src/scripts/slurm-render.sbatch" "${batch[@]}" || fail "slurm task $task"
+done
+diff <(ls "$work/slurm" | sort) <(ls "$work/whole" | sort) > /dev/null || fail "the Slurm tasks rendered: $(ls "$work/slurm")"
+
 # --- --skip-existing: unchanged scenes are skipped, a changed value or data file is not.
 cp "$src/scenes/data/generated/beam_bending.vtu" "$work/beam.vtu"
 "$hsb" render "$work/beam.vtu" -o "$work/skip" "${small[@]}" --quiet || fail "first render"
@@ -68,6 +76,15 @@ cp "$src/scenes/data/generated/thin_plate_shear.vtu" "$work/beam.vtu"
 grep -q "beam.png  sources=" "$work/log" || fail "changed data was skipped: $(cat "$work/log")"
 
 # --- Interrupted: stops at once, the old image intact, no temporary file.
+# A background job of a script starts with SIGINT ignored until hsb installs
+# its handler; wait for that (SigCgt in /proc) so the signal is not lost.
+wait_for_handler() {
+  for _ in $(seq 200); do
+    mask=$(awk '/^SigCgt:/ {print $2}' "/proc/$1/status" 2>/dev/null) || return 0
+    [[ -n $mask ]] && (( (16#$mask >> 1) & 1 )) && return 0
+    sleep 0.05
+  done
+}
 long=("$src/scenes/fig09_point_load_hyperstreamsurface.toml" --set render.width=1400 --set render.height=1400)
 for signal in TERM INT; do
   for delay in 0.6 2; do
@@ -75,6 +92,7 @@ for signal in TERM INT; do
     echo "the previous image" > "$work/kill/fig09_point_load_hyperstreamsurface.png"
     "$hsb" render "${long[@]}" -o "$work/kill" > /dev/null 2> "$work/err" &
     pid=$!
+    wait_for_handler "$pid"
     sleep "$delay"
     kill -s "$signal" "$pid"
     start=$(date +%s%N)

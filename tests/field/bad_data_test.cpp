@@ -65,6 +65,22 @@ struct LegacyGrid {
   }
 };
 
+// One tetrahedron as VTK XML, ASCII, with `points` as its coordinates and
+// a 6-component array "stress", marked as the active tensors or not.
+std::string tetrahedron_vtu(const std::string& points, bool active) {
+  return std::string("<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
+                     "<UnstructuredGrid>\n<Piece NumberOfPoints=\"4\" NumberOfCells=\"1\">\n<PointData") +
+         (active ? " Tensors=\"stress\"" : "") +
+         "><DataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"6\" format=\"ascii\">"
+         "1 2 3 0 0 0 1 2 3 0 0 0 1 2 3 0 0 0 1 2 3 0 0 0</DataArray></PointData>\n"
+         "<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">" + points +
+         "</DataArray></Points>\n"
+         "<Cells><DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0 1 2 3</DataArray>"
+         "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">4</DataArray>"
+         "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">10</DataArray></Cells>\n"
+         "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+}
+
 class BadData : public ::testing::Test {
  protected:
   fs::path write(const std::string& name, const std::string& text) {
@@ -113,6 +129,22 @@ TEST_F(BadData, ACellNamingAPointThatDoesNotExist) {
   EXPECT_NE(error_of(negative).find("names point -4"), std::string::npos) << error_of(negative);
 }
 
+TEST_F(BadData, CellsWithTheWrongNumberOfPointsForTheirType) {
+  // Found by the data fuzzer: VTK's filters read such cells past their end.
+  LegacyGrid wedge;
+  wedge.cell_type = 32;  // a biquadratic-quadratic wedge has 18 points, not 8
+  const fs::path path = write("wrong_size.vtk", wedge.text());
+  EXPECT_EQ(error_of(path), path.string() + ": cell 0 is a vtkBiQuadraticQuadraticWedge with 8 points; it needs 18");
+  LegacyGrid unknown;
+  unknown.cell_type = 200;
+  const fs::path bad = write("unknown_type.vtk", unknown.text());
+  EXPECT_NE(error_of(bad).find("cell 0 has type 200, which is no VTK cell type"), std::string::npos) << error_of(bad);
+  LegacyGrid lagrange;
+  lagrange.cell_type = 72;  // VTK_LAGRANGE_HEXAHEDRON
+  const fs::path higher = write("lagrange.vtk", lagrange.text());
+  EXPECT_NE(error_of(higher).find("only linear and quadratic cells are supported"), std::string::npos) << error_of(higher);
+}
+
 TEST_F(BadData, NoCellsAtAll) {
   LegacyGrid grid;
   grid.cells.clear();
@@ -139,19 +171,17 @@ TEST_F(BadData, NonFinitePointCoordinates) {
   const fs::path legacy = write("nan_point.vtk", grid.text());
   EXPECT_EQ(error_of(legacy), legacy.string() + ": cannot read it as a VTK data set: Unrecognized keyword: nan");
   // ... XML can: one tetrahedron with a NaN corner.
-  const std::string xml =
-      "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n<UnstructuredGrid>\n"
-      "<Piece NumberOfPoints=\"4\" NumberOfCells=\"1\">\n"
-      "<PointData Tensors=\"stress\"><DataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"6\" "
-      "format=\"ascii\">1 2 3 0 0 0 1 2 3 0 0 0 1 2 3 0 0 0 1 2 3 0 0 0</DataArray></PointData>\n"
-      "<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">"
-      "0 0 0 1 0 0 0 nan 0 0 0 1</DataArray></Points>\n"
-      "<Cells><DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0 1 2 3</DataArray>"
-      "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">4</DataArray>"
-      "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">10</DataArray></Cells>\n"
-      "</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-  const fs::path path = write("nan_point.vtu", xml);
+  const fs::path path = write("nan_point.vtu", tetrahedron_vtu("0 0 0 1 0 0 0 nan 0 0 0 1", true));
   EXPECT_EQ(error_of(path), path.string() + ": point 2 has a non-finite coordinate (0, nan, 0)");
+}
+
+TEST_F(BadData, TheOnlySixComponentArrayIsTheTensorsWithoutBeingActive) {
+  const fs::path path = write("inactive.vtu", tetrahedron_vtu("0 0 0 1 0 0 0 1 0 0 0 1", false));
+  EXPECT_EQ(error_of(path), "no error");
+  VtkFileSpec spec;
+  spec.path = path.string();
+  EXPECT_NE(describe_vtk_file(spec).find("tensors   \"stress\" (6 components, point data)"), std::string::npos)
+      << describe_vtk_file(spec);
 }
 
 TEST_F(BadData, TruncatedFiles) {

@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# The second half of CI: the unit tests built with clang under
+# AddressSanitizer and UndefinedBehaviorSanitizer (any finding fails), and
+# the fuzz targets for a short bounded time, in build-sanitize/.
+#
+#   scripts/sanitize.sh
+set -euo pipefail
+cd "$(dirname "$0")/.."
+source scripts/lib/packages.sh
+scripts/setup.sh > /dev/null  # the packages and a configured project
+install_missing clang-14 libclang-rt-14-dev
+if [[ ! -f build-sanitize/build.ninja ]]; then
+  CC=clang-14 CXX=clang++-14 cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHSB_SANITIZE=ON
+fi
+cmake --build build-sanitize -j "${JOBS:-2}" --target field_tests renderer_tests golden_tests scene_fuzzer data_fuzzer
+# The unit, golden and fuzz tests; the command-line and smoke tests run in
+# the main build. Leaks in the libraries' one-time globals are not ours.
+export ASAN_OPTIONS=detect_leaks=0:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1
+ctest --test-dir build-sanitize --output-on-failure -j "${JOBS:-2}" -E '^(cli|scenes)\.'

@@ -1,0 +1,35 @@
+// libFuzzer target: bytes as a tensor data file, legacy (.vtk) when the
+// first byte is even, else XML (.vtu). Any input must load or give one
+// DataError (or ResourceError): never a crash, a hang, an uncaught
+// exception or undefined behaviour.
+
+#include <unistd.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <fstream>
+#include <string>
+
+#include "field/data_error.h"
+#include "field/memory_budget.h"
+#include "field/vtk_data.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size == 0) return 0;
+  const bool legacy = data[0] % 2 == 0;
+  const std::string path =
+      "/tmp/hsb_data_fuzzer_" + std::to_string(getpid()) + (legacy ? ".vtk" : ".vtu");
+  {
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(data + 1), std::streamsize(size - 1));
+  }
+  hsb::VtkFileSpec spec;
+  spec.path = path;
+  try {
+    hsb::load_vtk_data(spec);
+  } catch (const hsb::DataError&) {
+  } catch (const hsb::ResourceError&) {
+  }
+  unlink(path.c_str());
+  return 0;
+}
