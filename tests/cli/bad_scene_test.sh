@@ -54,4 +54,10 @@ grep -q 'no array named "nope"; the file has point data: stress' "$work/err" || 
 "$hsb" export "$src/scenes/fig10_cylinder_ellipsoids.toml" -o "$work/export" > "$work/log" 2>&1 || fail "export: $(cat "$work/log")"
 [[ -s "$work/export/fig10_cylinder_ellipsoids_sources.vtp" && -s "$work/export/fig10_cylinder_ellipsoids_trajectories.vtp" ]] \
   || fail "export wrote: $(ls "$work/export")"
+# An empty scene file is the default scene: export works and leaves no
+# temporary file (it once crashed in VTK and left a .partial behind).
+: > "$work/empty.toml"
+"$hsb" export "$work/empty.toml" -o "$work/empty" > "$work/log" 2>&1 || fail "export of an empty scene: $(cat "$work/log")"
+[[ -z $(ls -A "$work/empty" | grep partial) ]] || fail "export left: $(ls -A "$work/empty")"
+[[ -s "$work/empty/empty_sources.vtp" ]] || fail "export of an empty scene wrote: $(ls -A "$work/empty")"
 echo "PASS"

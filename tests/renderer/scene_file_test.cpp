@@ -284,6 +284,39 @@ TEST_F(SceneFile, CrossKeyChecksAreLocated) {
   EXPECT_EQ(e, path_ + ":4:10: data.bounds must be [xmin, xmax, ymin, ymax, zmin, zmax] with min < max");
 }
 
+// Every kind of bad scene a user can write gets one located error saying
+// what was expected and what was found.
+TEST_F(SceneFile, EveryBadValueIsOneLocatedError) {
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"[seeds\npoints = 1\n", ":1:7: Error while parsing table header: expected ']'"},
+      {"[glyphs]\nspacingg = 0.1\n", ":2:1: unknown key glyphs.spacingg (known here:"},
+      {"[render]\nwidth = \"big\"\n", ":2:9: render.width must be an integer, got string \"big\""},
+      {"[glyphs]\nspacing = -0.1\n", ":2:11: glyphs.spacing must be > 0, got -0.1"},
+      {"[glyphs]\nscale = 0\n", ":2:9: glyphs.scale must be > 0, got 0"},
+      {"[glyphs]\nscale = -2\n", ":2:9: glyphs.scale must be > 0, got -2"},
+      {"[render]\nsamples = 0\n", ":2:11: render.samples must be in [1, 16], got 0"},
+      {"[render]\nwidth = 1000000\n", ":2:9: render.width must be in [1, 16384], got 1000000"},
+      {"[surface]\nisovalue = 1.5\n", ":2:12: surface.isovalue must be in (0, 1], got 1.5"},
+      {"[surface]\nisovalue = 0\n", ":2:12: surface.isovalue must be in (0, 1], got 0"},
+      {"[glyphs]\nspacing = nan\n", ":2:11: glyphs.spacing must be a finite number, got nan"},
+      {"[camera]\nfov = inf\n", ":2:7: camera.fov must be a finite number, got inf"},
+      {"[light]\nfrom = [0, 0, 0]\n", ":2:8: light.from must not be zero"},
+      {"[camera]\nposition = [1, 1, 1]\nlook_at = [1, 1, 1]\n", ":2:12: camera.position must differ from camera.look_at"},
+      {"[camera]\nposition = [0, 0, 5]\nlook_at = [0, 0, 0]\nup = [0, 0, 1]\n",
+       ":4:6: camera.up must not be parallel to the viewing direction"},
+      {"[data]\nfile = \"nope.vtu\"\n", ":2:8: data.file names no file:"},
+      {"[output]\nfile = \"x.bmp\"\n", ":2:8: output.file must end in .png, .tif, .tiff, .exr, .pdf or .svg"},
+      {"[output]\nfile = \"x.exr\"\nbit_depth = 8\n", ":3:13: output.bit_depth must be 16 (half) or 32 (float) for an EXR"},
+      {"[color]\nmap = \"jet\"\n", ":2:7: color.map must be one of"},
+      {"[glyphs]\nmapping = 3\n", ":2:11: glyphs.mapping must be"},
+  };
+  for (const auto& [text, expected] : cases) {
+    const std::string e = error_of(text);
+    EXPECT_EQ(e.rfind(path_ + expected, 0), 0u) << "scene:\n" << text << "gave: " << e;
+    EXPECT_EQ(e.find('\n'), std::string::npos) << "one line: " << e;
+  }
+}
+
 TEST(SceneFiles, EveryShippedSceneLoads) {
   int count = 0;
   for (const auto& entry : std::filesystem::directory_iterator(std::string(HSB_SOURCE_DIR) + "/scenes")) {
