@@ -8,6 +8,7 @@ namespace hsb {
 
 std::string describe_data(const DataSpec& spec) {
   if (spec.kind == DataKind::vtk_file) return describe_vtk_file(spec.file);
+  if (spec.kind == DataKind::none) return "no data set: the scene gives its sources (a curve or a list)\n";
   const PointLoadField field(spec.point_load);
   const Box3 b = field.bounds();
   std::ostringstream out;

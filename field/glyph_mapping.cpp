@@ -52,6 +52,11 @@ double color_scalar(const Vec3& eigenvalues, ColorScalar which) {
       // Invariant under rotation, so principal stresses suffice.
       return std::sqrt(0.5 * ((l1 - l2) * (l1 - l2) + (l2 - l3) * (l2 - l3) +
                               (l3 - l1) * (l3 - l1)));
+    case ColorScalar::speed:
+      return l1;
+    case ColorScalar::array:
+    case ColorScalar::arc_length:
+      return 0.0;
   }
   return l3;  // unreachable for valid enum values
 }

@@ -25,12 +25,16 @@ struct GlyphMapping {
   double ceiling = std::numeric_limits<double>::infinity();
 };
 
-// The scalar that colours a glyph.
-enum class ColorScalar { lambda1, lambda2, lambda3, mean, von_mises };
+// The scalar that colours a glyph: of a tensor's eigenvalues; a flow's
+// speed; a scalar array of the data file, sampled at the glyph's centre;
+// the position along a curve (0 at its start, 1 at its end).
+enum class ColorScalar { lambda1, lambda2, lambda3, mean, von_mises, speed, array, arc_length };
 
 // Radii r_1, r_2, r_3 for eigenvalues λ1 ≥ λ2 ≥ λ3.
 Vec3 map_radii(const Vec3& eigenvalues, const GlyphMapping& mapping);
 
+// The scalars that follow from the eigenvalues (a flow source's are its
+// speed three times); 0 for array and arc_length, which the caller sets.
 double color_scalar(const Vec3& eigenvalues, ColorScalar which);
 
 }  // namespace hsb

@@ -6,6 +6,8 @@
 #include <tbb/parallel_for.h>
 
 #include "field/automatic_values.h"
+#include "field/source_list.h"
+#include "field/data_error.h"
 #include "field/memory_budget.h"
 #include "field/seeding.h"
 #include "field/uniform_grid.h"
@@ -17,13 +19,17 @@ LoadedField make_field(const DataSpec& spec) {
   if (spec.kind == DataKind::vtk_file) {
     VtkData data = load_vtk_data(spec.file);
     loaded.field = std::move(data.field);
+    loaded.vectors = std::move(data.vectors);
+    loaded.color = std::move(data.color);
     loaded.boundary = std::move(data.boundary);
     loaded.warnings = std::move(data.warnings);
+    if (const auto* mesh = dynamic_cast<const MeshVectorField*>(loaded.vectors.get()))
+      for (const Vec3& v : mesh->values()) loaded.max_speed = std::max(loaded.max_speed, v.norm());
   } else {
     loaded.field = std::make_unique<PointLoadField>(spec.point_load);
   }
   const auto& dims = spec.sample_grid;
-  if (std::all_of(dims.begin(), dims.end(), [](int d) { return d >= 2; }))
+  if (loaded.field && std::all_of(dims.begin(), dims.end(), [](int d) { return d >= 2; }))
     loaded.field = std::make_unique<UniformGridField>(UniformGridField::sampled_from(*loaded.field, dims));
   return loaded;
 }
@@ -76,8 +82,9 @@ std::vector<Vec3> all_seeds(const SeedSpec& spec, const Box3& bounds) {
   return seeds;
 }
 
-// The field-side values that depend on the data set's size only.
-GlyphValues resolve_lengths(const GlyphPipelineSpec& spec, const Box3& domain) {
+// The field-side values that depend on the data set's size only (and, for
+// a flow, its largest speed).
+GlyphValues resolve_lengths(const GlyphPipelineSpec& spec, const Box3& domain, const LoadedField& loaded) {
   GlyphValues v;
   v.seeds = spec.seeds.automatic() ? automatic_seeds(domain) : spec.seeds;
   TrajectoryOptions& t = v.trajectory;
@@ -85,8 +92,10 @@ GlyphValues resolve_lengths(const GlyphPipelineSpec& spec, const Box3& domain) {
   t.step = spec.trajectory.step.value_or(automatic_step(domain));
   t.max_length = spec.trajectory.max_length.value_or(automatic_max_length(domain));
   t.degeneracy_tolerance = spec.trajectory.degeneracy_tolerance;
-  t.min_magnitude = spec.trajectory.min_magnitude;
+  t.min_magnitude = spec.trajectory.min_magnitude.value_or(loaded.vectors ? 1e-3 * loaded.max_speed : 0.0);
   t.max_steps = spec.trajectory.max_steps;
+  t.direction = spec.trajectory.direction;
+  t.signed_directions = loaded.vectors != nullptr;
   v.spacing = spec.spacing.value_or(automatic_spacing(domain, spec.size.mapping));
   return v;
 }
@@ -98,6 +107,7 @@ const char* stop_name(StopReason r) {
     case StopReason::degenerate: return "a degenerate point (repeated eigenvalues)";
     case StopReason::low_magnitude: return "trajectories.min_magnitude";
     case StopReason::max_steps: return "trajectories.max_steps";
+    case StopReason::closed: return "its own start (a closed curve)";
   }
   return "?";
 }
@@ -115,7 +125,7 @@ void warn_about_the_result(GlyphScene& scene, std::size_t seeds) {
                                     [&](const Trajectory& t) { return t.length() > step; });
   if (any_long) return;
   // Say where they stopped: the most common reason is the one to act on.
-  std::array<int, 5> reasons{};
+  std::array<int, 6> reasons{};
   for (const Trajectory& t : scene.trajectories) {
     ++reasons[std::size_t(t.backward_stop)];
     ++reasons[std::size_t(t.forward_stop)];
@@ -129,33 +139,124 @@ void warn_about_the_result(GlyphScene& scene, std::size_t seeds) {
 
 }  // namespace
 
+namespace {
+
+const char* color_name(ColorScalar c) {
+  switch (c) {
+    case ColorScalar::lambda1: return "lambda1";
+    case ColorScalar::lambda2: return "lambda2";
+    case ColorScalar::lambda3: return "lambda3";
+    case ColorScalar::mean: return "mean";
+    case ColorScalar::von_mises: return "von_mises";
+    case ColorScalar::speed: return "speed";
+    case ColorScalar::array: return "array";
+    case ColorScalar::arc_length: return "arc_length";
+  }
+  return "?";
+}
+
+// The colour scalar, resolved: λ3 for tensors and the speed for a flow by
+// default; one that the data cannot give is an error.
+ColorScalar resolve_color(const GlyphPipelineSpec& spec, const LoadedField& loaded) {
+  const bool flow = loaded.vectors != nullptr;
+  const ColorScalar c = spec.color.value_or(flow ? ColorScalar::speed : ColorScalar::lambda3);
+  const std::string& file = spec.data.file.path;
+  const bool eigen = c == ColorScalar::lambda1 || c == ColorScalar::lambda2 || c == ColorScalar::lambda3 ||
+                     c == ColorScalar::mean || c == ColorScalar::von_mises;
+  if (flow && eigen)
+    throw DataError(file + ": glyphs.color_by = \"" + color_name(c) +
+                    "\" needs tensors, and this file is read as a flow (vectors): colour by \"speed\" or "
+                    "\"array:NAME\"");
+  if (!flow && c == ColorScalar::speed)
+    throw DataError((file.empty() ? std::string("the point load") : file) +
+                    ": glyphs.color_by = \"speed\" needs a flow (vectors); this data holds tensors");
+  if (c == ColorScalar::array && !loaded.color)
+    throw DataError("glyphs.color_by = \"array:NAME\" needs a data file that holds that array");
+  if (c == ColorScalar::arc_length)
+    throw DataError("glyphs.color_by = \"arc_length\" is for sources along a curve (glyphs.placement = \"curve\")");
+  return c;
+}
+
+// Sources the scene itself gives (a curve, a list): no data set, sizes as
+// given, the domain what they cover.
+GlyphScene given_sources(const GlyphPipelineSpec& spec, double glyph_extent) {
+  GlyphScene scene;
+  if (spec.placement == SourcePlacement::curve) {
+    scene.sources = curve_sources(spec.curve, glyph_extent);
+    scene.trajectories.push_back(curve_points(spec.curve));
+    scene.color = ColorScalar::arc_length;
+  } else {
+    scene.sources = read_source_list(spec.list_file, glyph_extent);
+    scene.color = ColorScalar::array;
+  }
+  if (spec.color && *spec.color != scene.color)
+    throw DataError(std::string("glyphs.color_by cannot be set with glyphs.placement = \"") +
+                    (spec.placement == SourcePlacement::curve ? "curve\": sources are coloured along it"
+                                                              : "list\": sources take the list's scalar column"));
+  Box3 box{Vec3::Constant(INFINITY), Vec3::Constant(-INFINITY)};
+  for (const GlyphSource& s : scene.sources) {
+    const Vec3 reach = Vec3::Constant(s.eigenvalues.maxCoeff());
+    box = {box.lo.cwiseMin(s.centre - reach), box.hi.cwiseMax(s.centre + reach)};
+  }
+  if (scene.sources.empty()) box = {Vec3::Zero(), Vec3::Zero()};
+  scene.domain = box;
+  scene.values.mapping.mapping = RadiusMapping::constant;
+  scene.values.mapping.floor = 0.0;
+  return scene;
+}
+
+}  // namespace
+
 GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent) {
+  if (spec.placement == SourcePlacement::curve || spec.placement == SourcePlacement::list)
+    return given_sources(spec, glyph_extent);
   DataSpec data = spec.data;
   if (data.kind == DataKind::point_load && !data.point_load.singular_radius)
     data.point_load.singular_radius = default_singular_radius(data.point_load.bounds);
   LoadedField loaded = make_field(data);
-  const TensorField* field = loaded.field.get();
+  const TensorField* tensors = loaded.field.get();
+  const VectorField* flow = loaded.vectors.get();
   GlyphScene scene;
-  scene.domain = field->bounds();
+  scene.flow = flow != nullptr;
+  scene.color = resolve_color(spec, loaded);
+  scene.domain = flow ? flow->bounds() : tensors->bounds();
   scene.boundary = std::move(loaded.boundary);
   scene.warnings = std::move(loaded.warnings);
-  scene.values = resolve_lengths(spec, scene.domain);
+  scene.values = resolve_lengths(spec, scene.domain, loaded);
   if (data.kind == DataKind::point_load) scene.values.singular_radius = data.point_load.singular_radius;
   const GlyphValues& values = scene.values;
   check_seed_and_trajectory_memory(values, spec.placement);
   const std::vector<Vec3> seeds = all_seeds(values.seeds, scene.domain);
 
-  if (spec.placement == SourcePlacement::at_seeds) {
-    for (const Vec3& seed : seeds) {
-      if (const std::optional<Sym3> s = field->sample(seed))
-        scene.sources.push_back(make_source(seed, *s, spec.color));
+  // The source at a point: a tensor glyph or a streamball, coloured by the
+  // chosen scalar or by the colour array there.
+  const ColorScalar color = scene.color;
+  const ScalarField* color_array = color == ColorScalar::array ? loaded.color.get() : nullptr;
+  const SourceMaker make = [&](const Vec3& p) -> std::optional<GlyphSource> {
+    std::optional<GlyphSource> source;
+    if (flow) {
+      if (const std::optional<Vec3> v = flow->sample(p)) source = make_flow_source(p, *v, color);
+    } else if (const std::optional<Sym3> s = tensors->sample(p)) {
+      source = make_source(p, *s, color);
     }
+    if (source && color_array) {
+      const std::optional<double> value = color_array->sample(p);
+      if (!value) return std::nullopt;
+      source->scalar = *value;
+    }
+    return source;
+  };
+
+  if (spec.placement == SourcePlacement::at_seeds) {
+    for (const Vec3& seed : seeds)
+      if (std::optional<GlyphSource> s = make(seed)) scene.sources.push_back(std::move(*s));
   } else {
     // Each seed writes only its own slots, and the slots are concatenated in
     // seed order afterwards, so the result is independent of scheduling.
     scene.trajectories.resize(seeds.size());
     tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t i) {
-      scene.trajectories[i] = trace_trajectory(*field, seeds[i], values.trajectory);
+      scene.trajectories[i] = flow ? trace_streamline(*flow, seeds[i], values.trajectory)
+                                   : trace_trajectory(*tensors, seeds[i], values.trajectory);
     });
     double sources = 0.0;
     for (const Trajectory& t : scene.trajectories) sources += double(source_count(t, values.spacing));
@@ -165,18 +266,19 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent)
     check_memory(sources * kBytesPerSource, what.str(), "raise glyphs.spacing");
     std::vector<std::vector<GlyphSource>> per_seed(seeds.size());
     tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t i) {
-      per_seed[i] = place_sources(*field, scene.trajectories[i], values.spacing, spec.color);
+      per_seed[i] = place_sources(scene.trajectories[i], values.spacing, make);
     });
     for (const std::vector<GlyphSource>& sources : per_seed)
       scene.sources.insert(scene.sources.end(), sources.begin(), sources.end());
   }
 
-  // The glyph size comes from the tensors the glyphs will show.
+  // The glyph size comes from the tensors (or speeds) the glyphs will show.
   std::vector<Vec3> eigenvalues;
   eigenvalues.reserve(scene.sources.size());
   for (const GlyphSource& s : scene.sources) eigenvalues.push_back(s.eigenvalues);
   scene.values.mapping = automatic_glyph_mapping(spec.size, eigenvalues, scene.domain, glyph_extent);
   size_sources(scene.sources, scene.values.mapping);
+  if (flow && spec.stretch != 1.0) stretch_sources(scene.sources, spec.stretch);
   warn_about_the_result(scene, seeds.size());
   return scene;
 }

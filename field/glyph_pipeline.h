@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "field/curve_sources.h"
 #include "field/glyph_sources.h"
 #include "field/point_load.h"
 #include "field/trajectory.h"
@@ -23,7 +24,8 @@
 
 namespace hsb {
 
-enum class DataKind { point_load, vtk_file };
+// none: the sources come from the scene (a curve, a list), no data is read.
+enum class DataKind { point_load, vtk_file, none };
 
 struct DataSpec {
   DataKind kind = DataKind::point_load;
@@ -63,8 +65,11 @@ struct TrajectorySpec {
   EigenFamily family = EigenFamily::major;
   std::optional<double> step, max_length;
   double degeneracy_tolerance = 1e-3;
-  double min_magnitude = 0.0;
+  // Automatic: 0 for tensors; for a flow, a thousandth of its largest
+  // speed (stagnation: the direction means nothing there).
+  std::optional<double> min_magnitude;
   int max_steps = 100000;
+  TraceDirection direction = TraceDirection::both;
 };
 
 // How eigenvalues become radii; scale, floor and ceiling left out are
@@ -77,8 +82,10 @@ struct GlyphSizeSpec {
 };
 
 enum class SourcePlacement {
-  along_trajectories,  // hyperstreamballs: sources spaced along tensor lines
+  along_trajectories,  // hyperstreamballs: sources spaced along tensor lines (streamballs: streamlines)
   at_seeds,            // one glyph per seed point: classic ellipsoid glyphs
+  curve,               // along a curve the scene gives, one fixed shape (no data)
+  list,                // as listed in a CSV file (no data)
 };
 
 struct GlyphPipelineSpec {
@@ -88,7 +95,12 @@ struct GlyphPipelineSpec {
   SourcePlacement placement = SourcePlacement::along_trajectories;
   std::optional<double> spacing;  // arc length between sources
   GlyphSizeSpec size;
-  ColorScalar color = ColorScalar::lambda3;
+  // Automatic: λ3 (the paper's figures) for tensors, the speed for a flow.
+  // ColorScalar::array colours by data.file.color_array.
+  std::optional<ColorScalar> color;
+  double stretch = 1.0;  // streamballs: the first radius (along the flow) times this
+  CurveSpec curve;        // placement curve
+  std::string list_file;  // placement list: the CSV file (source_list.h)
 };
 
 // Every field-side value the pipeline used, automatic ones resolved.
@@ -102,6 +114,8 @@ struct GlyphValues {
 
 struct GlyphScene {
   Box3 domain;
+  bool flow = false;  // made from a vector field (streamballs), not tensors
+  ColorScalar color = ColorScalar::lambda3;  // what `scalar` holds, resolved
   std::vector<Trajectory> trajectories;
   std::vector<GlyphSource> sources;
   std::optional<TriangleMesh> boundary;  // a mesh's outer surface (none for analytic data)
@@ -110,7 +124,10 @@ struct GlyphScene {
 };
 
 struct LoadedField {
-  std::unique_ptr<TensorField> field;
+  std::unique_ptr<TensorField> field;    // tensor data; or
+  std::unique_ptr<VectorField> vectors;  // a flow
+  std::unique_ptr<ScalarField> color;    // data.file.color_array, when named
+  double max_speed = 0.0;                // of the flow's values
   std::optional<TriangleMesh> boundary;
   std::vector<std::string> warnings;
 };

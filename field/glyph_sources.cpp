@@ -38,6 +38,34 @@ std::size_t source_count(const Trajectory& trajectory, double spacing) {
 
 std::vector<GlyphSource> place_sources(const TensorField& field, const Trajectory& trajectory,
                                        double spacing, ColorScalar color) {
+  return place_sources(trajectory, spacing, [&](const Vec3& p) -> std::optional<GlyphSource> {
+    const std::optional<Sym3> s = field.sample(p);
+    if (!s) return std::nullopt;
+    return make_source(p, *s, color);
+  });
+}
+
+GlyphSource make_flow_source(const Vec3& centre, const Vec3& velocity, ColorScalar color) {
+  GlyphSource source;
+  source.centre = centre;
+  const double speed = velocity.norm();
+  // A right-handed frame whose first axis is the flow's direction.
+  const Vec3 along = speed > 0.0 ? Vec3(velocity / speed) : Vec3::UnitX();
+  const Vec3 helper = std::fabs(along.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+  const Vec3 second = along.cross(helper).normalized();
+  source.axes.col(0) = along;
+  source.axes.col(1) = second;
+  source.axes.col(2) = along.cross(second);
+  source.eigenvalues = Vec3::Constant(speed);
+  source.scalar = color_scalar(source.eigenvalues, color);
+  return source;
+}
+
+void stretch_sources(std::vector<GlyphSource>& sources, double factor) {
+  for (GlyphSource& s : sources) s.radii.x() *= factor;
+}
+
+std::vector<GlyphSource> place_sources(const Trajectory& trajectory, double spacing, const SourceMaker& make) {
   if (!(spacing > 0.0) || !std::isfinite(spacing))
     throw std::invalid_argument("glyph sources: spacing must be finite and > 0");
   std::vector<GlyphSource> sources;
@@ -67,8 +95,7 @@ std::vector<GlyphSource> place_sources(const TensorField& field, const Trajector
       segment_start += seg_len;
       ++segment;
     }
-    const std::optional<Sym3> s = field.sample(p);
-    if (s) sources.push_back(make_source(p, *s, color));
+    if (std::optional<GlyphSource> s = make(p)) sources.push_back(std::move(*s));
   }
   return sources;
 }

@@ -1,6 +1,8 @@
 #pragma once
 // Metaball sources placed along trajectories: the field library's output.
 
+#include <functional>
+#include <optional>
 #include <vector>
 
 #include "field/glyph_mapping.h"
@@ -24,11 +26,17 @@ struct GlyphSource {
 // (some may then be skipped where the field cannot be sampled).
 std::size_t source_count(const Trajectory& trajectory, double spacing);
 
+// The source a field makes at a point, radii not yet set; nothing where
+// the field cannot be sampled.
+using SourceMaker = std::function<std::optional<GlyphSource>(const Vec3&)>;
+
 // Sources at arc-length `spacing` along `trajectory` (the paper's sample
-// ratio), the run of them centred on the curve's length. Each takes the
-// tensor sampled at its centre; points where the field cannot be sampled
-// are skipped. Radii are left for size_sources(), once the mapping is
-// known: its automatic scale depends on all the sources' eigenvalues.
+// ratio), the run of them centred on the curve's length, each made by
+// `make` at its centre; points where it makes none are skipped. Radii are
+// left for size_sources(), once the mapping is known: its automatic scale
+// depends on all the sources' eigenvalues.
+std::vector<GlyphSource> place_sources(const Trajectory& trajectory, double spacing, const SourceMaker& make);
+// The same with the tensor sampled at each centre.
 std::vector<GlyphSource> place_sources(const TensorField& field, const Trajectory& trajectory,
                                        double spacing, ColorScalar color);
 
@@ -37,6 +45,15 @@ GlyphSource make_source(const Vec3& centre, const Sym3& tensor, ColorScalar colo
 // The same with radii (discrete glyphs, tests).
 GlyphSource make_source(const Vec3& centre, const Sym3& tensor, const GlyphMapping& mapping,
                         ColorScalar color);
+
+// A streamball: a flow source at `centre` for velocity `velocity`, its
+// first axis along the flow, its three "eigenvalues" the speed (a sphere
+// under every mapping; stretch_sources() may elongate it).
+GlyphSource make_flow_source(const Vec3& centre, const Vec3& velocity, ColorScalar color);
+
+// Lengthens every source's first radius by `factor` (flow sources: along
+// the flow), after sizing.
+void stretch_sources(std::vector<GlyphSource>& sources, double factor);
 
 // Sets every source's radii from its eigenvalues.
 void size_sources(std::vector<GlyphSource>& sources, const GlyphMapping& mapping);

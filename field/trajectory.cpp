@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "field/eigensystem.h"
+#include "field/vector_field.h"
 
 namespace hsb {
 
@@ -48,6 +49,20 @@ DirectionSample eigen_direction(const TensorField& field, const Vec3& x,
   return result;
 }
 
+DirectionSample flow_direction(const VectorField& field, const Vec3& x, const TrajectoryOptions& options) {
+  DirectionSample result;
+  const std::optional<Vec3> v = field.sample(x);
+  if (!v) return result;  // stop: boundary
+  const double speed = v->norm();
+  if (!(speed > 0.0) || speed < options.min_magnitude) {
+    result.stop = StopReason::low_magnitude;
+    return result;
+  }
+  result.ok = true;
+  result.direction = *v / speed;
+  return result;
+}
+
 namespace {
 
 // Halving the step this many times puts the last point within about
@@ -59,15 +74,20 @@ struct HalfTrajectory {
   StopReason stop = StopReason::max_length;
 };
 
-// An eigenvector sample made to point along `travel`: eigenvectors have no
-// sign, so this is what keeps the curve from turning back on itself.
-Vec3 oriented(const Vec3& v, const Vec3& travel) { return v.dot(travel) < 0.0 ? Vec3(-v) : v; }
-
 // Integrates one direction from the seed. `first` is the (ok) sample at the
-// seed, `travel` the initial direction (± the seed's eigenvector).
+// seed, `sign` +1 forward or −1 backward.
 HalfTrajectory trace_half(const DirectionSampler& sampler, const Vec3& seed,
-                          const DirectionSample& first, Vec3 travel,
+                          const DirectionSample& first, double sign,
                           const TrajectoryOptions& options) {
+  Vec3 travel = sign * first.direction;
+  // A sample along the curve: an eigenvector turned to agree with the
+  // direction of travel (it has no sign, and this is what keeps the curve
+  // from turning back on itself); a flow's vector taken as it is, reversed
+  // going backwards.
+  const auto oriented = [&](const Vec3& v) -> Vec3 {
+    if (options.signed_directions) return sign * v;
+    return v.dot(travel) < 0.0 ? Vec3(-v) : v;
+  };
   HalfTrajectory half;
   const double min_step = options.step * std::ldexp(1.0, -kMaxHalvings);
   Vec3 x = seed;
@@ -92,7 +112,7 @@ HalfTrajectory trace_half(const DirectionSampler& sampler, const Vec3& seed,
 
     // RK4. The end point is sampled too: it is the next step's k1, and
     // sampling it here means every accepted point lies inside the domain.
-    const Vec3 k1 = oriented(at_x.direction, travel);
+    const Vec3 k1 = oriented(at_x.direction);
     DirectionSample failed;
     Vec3 ks[3];
     const double offsets[3] = {0.5 * step, 0.5 * step, step};
@@ -105,7 +125,7 @@ HalfTrajectory trace_half(const DirectionSampler& sampler, const Vec3& seed,
         ok = false;
         break;
       }
-      ks[stage] = oriented(d.direction, travel);
+      ks[stage] = oriented(d.direction);
       previous = ks[stage];
     }
     Vec3 x_new = x;
@@ -150,6 +170,15 @@ HalfTrajectory trace_half(const DirectionSampler& sampler, const Vec3& seed,
       half.stop = at_new.stop;
       return half;
     }
+    // A streamline back at its seed after going round: closed. (Only for
+    // flows: a tensor line that comes back is rare, and flipping makes
+    // "back" ambiguous.) Within half a step, and only once it has been
+    // several steps away, so the first steps never count.
+    if (options.signed_directions && travelled > 4.0 * options.step &&
+        (x - seed).norm() < 0.5 * options.step) {
+      half.stop = StopReason::closed;
+      return half;
+    }
     at_x = at_new;
     // Recover the full step after a boundary-induced halving, so grazing
     // the boundary does not leave the rest of the curve crawling.
@@ -174,15 +203,19 @@ Trajectory trace_directions(const DirectionSampler& sampler, const Vec3& seed,
     return result;
   }
 
-  const HalfTrajectory forward = trace_half(sampler, seed, first, first.direction, options);
-  const HalfTrajectory backward = trace_half(sampler, seed, first, -first.direction, options);
+  const bool forwards = options.direction != TraceDirection::backward;
+  const HalfTrajectory forward = forwards ? trace_half(sampler, seed, first, 1.0, options) : HalfTrajectory{};
+  // A closed curve is complete: going backwards would go round again.
+  const bool backwards = options.direction != TraceDirection::forward && forward.stop != StopReason::closed;
+  const HalfTrajectory backward = backwards ? trace_half(sampler, seed, first, -1.0, options) : HalfTrajectory{};
 
   result.points.assign(backward.points.rbegin(), backward.points.rend());
   result.seed_index = result.points.size();
   result.points.push_back(seed);
   result.points.insert(result.points.end(), forward.points.begin(), forward.points.end());
-  result.backward_stop = backward.stop;
-  result.forward_stop = forward.stop;
+  result.backward_stop = backwards ? backward.stop : forward.stop == StopReason::closed ? StopReason::closed
+                                                                                       : StopReason::max_length;
+  result.forward_stop = forwards ? forward.stop : StopReason::max_length;
   return result;
 }
 
@@ -190,6 +223,13 @@ Trajectory trace_trajectory(const TensorField& field, const Vec3& seed,
                             const TrajectoryOptions& options) {
   return trace_directions(
       [&](const Vec3& x) { return eigen_direction(field, x, options); }, seed, options);
+}
+
+Trajectory trace_streamline(const VectorField& field, const Vec3& seed, const TrajectoryOptions& options) {
+  TrajectoryOptions signed_options = options;
+  signed_options.signed_directions = true;
+  return trace_directions([&](const Vec3& x) { return flow_direction(field, x, signed_options); }, seed,
+                          signed_options);
 }
 
 }  // namespace hsb

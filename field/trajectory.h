@@ -1,6 +1,10 @@
 #pragma once
-// Stress trajectories (tensor lines): curves tangent to one eigenvector
-// family, dx/ds = e_k(x).
+// Stress trajectories (tensor lines), curves tangent to one eigenvector
+// family, dx/ds = e_k(x); and streamlines of a vector field, dx/ds = v/|v|.
+// One integrator serves both (design §10): eigenvectors have no sign, so
+// each sample is flipped to agree with the direction of travel; a flow's
+// vectors are signed and never flipped, so a streamline never turns back
+// at a sink.
 
 #include <functional>
 #include <vector>
@@ -12,7 +16,10 @@ namespace hsb {
 enum class EigenFamily { major = 0, medium = 1, minor = 2 };
 
 // Why one end of a trajectory stopped.
-enum class StopReason { boundary, max_length, degenerate, low_magnitude, max_steps };
+enum class StopReason { boundary, max_length, degenerate, low_magnitude, max_steps, closed };
+
+// Which way from the seed a curve is traced.
+enum class TraceDirection { both, forward, backward };
 
 struct TrajectoryOptions {
   EigenFamily family = EigenFamily::major;
@@ -24,6 +31,9 @@ struct TrajectoryOptions {
   // Stop where the tensor's Frobenius norm falls below this (0: never).
   double min_magnitude = 0.0;
   int max_steps = 100000;  // per direction; a guard, not a control
+  TraceDirection direction = TraceDirection::both;
+  // Eigenvectors are sign-free; a flow's vectors are not (streamlines).
+  bool signed_directions = false;
 };
 
 struct Trajectory {
@@ -50,8 +60,16 @@ using DirectionSampler = std::function<DirectionSample(const Vec3&)>;
 DirectionSample eigen_direction(const TensorField& field, const Vec3& x,
                                 const TrajectoryOptions& options);
 
+// The direction of the vector field at `x` (unit): stops at the domain
+// boundary and where the speed falls below options.min_magnitude or to
+// zero (stagnation).
+class VectorField;
+DirectionSample flow_direction(const VectorField& field, const Vec3& x, const TrajectoryOptions& options);
+
 // The integrator itself, over any direction sampler (tests feed it
-// directions with deliberately random signs).
+// directions with deliberately random signs). With signed directions a
+// curve that comes back to its seed (a closed streamline of a steady
+// flow) stops there, closed, instead of running round again.
 Trajectory trace_directions(const DirectionSampler& sampler, const Vec3& seed,
                             const TrajectoryOptions& options);
 
@@ -62,5 +80,7 @@ Trajectory trace_directions(const DirectionSampler& sampler, const Vec3& seed,
 // A seed outside the domain or at a stopping point gives a single point.
 Trajectory trace_trajectory(const TensorField& field, const Vec3& seed,
                             const TrajectoryOptions& options);
+// The same for a vector field: a streamline (signed directions).
+Trajectory trace_streamline(const VectorField& field, const Vec3& seed, const TrajectoryOptions& options);
 
 }  // namespace hsb

@@ -35,6 +35,8 @@
 #include "field/eigenvalue_range.h"
 #include "field/file_extension.h"
 #include "field/mesh_field.h"
+#include "field/mesh_locator.h"
+#include "field/vector_field.h"
 #include "field/uniform_grid.h"
 #include "field/vtk_session.h"
 
@@ -242,48 +244,110 @@ struct ChosenArray {
   vtkDataArray* array = nullptr;
   bool on_points = true;
   std::string name;
+  int components = 0;
 };
 
-// The one array of 6 or 9 components among `attributes`' arrays; null
+// The one array of `allowed` components among `attributes`' arrays; null
 // when there is none or more than one.
-vtkDataArray* only_tensor_like_array(vtkDataSetAttributes* attributes) {
+vtkDataArray* only_array_of(vtkDataSetAttributes* attributes, std::initializer_list<int> allowed) {
   vtkDataArray* found = nullptr;
   for (int i = 0; i < attributes->GetNumberOfArrays(); ++i) {
     vtkDataArray* a = attributes->GetArray(i);
-    if (!a || (a->GetNumberOfComponents() != 6 && a->GetNumberOfComponents() != 9)) continue;
+    if (!a || std::find(allowed.begin(), allowed.end(), a->GetNumberOfComponents()) == allowed.end()) continue;
     if (found) return nullptr;
     found = a;
   }
   return found;
 }
 
-// The named array; without a name, the active tensors, else the only
-// array of 6 or 9 components.
-ChosenArray choose_tensor_array(vtkDataSet* data, const VtkFileSpec& spec) {
-  auto pick = [&](vtkDataSetAttributes* attributes) -> vtkDataArray* {
-    if (!spec.array.empty()) return attributes->GetArray(spec.array.c_str());
-    return attributes->GetTensors() ? attributes->GetTensors() : only_tensor_like_array(attributes);
-  };
+// `name` among the point data, then the cell data (as `association` allows).
+ChosenArray named_array(vtkDataSet* data, const std::string& name, TensorAssociation association) {
   ChosenArray chosen;
-  if (spec.association != TensorAssociation::cell) chosen.array = pick(data->GetPointData());
-  if (!chosen.array && spec.association != TensorAssociation::point) {
-    chosen.array = pick(data->GetCellData());
+  if (association != TensorAssociation::cell) chosen.array = data->GetPointData()->GetArray(name.c_str());
+  if (!chosen.array && association != TensorAssociation::point) {
+    chosen.array = data->GetCellData()->GetArray(name.c_str());
     chosen.on_points = false;
   }
-  const char* where = spec.association == TensorAssociation::point  ? " in its point data"
-                      : spec.association == TensorAssociation::cell ? " in its cell data"
-                                                                     : "";
-  if (!chosen.array) {
-    const std::string what = spec.array.empty() ? "no active tensors and no single array of 6 or 9 components"
-                                                : "no array named \"" + spec.array + "\"";
-    throw DataError(spec.path + ": " + what + where + "; the file has " + list_arrays(data));
+  if (chosen.array) {
+    chosen.name = name;
+    chosen.components = chosen.array->GetNumberOfComponents();
   }
-  chosen.name = chosen.array->GetName() ? chosen.array->GetName() : "(unnamed)";
-  const int components = chosen.array->GetNumberOfComponents();
-  if (components != 6 && components != 9)
-    throw DataError(spec.path + ": array \"" + chosen.name + "\" has " + std::to_string(components) +
-                    " components; a tensor needs 9, or 6 (XX, YY, ZZ, XY, YZ, XZ)");
   return chosen;
+}
+
+const char* where_looked(TensorAssociation association) {
+  return association == TensorAssociation::point  ? " in its point data"
+         : association == TensorAssociation::cell ? " in its cell data"
+                                                   : "";
+}
+
+// The array the field is made of. Named: that array, whose components say
+// what it is (6 or 9: tensors, 3: vectors). Not named: the active tensors,
+// else the only array of 6 or 9 components; failing both (and unless
+// tensors were asked for), the active vectors, else the only array of 3.
+ChosenArray choose_field_array(vtkDataSet* data, const VtkFileSpec& spec) {
+  const TensorAssociation assoc = spec.association;
+  ChosenArray chosen;
+  if (!spec.array.empty()) {
+    chosen = named_array(data, spec.array, assoc);
+    if (!chosen.array)
+      throw DataError(spec.path + ": no array named \"" + spec.array + "\"" + where_looked(assoc) + "; the file has " +
+                      list_arrays(data));
+  } else {
+    const auto pick = [&](bool vectors) {
+      for (const bool points : {true, false}) {
+        if ((points && assoc == TensorAssociation::cell) || (!points && assoc == TensorAssociation::point)) continue;
+        vtkDataSetAttributes* a = points ? data->GetPointData() : static_cast<vtkDataSetAttributes*>(data->GetCellData());
+        vtkDataArray* found = vectors ? (a->GetVectors() ? a->GetVectors() : only_array_of(a, {3}))
+                                      : (a->GetTensors() ? a->GetTensors() : only_array_of(a, {6, 9}));
+        if (found) return ChosenArray{found, points, found->GetName() ? found->GetName() : "(unnamed)",
+                                      found->GetNumberOfComponents()};
+      }
+      return ChosenArray{};
+    };
+    if (spec.kind != FieldKind::vector) chosen = pick(false);
+    if (!chosen.array && spec.kind != FieldKind::tensor) chosen = pick(true);
+    if (!chosen.array) {
+      const std::string what = spec.kind == FieldKind::tensor ? "no active tensors and no single array of 6 or 9 components"
+                               : spec.kind == FieldKind::vector
+                                   ? "no active vectors and no single array of 3 components"
+                                   : "no tensors (active, or a single array of 6 or 9 components) and no vectors "
+                                     "(active, or a single array of 3)";
+      throw DataError(spec.path + ": " + what + where_looked(assoc) + "; the file has " + list_arrays(data));
+    }
+  }
+  const int c = chosen.components;
+  const bool tensor = c == 6 || c == 9;
+  if ((spec.kind == FieldKind::tensor && !tensor) || (spec.kind == FieldKind::vector && c != 3) || (!tensor && c != 3))
+    throw DataError(spec.path + ": array \"" + chosen.name + "\" has " + std::to_string(c) + " components; " +
+                    (spec.kind == FieldKind::vector ? "a vector needs 3"
+                     : spec.kind == FieldKind::tensor ? "a tensor needs 9, or 6 (XX, YY, ZZ, XY, YZ, XZ)"
+                                                      : "a tensor needs 9, or 6 (XX, YY, ZZ, XY, YZ, XZ); a vector 3"));
+  return chosen;
+}
+
+// The values of a vector or scalar array, checked for finiteness.
+template <class T>
+std::vector<T> read_values(const ChosenArray& chosen, const std::string& path) {
+  const vtkIdType n = chosen.array->GetNumberOfTuples();
+  const int components = chosen.array->GetNumberOfComponents();
+  std::vector<T> out(static_cast<std::size_t>(n));
+  double t[3] = {0, 0, 0};
+  for (vtkIdType i = 0; i < n; ++i) {
+    chosen.array->GetTuple(i, t);
+    for (int c = 0; c < components; ++c)
+      if (!std::isfinite(t[c])) {
+        std::ostringstream message;
+        message << path << ": array \"" << chosen.name << "\" has a non-finite value (" << t[c] << ") at "
+                << (chosen.on_points ? "point " : "cell ") << i << ", component " << c;
+        throw DataError(message.str());
+      }
+    if constexpr (std::is_same_v<T, Vec3>)
+      out[std::size_t(i)] = Vec3(t[0], t[1], t[2]);
+    else
+      out[std::size_t(i)] = t[0];
+  }
+  return out;
 }
 
 // Tensors of `array`, checked for finiteness, symmetrised when given as 9
@@ -402,37 +466,71 @@ TriangleMesh boundary_surface(vtkDataSet* data, const std::string& path) {
 
 }  // namespace
 
+namespace {
+
+// The scalar array `name` for colouring: one component (a vector's
+// magnitude when it has three).
+std::unique_ptr<ScalarField> color_field(vtkDataSet* data, const VtkFileSpec& spec,
+                                         const std::shared_ptr<const MeshLocator>& locator) {
+  const ChosenArray chosen = named_array(data, spec.color_array, TensorAssociation::automatic);
+  if (!chosen.array)
+    throw DataError(spec.path + ": no array named \"" + spec.color_array + "\" to colour by; the file has " +
+                    list_arrays(data));
+  const ValueLocation where = chosen.on_points ? ValueLocation::points : ValueLocation::cells;
+  if (chosen.components == 1)
+    return std::make_unique<MeshScalarField>(locator, read_values<double>(chosen, spec.path), where);
+  if (chosen.components == 3) {
+    std::vector<double> magnitude;
+    for (const Vec3& v : read_values<Vec3>(chosen, spec.path)) magnitude.push_back(v.norm());
+    return std::make_unique<MeshScalarField>(locator, std::move(magnitude), where);
+  }
+  throw DataError(spec.path + ": array \"" + chosen.name + "\" has " + std::to_string(chosen.components) +
+                  " components; colouring needs a scalar (1) or a vector (3, by its magnitude)");
+}
+
+}  // namespace
+
 VtkData load_vtk_data(const VtkFileSpec& spec) {
   const VtkSession vtk;
   const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path, vtk);
   VtkData out;
-  ChosenArray chosen = choose_tensor_array(data, spec);
-  vtkSmartPointer<vtkDataSet> averaged;
-  std::vector<Sym3> tensors = read_tensors(chosen, spec.path, out.warnings);
-  if (!chosen.on_points && spec.cell_tensors == CellTensors::averaged) {
-    // The checks and warnings above name cells, which the user can find;
-    // the averaged copy would only repeat them for points.
-    chosen = averaged_onto_points(data, chosen, spec.path, averaged);
-    std::vector<std::string> repeated;
-    tensors = read_tensors(chosen, spec.path, repeated);
-  }
-
-  if (chosen.on_points && is_axis_aligned_image(data)) {
-    auto* image = vtkImageData::SafeDownCast(data);
-    const int* extent = image->GetExtent();
-    const double* origin = image->GetOrigin();
-    const double* spacing = image->GetSpacing();
-    const Vec3 first(origin[0] + extent[0] * spacing[0], origin[1] + extent[2] * spacing[1],
-                     origin[2] + extent[4] * spacing[2]);
-    const int* dims = image->GetDimensions();
-    out.field = std::make_unique<UniformGridField>(first, Vec3(spacing[0], spacing[1], spacing[2]),
-                                                   std::array<int, 3>{dims[0], dims[1], dims[2]},
-                                                   std::move(tensors));
+  ChosenArray chosen = choose_field_array(data, spec);
+  // One locator for every array of the data set (all share its cells).
+  std::shared_ptr<const MeshLocator> locator;
+  const auto mesh_locator = [&] {
+    if (!locator) locator = std::make_shared<MeshLocator>(data.Get());
+    return locator;
+  };
+  if (chosen.components == 3) {
+    out.vectors = std::make_unique<MeshVectorField>(mesh_locator(), read_values<Vec3>(chosen, spec.path),
+                                                    chosen.on_points ? ValueLocation::points : ValueLocation::cells);
   } else {
-    out.field = std::make_unique<MeshField>(
-        chosen.on_points && averaged ? averaged.Get() : data.Get(), std::move(tensors),
-        chosen.on_points ? TensorLocation::points : TensorLocation::cells);
+    vtkSmartPointer<vtkDataSet> averaged;
+    std::vector<Sym3> tensors = read_tensors(chosen, spec.path, out.warnings);
+    if (!chosen.on_points && spec.cell_tensors == CellTensors::averaged) {
+      // The checks and warnings above name cells, which the user can find;
+      // the averaged copy would only repeat them for points.
+      chosen = averaged_onto_points(data, chosen, spec.path, averaged);
+      std::vector<std::string> repeated;
+      tensors = read_tensors(chosen, spec.path, repeated);
+    }
+    if (chosen.on_points && is_axis_aligned_image(data)) {
+      auto* image = vtkImageData::SafeDownCast(data);
+      const int* extent = image->GetExtent();
+      const double* origin = image->GetOrigin();
+      const double* spacing = image->GetSpacing();
+      const Vec3 first(origin[0] + extent[0] * spacing[0], origin[1] + extent[2] * spacing[1],
+                       origin[2] + extent[4] * spacing[2]);
+      const int* dims = image->GetDimensions();
+      out.field = std::make_unique<UniformGridField>(first, Vec3(spacing[0], spacing[1], spacing[2]),
+                                                     std::array<int, 3>{dims[0], dims[1], dims[2]},
+                                                     std::move(tensors));
+    } else {
+      out.field = std::make_unique<MeshField>(mesh_locator(), std::move(tensors),
+                                              chosen.on_points ? ValueLocation::points : ValueLocation::cells);
+    }
   }
+  if (!spec.color_array.empty()) out.color = color_field(data, spec, mesh_locator());
   out.boundary = boundary_surface(data, spec.path);
   return out;
 }
@@ -458,13 +556,20 @@ std::string describe_vtk_file(const VtkFileSpec& spec) {
   }
   out << "\n  arrays    " << list_arrays(data) << "\n";
 
+  const ChosenArray chosen = choose_field_array(data, spec);
+  const char* where = chosen.on_points ? "point" : "cell";
+  if (chosen.components == 3) {
+    double lo = INFINITY, hi = 0.0;
+    for (const Vec3& v : read_values<Vec3>(chosen, spec.path)) lo = std::min(lo, v.norm()), hi = std::max(hi, v.norm());
+    out << "  vectors   \"" << chosen.name << "\" (3 components, " << where << " data)\n";
+    out << "  speed     [" << lo << ", " << hi << "]\n";
+    return out.str();
+  }
   std::vector<std::string> warnings;
-  const ChosenArray chosen = choose_tensor_array(data, spec);
   const std::vector<Sym3> tensors = read_tensors(chosen, spec.path, warnings);
   EigenvalueRange range;
   for (const Sym3& s : tensors) range.add(s);
-  out << "  tensors   \"" << chosen.name << "\" (" << chosen.array->GetNumberOfComponents() << " components, "
-      << (chosen.on_points ? "point" : "cell") << " data)\n";
+  out << "  tensors   \"" << chosen.name << "\" (" << chosen.components << " components, " << where << " data)\n";
   out << range;
   for (const std::string& w : warnings) out << "  warning: " << w << "\n";
   return out.str();

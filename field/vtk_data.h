@@ -10,6 +10,7 @@
 
 #include "field/tensor_field.h"
 #include "field/triangle_mesh.h"
+#include "field/vector_field.h"
 
 namespace hsb {
 
@@ -26,20 +27,32 @@ enum class CellTensors {
              // interpolated like point data
 };
 
+// What the data file is read as.
+enum class FieldKind {
+  automatic,  // tensors if the file has them, else vectors
+  tensor,
+  vector,
+};
+
 struct VtkFileSpec {
   std::string path;
-  std::string array;  // "" = the data set's active tensors
+  std::string array;  // "" = the active tensors (or vectors), or the only such array
   TensorAssociation association = TensorAssociation::automatic;
   CellTensors cell_tensors = CellTensors::constant;
+  FieldKind kind = FieldKind::automatic;
+  std::string color_array;  // a scalar array to colour by; "" = none
 };
 
 struct VtkData {
-  std::unique_ptr<TensorField> field;
+  std::unique_ptr<TensorField> field;     // tensor data; or
+  std::unique_ptr<VectorField> vectors;   // vector data
+  std::unique_ptr<ScalarField> color;     // VtkFileSpec::color_array, when named
   TriangleMesh boundary;              // the data set's outer surface
   std::vector<std::string> warnings;  // e.g. a non-symmetric tensor array
 };
 
-// Reads the file and its tensors. Tensors with 9 components are replaced by
+// Reads the file and its tensors, or its vectors (3 components, read as
+// they are), and the colour array. Tensors with 9 components are replaced by
 // their symmetric part (paper eq. 2), with one warning giving the largest
 // asymmetry; 6 components are read in VTK's order XX, YY, ZZ, XY, YZ, XZ.
 // Throws DataError naming the file (and point or cell) for an unreadable

@@ -24,7 +24,10 @@ std::string pinned_scene_toml(const PreparedScene& p) {
   const SceneSpec& s = p.spec;
   const GlyphValues& v = p.glyphs.values;
   if (v.singular_radius) pin(!s.pipeline.data.point_load.singular_radius, "data", "singular_radius", *v.singular_radius);
-  if (s.pipeline.seeds.automatic()) {
+  // Sources the scene gives itself (a curve, a list) have no seeds,
+  // trajectories or sizes to pin.
+  const bool from_data = s.pipeline.data.kind != DataKind::none;
+  if (from_data && s.pipeline.seeds.automatic()) {
     toml::table& seeds = subtable(root, "seeds");
     seeds.insert_or_assign("frame", v.seeds.frame == SeedFrame::bounds ? "bounds" : "world");
     toml::array grids;
@@ -33,12 +36,16 @@ std::string pinned_scene_toml(const PreparedScene& p) {
                                   {"edge_v", vec3(g.edge_v)}, {"n", g.n}, {"m", g.m}});
     seeds.insert_or_assign("grid", std::move(grids));
   }
-  pin(!s.pipeline.trajectory.step, "trajectories", "step", v.trajectory.step);
-  pin(!s.pipeline.trajectory.max_length, "trajectories", "max_length", v.trajectory.max_length);
-  pin(!s.pipeline.spacing, "glyphs", "spacing", v.spacing);
-  pin(!s.pipeline.size.scale, "glyphs", "scale", v.mapping.scale);
-  pin(!s.pipeline.size.floor, "glyphs", "floor", v.mapping.floor);
-  pin(!s.pipeline.size.ceiling, "glyphs", "ceiling", v.mapping.ceiling);
+  if (from_data) {
+    pin(!s.pipeline.trajectory.step, "trajectories", "step", v.trajectory.step);
+    pin(!s.pipeline.trajectory.max_length, "trajectories", "max_length", v.trajectory.max_length);
+    pin(!s.pipeline.trajectory.min_magnitude, "trajectories", "min_magnitude", v.trajectory.min_magnitude);
+    pin(!s.pipeline.spacing, "glyphs", "spacing", v.spacing);
+    pin(!s.pipeline.size.scale, "glyphs", "scale", v.mapping.scale);
+    pin(!s.pipeline.size.floor, "glyphs", "floor", v.mapping.floor);
+    pin(!s.pipeline.size.ceiling, "glyphs", "ceiling", v.mapping.ceiling);
+    pin(!s.pipeline.color, "glyphs", "color_by", p.glyphs.color == ColorScalar::speed ? "speed" : "lambda3");
+  }
   pin(!s.color.range, "color", "range", toml::array{p.scale.lo, p.scale.hi});
   // The camera is pinned whole: position and look_at make view and frame moot.
   const bool camera_automatic = !s.camera.position || !s.camera.look_at || !s.camera.up ||

@@ -36,13 +36,18 @@ double median_glyph_size(const std::vector<GlyphSource>& sources, double extent,
   return sizes[sizes.size() / 2];
 }
 
-const char* scalar_title(ColorScalar scalar) {
+// The colour bar's automatic title.
+std::string scalar_title(ColorScalar scalar, const SceneSpec& spec) {
   switch (scalar) {
     case ColorScalar::lambda1: return "major eigenvalue λ₁";
     case ColorScalar::lambda2: return "medium eigenvalue λ₂";
     case ColorScalar::lambda3: return "minor eigenvalue λ₃";
     case ColorScalar::mean: return "mean eigenvalue (λ₁ + λ₂ + λ₃)/3";
     case ColorScalar::von_mises: return "von Mises stress";
+    case ColorScalar::speed: return "speed |v|";
+    case ColorScalar::array:
+      return spec.pipeline.placement == SourcePlacement::list ? "scalar" : spec.pipeline.data.file.color_array;
+    case ColorScalar::arc_length: return "position along the curve";
   }
   return "";
 }
@@ -76,13 +81,16 @@ std::vector<std::string> automatic_keys(const SceneSpec& s) {
   };
   const GlyphPipelineSpec& p = s.pipeline;
   note(p.data.kind == DataKind::point_load && !p.data.point_load.singular_radius, "data.singular_radius");
-  note(p.seeds.automatic(), "seeds");
-  note(!p.trajectory.step, "trajectories.step");
-  note(!p.trajectory.max_length, "trajectories.max_length");
-  note(!p.spacing, "glyphs.spacing");
-  note(!p.size.scale, "glyphs.scale");
-  note(!p.size.floor, "glyphs.floor");
-  note(!p.size.ceiling, "glyphs.ceiling");
+  const bool from_data = p.data.kind != DataKind::none;
+  note(from_data && p.seeds.automatic(), "seeds");
+  note(from_data && !p.trajectory.step, "trajectories.step");
+  note(from_data && !p.trajectory.max_length, "trajectories.max_length");
+  note(from_data && !p.trajectory.min_magnitude, "trajectories.min_magnitude");
+  note(from_data && !p.spacing, "glyphs.spacing");
+  note(from_data && !p.size.scale, "glyphs.scale");
+  note(from_data && !p.size.floor, "glyphs.floor");
+  note(from_data && !p.size.ceiling, "glyphs.ceiling");
+  note(from_data && !p.color, "glyphs.color_by");
   note(!s.color.range, "color.range");
   note(!s.camera.position, "camera.position");
   note(!s.camera.look_at, "camera.look_at");
@@ -195,9 +203,10 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   p.field = make_blob_field(p.glyphs.sources, colors, s.surface.influence_radius, s.surface.kernel, s.surface.blend,
                             s.surface.isovalue);
 
-  // A box frames an analytic domain, a shell shows a mesh's boundary.
+  // A box frames an analytic domain, a shell shows a mesh's boundary;
+  // sources the scene gives itself have neither.
   const bool has_boundary = p.glyphs.boundary.has_value();
-  if (s.context.box.value_or(!has_boundary)) p.context.box = domain;
+  if (s.context.box.value_or(s.pipeline.data.kind == DataKind::point_load)) p.context.box = domain;
   p.context.box_radius = s.context.box_radius.value_or(kBoxRadiusPerDiagonal * diagonal);
   if (s.context.shell.value_or(has_boundary) && has_boundary) p.context.shell = &*p.glyphs.boundary;
 
@@ -249,7 +258,7 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
     style.font_size = s.output.font_size;
     style.length = s.output.colorbar_length;
     style.dpi = s.output.dpi;
-    p.output.legend = layout_legend(p.scale, s.output.colorbar_title.value_or(scalar_title(s.pipeline.color)),
+    p.output.legend = layout_legend(p.scale, s.output.colorbar_title.value_or(scalar_title(p.glyphs.color, s)),
                                     style, p.render.width, p.render.height);
     (style.placement == LegendPlacement::right ? reserve.right : reserve.bottom) = p.output.legend->reserved;
   }

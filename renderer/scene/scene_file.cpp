@@ -82,6 +82,9 @@ void read_data(TableReader& data, DataSpec& spec, const std::string& base_dir) {
     // Relative to the scene file, so scenes can be run from anywhere.
     spec.file.path = existing_file(data, "file", *file, base_dir);
     spec.file.array = data.string("array", "");
+    spec.file.kind = data.choice("field", FieldKind::automatic,
+                                 {{"auto", FieldKind::automatic}, {"tensor", FieldKind::tensor},
+                                  {"vector", FieldKind::vector}});
     spec.file.association = data.choice("association", TensorAssociation::automatic,
                                         {{"auto", TensorAssociation::automatic},
                                          {"point", TensorAssociation::point},
@@ -92,7 +95,7 @@ void read_data(TableReader& data, DataSpec& spec, const std::string& base_dir) {
     refuse_keys(data, {"bounds", "load", "poisson_ratio", "singular_radius"}, "point_load");
   } else {
     if (file) data.fail_at("file", "applies only to data.kind = \"vtk\"");
-    refuse_keys(data, {"array", "association", "cell_tensors"}, "vtk");
+    refuse_keys(data, {"array", "association", "cell_tensors", "field"}, "vtk");
     PointLoadSpec& load = spec.point_load;
     if (const std::vector<double> b = data.numbers("bounds", 6); !b.empty()) {
       load.bounds = Box3{Vec3(b[0], b[2], b[4]), Vec3(b[1], b[3], b[5])};
@@ -136,15 +139,63 @@ void read_trajectories(TableReader& t, TrajectorySpec& spec) {
   spec.step = t.optional_number("step", positive);
   spec.max_length = t.optional_number("max_length", positive);
   spec.degeneracy_tolerance = t.number("degeneracy", spec.degeneracy_tolerance, non_negative);
-  spec.min_magnitude = t.number("min_magnitude", spec.min_magnitude, non_negative);
+  spec.min_magnitude = t.optional_number("min_magnitude", non_negative);
   spec.max_steps = t.integer("max_steps", spec.max_steps, 1);
+  spec.direction = t.choice("direction", TraceDirection::both,
+                            {{"both", TraceDirection::both}, {"forward", TraceDirection::forward},
+                             {"backward", TraceDirection::backward}});
   t.finish();
 }
 
-void read_glyphs(TableReader& g, GlyphPipelineSpec& spec) {
+void read_curve(TableReader& c, CurveSpec& spec) {
+  spec.kind = c.choice("kind", spec.kind,
+                       {{"line", CurveKind::line}, {"circle", CurveKind::circle}, {"helix", CurveKind::helix},
+                        {"polyline", CurveKind::polyline}});
+  const auto only_for = [&](std::initializer_list<const char*> keys, std::initializer_list<CurveKind> kinds,
+                            const char* which) {
+    if (std::find(kinds.begin(), kinds.end(), spec.kind) != kinds.end()) return;
+    for (const char* key : keys)
+      if (c.has(key)) c.fail_at(key, std::string("applies only to glyphs.curve.kind ") + which);
+  };
+  only_for({"from", "to"}, {CurveKind::line}, "\"line\"");
+  only_for({"centre", "radius", "axis"}, {CurveKind::circle, CurveKind::helix}, "\"circle\" or \"helix\"");
+  only_for({"pitch", "turns"}, {CurveKind::helix}, "\"helix\"");
+  only_for({"points"}, {CurveKind::polyline}, "\"polyline\"");
+  spec.from = c.vec3("from", spec.from);
+  spec.to = c.vec3("to", spec.to);
+  if (spec.kind == CurveKind::line && spec.from == spec.to) c.fail_at("to", "must differ from glyphs.curve.from");
+  spec.centre = c.vec3("centre", spec.centre);
+  spec.radius = c.number("radius", spec.radius, positive);
+  spec.axis = c.vec3("axis", spec.axis);
+  if (spec.axis.norm() == 0.0) c.fail_at("axis", "must not be zero");
+  spec.pitch = c.number("pitch", spec.pitch, non_negative);
+  spec.turns = c.number("turns", spec.turns, positive);
+  spec.points = c.points("points");
+  if (spec.kind == CurveKind::polyline && spec.points.size() < 2)
+    c.fail_at(c.has("points") ? "points" : "kind", "needs glyphs.curve.points: at least two [x, y, z]");
+  spec.count = c.integer("count", spec.count, 1, 100000);
+  spec.semi_axes = c.vec3("semi_axes", spec.semi_axes);
+  if (!(spec.semi_axes.minCoeff() > 0.0)) c.fail_at("semi_axes", "must be three sizes > 0");
+  c.finish();
+}
+
+void read_glyphs(TableReader& g, GlyphPipelineSpec& spec, const std::string& base_dir) {
   spec.placement = g.choice("placement", SourcePlacement::along_trajectories,
                             {{"trajectories", SourcePlacement::along_trajectories},
-                             {"seeds", SourcePlacement::at_seeds}});
+                             {"seeds", SourcePlacement::at_seeds},
+                             {"curve", SourcePlacement::curve},
+                             {"list", SourcePlacement::list}});
+  if (auto curve = g.table("curve")) {
+    if (spec.placement != SourcePlacement::curve) curve->fail_at("kind", "[glyphs.curve] needs glyphs.placement = \"curve\"");
+    read_curve(*curve, spec.curve);
+  }
+  if (const std::optional<std::string> file = g.optional_string("file")) {
+    if (spec.placement != SourcePlacement::list) g.fail_at("file", "applies only to glyphs.placement = \"list\"");
+    spec.list_file = existing_file(g, "file", *file, base_dir);
+  } else if (spec.placement == SourcePlacement::list) {
+    g.fail_at("placement", "= \"list\" needs glyphs.file, a CSV file of sources");
+  }
+  spec.stretch = g.number("stretch", spec.stretch, {1.0, 100.0, false});
   spec.spacing = g.optional_number("spacing", positive);
   GlyphSizeSpec& size = spec.size;
   size.mapping = g.choice("mapping", size.mapping,
@@ -154,10 +205,20 @@ void read_glyphs(TableReader& g, GlyphPipelineSpec& spec) {
   size.scale = g.optional_number("scale", positive);
   size.floor = g.optional_number("floor", positive);
   size.ceiling = g.optional_number("ceiling", positive_or_infinite);
-  spec.color = g.choice("color_by", ColorScalar::lambda3,
-                        {{"lambda1", ColorScalar::lambda1}, {"lambda2", ColorScalar::lambda2},
-                         {"lambda3", ColorScalar::lambda3}, {"mean", ColorScalar::mean},
-                         {"von_mises", ColorScalar::von_mises}});
+  // "array:NAME": a scalar array of the data file.
+  const std::string array_prefix = "array:";
+  if (g.holds_string("color_by") && g.string("color_by", "").rfind(array_prefix, 0) == 0) {
+    const std::string name = g.string("color_by", "").substr(array_prefix.size());
+    if (name.empty()) g.fail_at("color_by", "= \"array:NAME\" needs the array's name after the colon");
+    spec.color = ColorScalar::array;
+    spec.data.file.color_array = name;
+  } else if (g.has("color_by")) {
+    spec.color = g.choice("color_by", ColorScalar::lambda3,
+                          {{"lambda1", ColorScalar::lambda1}, {"lambda2", ColorScalar::lambda2},
+                           {"lambda3", ColorScalar::lambda3}, {"mean", ColorScalar::mean},
+                           {"von_mises", ColorScalar::von_mises}, {"speed", ColorScalar::speed},
+                           {"arc_length", ColorScalar::arc_length}});
+  }
   g.finish();
   if (size.floor && size.ceiling && *size.ceiling < *size.floor) g.fail_at("ceiling", "must be >= glyphs.floor");
 }
@@ -378,7 +439,16 @@ SceneSpec load_scene_text(const std::string& text, const std::string& path, cons
   if (auto data = top.table("data")) read_data(*data, spec.pipeline.data, base_dir);
   if (auto seeds = top.table("seeds")) read_seeds(*seeds, spec.pipeline.seeds);
   if (auto t = top.table("trajectories")) read_trajectories(*t, spec.pipeline.trajectory);
-  if (auto g = top.table("glyphs")) read_glyphs(*g, spec.pipeline);
+  if (auto g = top.table("glyphs")) read_glyphs(*g, spec.pipeline, base_dir);
+  if (spec.pipeline.placement == SourcePlacement::curve || spec.pipeline.placement == SourcePlacement::list) {
+    // The sources come from the scene: no data set to read.
+    if (top.has("data")) top.fail_at("data", "is not read with glyphs.placement = \"curve\" or \"list\"");
+    if (top.has("seeds")) top.fail_at("seeds", "has no use with glyphs.placement = \"curve\" or \"list\"");
+    spec.pipeline.data.kind = DataKind::none;
+  }
+  if (spec.pipeline.data.kind == DataKind::point_load && spec.pipeline.color == ColorScalar::array)
+    throw SceneError(path + ": glyphs.color_by = \"array:" + spec.pipeline.data.file.color_array +
+                     "\" needs data.file: the point load has no arrays");
   if (auto s = top.table("surface")) read_surface(*s, spec.surface);
   if (auto c = top.table("color")) read_color(*c, spec.color);
   if (auto c = top.table("camera")) read_camera(*c, spec.camera);

@@ -220,9 +220,32 @@ TEST_F(BadData, WrongComponentCount) {
   text += "VECTORS velocity double\n";
   for (int i = 0; i < 27; ++i) text += "1 0 0\n";
   const fs::path path = write("vectors.vtk", text);
-  const std::string e = error_of(path);
-  EXPECT_NE(e.find("no active tensors and no single array of 6 or 9 components"), std::string::npos) << e;
-  EXPECT_NE(e.find("velocity (3 components)"), std::string::npos) << e;
+  EXPECT_EQ(error_of(path), "no error");  // read as a flow
+  VtkFileSpec tensors;
+  tensors.path = path.string();
+  tensors.kind = FieldKind::tensor;
+  try {
+    load_vtk_data(tensors);
+    FAIL() << "no error";
+  } catch (const DataError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("no active tensors and no single array of 6 or 9 components"), std::string::npos) << m;
+    EXPECT_NE(m.find("velocity (3 components)"), std::string::npos) << m;
+  }
+  // Two components are neither.
+  std::string two = LegacyGrid().text();
+  two = two.substr(0, two.find("TENSORS")) + "FIELD extra 1\nflat 2 27 double\n";
+  for (int i = 0; i < 27; ++i) two += "1 0\n";
+  VtkFileSpec named;
+  named.path = write("two.vtk", two).string();
+  named.array = "flat";
+  try {
+    load_vtk_data(named);
+    FAIL() << "no error";
+  } catch (const DataError& e) {
+    EXPECT_NE(std::string(e.what()).find("has 2 components; a tensor needs 9, or 6 (XX, YY, ZZ, XY, YZ, XZ); a vector 3"),
+              std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -259,7 +259,7 @@ TEST(GlyphPipeline, AtSeeds) {
   EXPECT_EQ(scene.sources[0].centre, Vec3(0.1, 0.2, -0.3));  // explicit points first
   const PointLoadField f(spec.data.point_load);
   const GlyphSource expected =
-      make_source(Vec3(0.1, 0.2, -0.3), f.stress(Vec3(0.1, 0.2, -0.3)), scene.values.mapping, spec.color);
+      make_source(Vec3(0.1, 0.2, -0.3), f.stress(Vec3(0.1, 0.2, -0.3)), scene.values.mapping, scene.color);
   EXPECT_LE((scene.sources[0].radii - expected.radii).norm(), 1e-15);
   EXPECT_EQ(scene.sources[0].scalar, expected.scalar);
 }

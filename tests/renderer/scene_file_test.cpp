@@ -39,7 +39,7 @@ TEST_F(SceneFile, MinimalSceneGetsDocumentedDefaults) {
   EXPECT_EQ(spec.surface.blend, Blend::sum);
   EXPECT_DOUBLE_EQ(spec.surface.isovalue, 0.5);
   EXPECT_DOUBLE_EQ(spec.surface.influence_radius, 1.0);
-  EXPECT_EQ(spec.pipeline.color, ColorScalar::lambda3);
+  EXPECT_FALSE(spec.pipeline.color);  // λ3 for tensors, the speed for a flow
   EXPECT_EQ(spec.pipeline.size.mapping, RadiusMapping::sqrt);
   EXPECT_EQ(spec.pipeline.data.kind, DataKind::point_load);
   // Values that depend on the data are automatic until it is read.

@@ -1,8 +1,9 @@
-#include "field/mesh_field.h"
+#include "field/mesh_locator.h"
 
 #include <tbb/enumerable_thread_specific.h>
 #include <vtkDataSet.h>
 #include <vtkGenericCell.h>
+#include <vtkNew.h>
 #include <vtkSmartPointer.h>
 #include <vtkStaticCellLocator.h>
 
@@ -12,24 +13,20 @@ namespace hsb {
 // owned cell and weight buffer (trajectories are traced in parallel).
 struct CellScratch {
   vtkSmartPointer<vtkGenericCell> cell = vtkSmartPointer<vtkGenericCell>::New();
-  std::vector<double> weights;
+  std::vector<double> vtk_weights;
+  CellWeights result;
 };
 
-struct MeshField::Impl {
+struct MeshLocator::Impl {
   vtkSmartPointer<vtkDataSet> data;
   vtkSmartPointer<vtkStaticCellLocator> locator;
-  std::vector<Sym3> tensors;
-  TensorLocation location;
   double tolerance2;
   std::size_t max_cell_size;
   tbb::enumerable_thread_specific<CellScratch> scratch;
 };
 
-MeshField::MeshField(vtkDataSet* data, std::vector<Sym3> tensors, TensorLocation location)
-    : impl_(std::make_unique<Impl>()) {
+MeshLocator::MeshLocator(vtkDataSet* data) : impl_(std::make_unique<Impl>()) {
   impl_->data = data;
-  impl_->tensors = std::move(tensors);
-  impl_->location = location;
   double b[6];
   data->GetBounds(b);
   bounds_ = Box3{Vec3(b[0], b[2], b[4]), Vec3(b[1], b[3], b[5])};
@@ -49,22 +46,25 @@ MeshField::MeshField(vtkDataSet* data, std::vector<Sym3> tensors, TensorLocation
   if (data->GetNumberOfCells() > 0) data->GetCell(0, warm_up);
 }
 
-MeshField::~MeshField() = default;
+MeshLocator::~MeshLocator() = default;
 
-std::optional<Sym3> MeshField::sample(const Vec3& x) const {
-  CellScratch& scratch = impl_->scratch.local();
-  if (scratch.weights.size() < impl_->max_cell_size) scratch.weights.resize(impl_->max_cell_size);
+const CellWeights* MeshLocator::locate(const Vec3& x) const {
+  CellScratch& s = impl_->scratch.local();
+  if (s.vtk_weights.size() < impl_->max_cell_size) s.vtk_weights.resize(impl_->max_cell_size);
   double p[3] = {x.x(), x.y(), x.z()};
   double pcoords[3];
-  const vtkIdType cell_id =
-      impl_->locator->FindCell(p, impl_->tolerance2, scratch.cell.Get(), pcoords, scratch.weights.data());
-  if (cell_id < 0) return std::nullopt;
-  if (impl_->location == TensorLocation::cells) return impl_->tensors[std::size_t(cell_id)];
-  Sym3 sum;
-  const int n = int(scratch.cell->GetNumberOfPoints());
-  for (int i = 0; i < n; ++i)
-    sum = sum + scratch.weights[std::size_t(i)] * impl_->tensors[std::size_t(scratch.cell->GetPointId(i))];
-  return sum;
+  const vtkIdType cell = impl_->locator->FindCell(p, impl_->tolerance2, s.cell.Get(), pcoords, s.vtk_weights.data());
+  if (cell < 0) return nullptr;
+  CellWeights& w = s.result;
+  w.cell = cell;
+  const std::size_t n = std::size_t(s.cell->GetNumberOfPoints());
+  w.points.resize(n);
+  w.weights.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    w.points[i] = s.cell->GetPointId(vtkIdType(i));
+    w.weights[i] = s.vtk_weights[i];
+  }
+  return &w;
 }
 
 }  // namespace hsb
