@@ -105,7 +105,7 @@ const char* stop_name(StopReason r) {
     case StopReason::boundary: return "the boundary";
     case StopReason::max_length: return "trajectories.max_length";
     case StopReason::degenerate: return "a degenerate point (repeated eigenvalues)";
-    case StopReason::low_magnitude: return "trajectories.min_magnitude";
+    case StopReason::low_magnitude: return "trajectories.min_magnitude (or a stagnation point of a flow)";
     case StopReason::max_steps: return "trajectories.max_steps";
     case StopReason::closed: return "its own start (a closed curve)";
   }

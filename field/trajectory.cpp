@@ -128,6 +128,14 @@ HalfTrajectory trace_half(const DirectionSampler& sampler, const Vec3& seed,
       ks[stage] = oriented(d.direction);
       previous = ks[stage];
     }
+    // A flow that turns back within one step has a stagnation point there
+    // (a sink, or a source going backwards): with unit-speed steps the
+    // curve would only oscillate across it. Stop short of it.
+    if (ok && options.signed_directions &&
+        (ks[0].dot(travel) < 0.0 || ks[1].dot(travel) < 0.0 || ks[2].dot(travel) < 0.0)) {
+      half.stop = StopReason::low_magnitude;
+      return half;
+    }
     Vec3 x_new = x;
     DirectionSample at_new;
     if (ok) {
@@ -168,6 +176,10 @@ HalfTrajectory trace_half(const DirectionSampler& sampler, const Vec3& seed,
     }
     if (!at_new.ok) {  // the new point is degenerate or weak: keep it, end there
       half.stop = at_new.stop;
+      return half;
+    }
+    if (options.signed_directions && oriented(at_new.direction).dot(travel) < 0.0) {
+      half.stop = StopReason::low_magnitude;  // stagnation just ahead, as above
       return half;
     }
     // A streamline back at its seed after going round: closed. (Only for

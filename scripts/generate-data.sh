@@ -34,7 +34,7 @@ mkdir -p "$out"
 gen=scenes/data/generators
 for script in vtk_point_load hex_cube_patch_load beam_bending \
               plate_with_hole_mm_pa random_tensors zero_stress_regions \
-              mixed_cells_legacy thin_plate_shear; do
+              mixed_cells_legacy thin_plate_shear double_glazing; do
   echo "generate-data: $script"
   (cd "$gen" && "$PY" "$script.py" "$out")
 done

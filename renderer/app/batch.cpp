@@ -2,14 +2,13 @@
 
 #include <toml++/toml.h>
 
-#include <algorithm>
 #include <cctype>
-#include <cstdio>
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
 
 #include "renderer/scene/scene_spec.h"
+#include "renderer/scene/toml_text.h"
 
 namespace hsb {
 namespace {
@@ -19,56 +18,25 @@ struct SweptKey {
   std::vector<std::string> values;  // each as TOML text
 };
 
-// A TOML value as text that --set reads back as the same value; a number
-// as short as it was written (0.1, not 0.10000000000000001), since it
-// names the image.
-std::string toml_text(const toml::node& node) {
-  if (const auto* f = node.as_floating_point()) {
-    char text[40];
-    std::snprintf(text, sizeof text, "%.15g", f->get());
-    std::string s = text;
-    if (s.find_first_of(".eina") == std::string::npos) s += ".0";  // stays a float
-    return s;
-  }
-  std::ostringstream out;
-  node.visit([&](const auto& v) { out << v; });
-  return out.str();
-}
-
-// The [sweep] table's keys, flattened to dotted paths: "glyphs.spacing" =
-// [...] and [sweep.glyphs] spacing = [...] say the same. In the order they
-// appear in the file (toml++ keeps tables sorted by key).
-void collect(const toml::table& table, const std::string& prefix, std::vector<std::pair<toml::source_position, SweptKey>>& out) {
-  for (const auto& [key, node] : table) {
-    const std::string path = prefix.empty() ? std::string(key.str()) : prefix + "." + std::string(key.str());
-    if (const toml::table* sub = node.as_table()) {
-      collect(*sub, path, out);
-      continue;
-    }
-    const toml::source_position at = key.source().begin;
-    SweptKey swept{path, {}};
-    if (const toml::array* values = node.as_array()) {
-      for (const toml::node& v : *values) swept.values.push_back(toml_text(v));
-    } else {
-      swept.values.push_back(toml_text(node));
-    }
-    out.emplace_back(at, std::move(swept));
-  }
-}
-
 // The scene file's [sweep] table; none for data files and unreadable scenes.
 std::vector<SweptKey> scene_sweeps(const std::string& scene) {
   std::vector<SweptKey> out;
   if (is_data_file(scene)) return out;
-  std::vector<std::pair<toml::source_position, SweptKey>> found;
   try {
     const toml::table root = toml::parse_file(scene);
-    if (const toml::table* sweep = root["sweep"].as_table()) collect(*sweep, "", found);
+    // "glyphs.spacing" = [...] and [sweep.glyphs] spacing = [...] say the same.
+    if (const toml::table* sweep = root["sweep"].as_table())
+      for_each_leaf(*sweep, "", [&](const std::string& path, const toml::node& node) {
+        SweptKey swept{path, {}};
+        if (const toml::array* values = node.as_array())
+          for (const toml::node& v : *values) swept.values.push_back(toml_text(v));
+        else
+          swept.values.push_back(toml_text(node));
+        out.push_back(std::move(swept));
+      });
   } catch (const std::exception&) {
     // Reported, with its line and column, when the scene is rendered.
   }
-  std::stable_sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (auto& f : found) out.push_back(std::move(f.second));
   return out;
 }
 

@@ -172,6 +172,31 @@ std::string output_file_name(const SceneSpec& spec) {
   return spec.output.file.value_or(std::filesystem::path(spec.path).stem().string() + ".png");
 }
 
+std::array<int, 2> picture_size(const SceneSpec& s) {
+  // As given, else the print size at the DPI.
+  const auto pixels = [&](int axis) {
+    return s.output.print_size ? std::max(1, int(std::lround((*s.output.print_size)[std::size_t(axis)] / 25.4 * s.output.dpi)))
+                               : kDefaultPixels;
+  };
+  return {s.render.width.value_or(pixels(0)), s.render.height.value_or(pixels(1))};
+}
+
+LegendLayout legend_for(const PreparedScene& p, int width, int height) {
+  const OutputSpec& o = p.spec.output;
+  LegendStyle style;
+  style.placement = o.colorbar_position;
+  style.font_size = o.font_size;
+  style.length = o.colorbar_length;
+  style.dpi = o.dpi;
+  return layout_legend(p.scale, o.colorbar_title.value_or(scalar_title(p.glyphs.color, p.spec)), style, width, height);
+}
+
+void set_color_scale(PreparedScene& p, const ColorScale& scale, const ColorManagement& color) {
+  p.scale = scale;
+  for (std::size_t i = 0; i < p.field.sources.size(); ++i)
+    p.field.sources[i].color = color.to_scene_linear(scale.srgb(p.glyphs.sources[i].scalar));
+}
+
 ColorManagement scene_color_management(const SceneSpec& spec) {
   const OutputSpec& o = spec.output;
   try {
@@ -226,13 +251,9 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   p.shading.trajectory_color = color.to_scene_linear(p.shading.trajectory_color);
   p.shading.ao_distance = s.light.ao_distance.value_or(kOcclusionPerGlyph * glyph);
 
-  // The picture's size: as given, else the print size at the DPI.
-  const auto pixels = [&](int axis) {
-    return s.output.print_size ? std::max(1, int(std::lround((*s.output.print_size)[std::size_t(axis)] / 25.4 * s.output.dpi)))
-                               : kDefaultPixels;
-  };
-  p.render.width = s.render.width.value_or(pixels(0));
-  p.render.height = s.render.height.value_or(pixels(1));
+  const std::array<int, 2> size = picture_size(s);
+  p.render.width = size[0];
+  p.render.height = size[1];
   std::ostringstream picture;
   picture << "the picture (" << p.render.width << " × " << p.render.height << " pixels)";
   check_memory(kBytesPerPixel * p.render.width * p.render.height, picture.str(),
@@ -253,14 +274,9 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   if (exr) p.render.planes = s.output.layers;
   PictureReserve reserve;
   if (s.output.colorbar && !p.field.sources.empty() && !exr) {
-    LegendStyle style;
-    style.placement = s.output.colorbar_position;
-    style.font_size = s.output.font_size;
-    style.length = s.output.colorbar_length;
-    style.dpi = s.output.dpi;
-    p.output.legend = layout_legend(p.scale, s.output.colorbar_title.value_or(scalar_title(p.glyphs.color, s)),
-                                    style, p.render.width, p.render.height);
-    (style.placement == LegendPlacement::right ? reserve.right : reserve.bottom) = p.output.legend->reserved;
+    p.output.legend = legend_for(p, p.render.width, p.render.height);
+    (p.output.legend->style.placement == LegendPlacement::right ? reserve.right : reserve.bottom) =
+        p.output.legend->reserved;
   }
 
   CameraRequest camera = s.camera;

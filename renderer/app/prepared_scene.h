@@ -51,6 +51,17 @@ struct PreparedScene {
 // the scene's (or data file's) name with .png.
 std::string output_file_name(const SceneSpec& spec);
 
+// The picture's pixels: render.width and height, else output.print_size
+// at output.dpi, else 800 × 800.
+std::array<int, 2> picture_size(const SceneSpec& spec);
+
+// The colour bar of `p`'s scale in a width × height picture, as its
+// [output] asks (placement, length, font size, title).
+LegendLayout legend_for(const PreparedScene& p, int width, int height);
+
+// Colours `p`'s glyphs by `scale` instead (panels that share a colour bar).
+void set_color_scale(PreparedScene& p, const ColorScale& scale, const ColorManagement& color);
+
 // The colour management the scene's [output] asks for: its OCIO config
 // (else $OCIO, else the built-in one), display and view. Throws SceneError
 // naming the scene when the config cannot be read or has no such display

@@ -45,8 +45,4 @@ struct RenderSummary {
 // no partial image is ever left behind.
 RenderSummary run_render_job(const RenderJob& job);
 
-// The hash an image stores as hsb:scene_sha1: of the scene's text, its
-// overrides and the data file's bytes.
-std::string scene_sha1(const SceneSpec& spec);
-
 }  // namespace hsb

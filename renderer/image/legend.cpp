@@ -1,6 +1,7 @@
 #include "renderer/image/legend.h"
 
-#include <pango/pangocairo.h>
+#include "renderer/image/text.h"
+
 
 #include <algorithm>
 #include <cmath>
@@ -21,56 +22,6 @@ constexpr double kStroke = 0.5;
 // print; its legend shrinks with it, so that it never takes over the
 // picture.
 constexpr double kFullSizePicture = 180.0;
-
-struct CairoDeleter {
-  void operator()(cairo_t* cr) const { cairo_destroy(cr); }
-  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
-  void operator()(PangoLayout* l) const { g_object_unref(l); }
-  void operator()(PangoFontDescription* f) const { pango_font_description_free(f); }
-};
-template <class T>
-using Owned = std::unique_ptr<T, CairoDeleter>;
-
-// A Pango layout of `text` at the legend's font size, for `cr`.
-Owned<PangoLayout> text_layout(cairo_t* cr, const std::string& text, double size_px) {
-  Owned<PangoLayout> layout(pango_cairo_create_layout(cr));
-  Owned<PangoFontDescription> font(pango_font_description_from_string("DejaVu Sans"));
-  pango_font_description_set_absolute_size(font.get(), size_px * PANGO_SCALE);
-  pango_layout_set_font_description(layout.get(), font.get());
-  pango_layout_set_text(layout.get(), text.c_str(), -1);
-  return layout;
-}
-
-// A text's logical size, in the context's units.
-void text_size(cairo_t* cr, const std::string& text, double size_px, double& w, double& h) {
-  const Owned<PangoLayout> layout = text_layout(cr, text, size_px);
-  int pw = 0, ph = 0;
-  pango_layout_get_size(layout.get(), &pw, &ph);
-  w = double(pw) / PANGO_SCALE;
-  h = double(ph) / PANGO_SCALE;
-}
-
-// A context to measure text with: text sizes do not depend on the surface.
-Owned<cairo_t> measuring_context() {
-  Owned<cairo_surface_t> surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 1, 1));
-  return Owned<cairo_t>(cairo_create(surface.get()));
-}
-
-// `text` with its anchor at (x, y): ax, ay in [0, 1] from its left/top to
-// its right/bottom; rotated a quarter turn anticlockwise when `upright`.
-void show_text(cairo_t* cr, const std::string& text, double size_px, double x, double y, double ax, double ay,
-               bool upright = false) {
-  const Owned<PangoLayout> layout = text_layout(cr, text, size_px);
-  int pw = 0, ph = 0;
-  pango_layout_get_size(layout.get(), &pw, &ph);
-  const double w = double(pw) / PANGO_SCALE, h = double(ph) / PANGO_SCALE;
-  cairo_save(cr);
-  cairo_translate(cr, x, y);
-  if (upright) cairo_rotate(cr, -M_PI / 2.0);
-  cairo_move_to(cr, -ax * w, -ay * h);
-  pango_cairo_show_layout(cr, layout.get());
-  cairo_restore(cr);
-}
 
 // The colour at bar fraction u ∈ [0, 1], display-referred, as the glyphs
 // get it: the colormap's sRGB to scene-linear, then the display transform.
@@ -128,6 +79,13 @@ double LegendLayout::position(const ColorScale& scale, double value) const {
   return style.placement == LegendPlacement::right ? bar_y1 - u * (bar_y1 - bar_y0) : bar_x0 + u * (bar_x1 - bar_x0);
 }
 
+LegendLayout LegendLayout::shifted(double dx, double dy) const {
+  LegendLayout moved = *this;
+  moved.bar_x0 += dx, moved.bar_x1 += dx;
+  moved.bar_y0 += dy, moved.bar_y1 += dy;
+  return moved;
+}
+
 LegendLayout layout_legend(const ColorScale& scale, const std::string& title, const LegendStyle& style, int width,
                            int height) {
   LegendLayout l;
@@ -136,7 +94,7 @@ LegendLayout layout_legend(const ColorScale& scale, const std::string& title, co
   l.pixels_per_point = std::min(style.dpi / 72.0, std::min(width, height) / kFullSizePicture);
   const double p = l.pixels_per_point, font = style.font_size * p;
   l.ticks = scale.log ? log_ticks(scale.lo, scale.hi) : linear_ticks(scale.lo, scale.hi);
-  const Owned<cairo_t> cr = measuring_context();
+  const CairoOwned<cairo_t> cr = measuring_context();
   double label_w = 0.0, label_h = 0.0, title_w = 0.0, title_h = 0.0;
   for (const Tick& t : l.ticks.ticks) {
     double w, h;
@@ -181,31 +139,17 @@ void draw_legend(std::vector<float>& rgba, int width, int height, const LegendLa
 
   // The rest through Cairo, on a transparent layer over the legend's part
   // of the picture, composited over it.
-  const int left = right ? std::max(0, int(std::floor(width * (1.0 - l.reserved)))) : 0;
-  const int top = right ? 0 : std::max(0, int(std::floor(height * (1.0 - l.reserved))));
+  const int left = right ? std::max(0, int(std::floor(l.bar_x0 - 2.0 * l.pixels_per_point))) : 0;
+  const int top = right ? 0 : std::max(0, int(std::floor(l.bar_y0 - 2.0 * l.pixels_per_point)));
   const int w = width - left, h = height - top;
   if (w <= 0 || h <= 0) return;
-  Owned<cairo_surface_t> surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h));
+  CairoOwned<cairo_surface_t> surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h));
   {
-    const Owned<cairo_t> cr(cairo_create(surface.get()));
+    const CairoOwned<cairo_t> cr(cairo_create(surface.get()));
     cairo_translate(cr.get(), -left, -top);
     draw_annotations(cr.get(), l, scale, ink);
   }
-  cairo_surface_flush(surface.get());
-  const unsigned char* data = cairo_image_surface_get_data(surface.get());
-  const int stride = cairo_image_surface_get_stride(surface.get());
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      // Cairo's ARGB32: premultiplied, native-endian 32-bit words.
-      const std::uint32_t word = *reinterpret_cast<const std::uint32_t*>(data + y * stride + 4 * x);
-      const float a = float((word >> 24) & 0xff) / 255.0f;
-      if (a == 0.0f) continue;
-      const float src[3] = {float((word >> 16) & 0xff) / 255.0f, float((word >> 8) & 0xff) / 255.0f,
-                            float(word & 0xff) / 255.0f};
-      float* p = &rgba[(std::size_t(y + top) * std::size_t(width) + std::size_t(x + left)) * 4];
-      for (int c = 0; c < 3; ++c) p[c] = src[c] + (1.0f - a) * p[c];
-      p[3] = a + (1.0f - a) * p[3];
-    }
+  composite_layer(surface.get(), left, top, rgba, width, height);
 }
 
 void draw_legend(cairo_t* cr, const LegendLayout& l, const ColorScale& scale, const ColorManagement& color,

@@ -43,6 +43,8 @@ struct LegendLayout {
 
   // Where along the bar a value lies, in pixels.
   double position(const ColorScale& scale, double value) const;
+  // The same legend moved by (dx, dy) pixels (a panel's, into its figure).
+  LegendLayout shifted(double dx, double dy) const;
 };
 
 LegendLayout layout_legend(const ColorScale& scale, const std::string& title, const LegendStyle& style, int width,

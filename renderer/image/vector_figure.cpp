@@ -112,7 +112,7 @@ void write_vector_figure(const VectorFigure& f, const ColorManagement& color, co
   cairo_pattern_set_filter(cairo_get_source(cr), CAIRO_FILTER_NEAREST);  // the pixels as rendered
   cairo_paint(cr);
   cairo_surface_destroy(picture);
-  if (f.legend && f.scale) draw_legend(cr, *f.legend, *f.scale, color, f.ink);
+  if (f.annotations) draw_annotations(cr, *f.annotations, color);
   cairo_destroy(cr);
   cairo_surface_finish(page);
   const cairo_status_t status = cairo_surface_status(page);

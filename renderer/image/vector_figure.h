@@ -1,14 +1,14 @@
 #pragma once
 // A figure as a PDF or SVG page, the way journals ask for figures: the
 // rendered picture embedded as an image at its DPI (the page is as large
-// as the picture prints), and the legend over it as vector shapes and
-// text that stays sharp and searchable.
+// as the picture prints), and its annotations (colour bars, labels) over it
+// as vector shapes and text that stay sharp and searchable.
 
 #include <map>
 #include <string>
 #include <vector>
 
-#include "renderer/image/legend.h"
+#include "renderer/image/annotations.h"
 
 namespace hsb {
 
@@ -16,9 +16,7 @@ struct VectorFigure {
   const std::vector<float>* rgba = nullptr;  // display-referred, premultiplied
   int width = 0, height = 0;
   double dpi = 300.0;
-  const LegendLayout* legend = nullptr;      // none: no legend
-  const ColorScale* scale = nullptr;
-  float ink = 0.0f;
+  const Annotations* annotations = nullptr;  // legends and text, as vector shapes and text
   std::map<std::string, std::string> metadata;  // "Software", "ImageDescription", … (PDF only)
 };
 

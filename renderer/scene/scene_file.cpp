@@ -8,6 +8,7 @@
 #include "renderer/image/colormap.h"
 #include "renderer/image/image_output.h"
 #include "renderer/scene/scene_spec.h"
+#include "renderer/scene/toml_text.h"
 #include "renderer/scene/toml_reader.h"
 
 namespace hsb {
@@ -367,6 +368,39 @@ void read_render(TableReader& r, SceneSpec& spec) {
   r.finish();
 }
 
+void read_figure(TableReader& f, FigureSpec& spec) {
+  if (f.has("columns")) spec.columns = f.integer("columns", 1, 1, 16);
+  f.integer("columns", 1);  // a known key even when absent
+  spec.labels = f.boolean("labels", spec.labels);
+  spec.caption = f.string("caption", spec.caption);
+  f.finish();
+}
+
+// Each [[panel]]: its label, and every other key (dotted, or in sub-tables)
+// an override of the scene for that panel, checked when the panel is read.
+void read_panels(TableReader& top, const toml::table& root, std::vector<PanelSpec>& panels) {
+  top.allow("panel");
+  const toml::node* node = root.get("panel");
+  if (!node) return;
+  const toml::array* array = node->as_array();
+  if (!array || !array->is_array_of_tables()) top.fail_at("panel", "must be tables: [[panel]], one per panel");
+  if (array->size() > 26) top.fail_at("panel", "must be at most 26 panels, (a) to (z)");
+  for (const toml::node& element : *array) {
+    const toml::table& table = *element.as_table();
+    PanelSpec panel;
+    panel.line = int(table.source().begin.line);
+    for_each_leaf(table, "", [&](const std::string& path, const toml::node& value) {
+      if (path == "label") {
+        if (!value.is_string()) top.fail_at("panel", "label must be a string");
+        panel.label = value.as_string()->get();
+      } else {
+        panel.overrides.push_back(path + "=" + toml_text(value));
+      }
+    });
+    panels.push_back(std::move(panel));
+  }
+}
+
 void read_output(TableReader& o, OutputSpec& spec, const std::string& base_dir) {
   spec.file = o.optional_string("file");
   if (spec.file && !is_supported_image_path(*spec.file))
@@ -456,6 +490,8 @@ SceneSpec load_scene_text(const std::string& text, const std::string& path, cons
   if (auto r = top.table("render")) read_render(*r, spec);
   if (auto o = top.table("output")) read_output(*o, spec.output, base_dir);
   top.allow("sweep");  // read by the batch (renderer/app/batch.h), not here
+  if (auto f = top.table("figure")) read_figure(*f, spec.figure);
+  read_panels(top, root, spec.panels);
   top.finish();
   return spec;
 }

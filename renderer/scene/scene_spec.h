@@ -84,6 +84,20 @@ struct OutputSpec {
   std::optional<std::string> colorbar_title;  // automatic: named after glyphs.color_by
 };
 
+// A figure of several panels: the scene once per [[panel]], each with the
+// panel's keys over the scene's, laid out in a grid and labelled.
+struct PanelSpec {
+  std::string label;                   // after its letter: "(a) 4 sources"
+  std::vector<std::string> overrides;  // "key.path=value", as --set
+  int line = 0;                        // of its [[panel]] header, for errors
+};
+
+struct FigureSpec {
+  std::optional<int> columns;  // automatic: as near a square as the picture allows
+  bool labels = true;          // (a), (b), … at each panel's top left
+  std::string caption;         // under the panels; "" for none
+};
+
 struct SceneSpec {
   std::string path;  // the scene file, as given (or the data file a scene was made for)
   std::string base_dir;  // relative paths in it are relative to this
@@ -98,6 +112,8 @@ struct SceneSpec {
   ContextSpec context;
   RenderSpec render;
   OutputSpec output;
+  FigureSpec figure;
+  std::vector<PanelSpec> panels;  // none: a single picture
 };
 
 // Reads and validates a scene file. `overrides` are "key.path=value" strings

@@ -59,7 +59,8 @@ TEST_P(Golden, MatchesReviewedImage) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, Golden,
                          ::testing::Values("ellipsoids_at_seeds", "hyperstreamlines_quartic",
-                                           "union_of_ellipsoids", "cylinder_hyperstreamlines"),
+                                           "union_of_ellipsoids", "cylinder_hyperstreamlines",
+                                           "streamballs_double_glazing", "panels_along_a_curve"),
                          [](const ::testing::TestParamInfo<std::string>& param) { return param.param; });
 
 }  // namespace

@@ -15,6 +15,7 @@
 
 #include "renderer/app/prepared_scene.h"
 #include "renderer/app/render_job.h"
+#include "tests/renderer/command_output.h"
 
 namespace hsb {
 namespace {
@@ -148,16 +149,6 @@ TEST_F(FigureOutput, ExrHasTheLayersAFigureIsComposedFrom) {
   EXPECT_EQ(h->spec().channelformat(0), OIIO::TypeDesc::HALF);
 }
 
-// Runs `command`; its standard output.
-std::string output_of(const std::string& command) {
-  std::string out;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return out;
-  std::array<char, 4096> buffer;
-  while (std::fgets(buffer.data(), int(buffer.size()), pipe)) out += buffer.data();
-  pclose(pipe);
-  return out;
-}
 
 TEST_F(FigureOutput, PdfPrintsAtItsDpiWithTheLegendAsText) {
   const std::string path = scene(std::string(kPlate) + "[output]\nfile = \"x.pdf\"\ncolorbar_title = \"λ₃ (Pa)\"\n");

@@ -1,0 +1,148 @@
+#include "renderer/app/picture_output.h"
+
+#include <OpenImageIO/hash.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "renderer/image/display_image.h"
+#include "renderer/image/image_output.h"
+#include "renderer/image/vector_figure.h"
+
+#ifndef HSB_VERSION
+#define HSB_VERSION "unknown"
+#endif
+
+namespace hsb {
+namespace {
+
+std::string sha1_hex(const std::string& text) {
+  OIIO::SHA1 hash(text.data(), text.size());
+  return hash.digest();
+}
+
+// The SHA-1 of a file's bytes; "" when there is no file.
+std::string file_sha1(const std::string& path) {
+  if (path.empty()) return "";
+  std::ifstream in(path, std::ios::binary);
+  OIIO::SHA1 hash;
+  std::vector<char> buffer(1 << 20);
+  while (in) {
+    in.read(buffer.data(), std::streamsize(buffer.size()));
+    hash.append(buffer.data(), std::size_t(in.gcount()));
+  }
+  return hash.digest();
+}
+
+// The scene's text and overrides.
+std::string scene_text(const SceneSpec& spec) {
+  std::string text = spec.text;
+  for (const std::string& o : spec.overrides) text += "\n--set " + o;
+  return text;
+}
+
+// The file the picture's data comes from: a data file, or a source list.
+std::string data_file_of(const SceneSpec& spec) {
+  if (spec.pipeline.data.kind == DataKind::vtk_file) return spec.pipeline.data.file.path;
+  if (spec.pipeline.placement == SourcePlacement::list) return spec.pipeline.list_file;
+  return "";
+}
+
+}  // namespace
+
+std::string scene_sha1(const SceneSpec& spec) {
+  return sha1_hex(scene_text(spec) + "\n" + file_sha1(data_file_of(spec)));
+}
+
+std::string picture_description(const PreparedScene& prepared) {
+  const SceneSpec& spec = prepared.spec;
+  const ColorScale& scale = prepared.scale;
+  std::ostringstream description;
+  description << prepared.field.sources.size() << " sources, kernel " << kernel_name(spec.surface.kernel) << ", R "
+              << spec.surface.influence_radius << ", C " << spec.surface.isovalue << ", colour " << scale.map->name
+              << " [" << scale.lo << ", " << scale.hi << "]";
+  return description.str();
+}
+
+std::map<std::string, std::string> picture_metadata(const SceneSpec& spec, const std::string& description,
+                                                    const std::string& resolved, const ColorManagement& color) {
+  const std::string data_file = data_file_of(spec);
+  return {
+      {"Software", std::string("Hyperstreamball ") + HSB_VERSION},
+      {"ImageDescription",
+       "Hyperstreamball render of " + std::filesystem::path(spec.path).filename().string() + ": " + description},
+      {"hsb:scene", spec.path},
+      {"hsb:scene_text", scene_text(spec)},
+      {"hsb:scene_sha1", scene_sha1(spec)},
+      {"hsb:data_file", data_file},
+      {"hsb:data_sha1", file_sha1(data_file)},
+      {"hsb:resolved", resolved},
+      {"hsb:kernel", kernel_name(spec.surface.kernel)},
+      {"hsb:ocio", color.config_name() + " / " + color.display() + " / " + color.view()},
+  };
+}
+
+float legend_ink(const std::vector<float>& rgba, int width, int height, const LegendLayout& legend) {
+  return ink_over(rgba, width, std::clamp(int(legend.bar_x0) - 2, 0, width - 1),
+                  std::clamp(int(legend.bar_y0), 0, height - 1));
+}
+
+void write_display_picture(const std::string& path, std::vector<float> rgba, int width, int height,
+                           const Annotations& annotations, const OutputSettings& output,
+                           std::map<std::string, std::string> metadata, const ColorManagement& color) {
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+  if (is_vector_format(path)) {
+    const VectorFigure figure{&rgba, width, height, output.dpi, &annotations, std::move(metadata)};
+    write_vector_figure(figure, color, path);
+    return;
+  }
+  draw_annotations(rgba, width, height, annotations, color);
+  ImageToWrite image;
+  image.width = width;
+  image.height = height;
+  image.bit_depth = output.bit_depth;
+  image.dpi = output.dpi;
+  image.metadata = std::move(metadata);
+  image.pixels = std::move(rgba);
+  write_image(image, path);
+}
+
+void write_scene_linear_picture(const std::string& path, const Film& film, const OutputSettings& output,
+                                std::map<std::string, std::string> metadata) {
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+  ImageToWrite image;
+  image.width = film.width();
+  image.height = film.height();
+  const std::vector<Plane> planes = film.planes();
+  image.channels = 0;
+  for (Plane p : planes) {
+    const PlaneInfo& info = plane_info(p);
+    for (int c = 0; c < info.channels; ++c) {
+      if (p == Plane::id) image.integer_channels.push_back(image.channels);
+      image.channel_names.push_back(info.channel_names[std::size_t(c)]);
+      ++image.channels;
+    }
+  }
+  const std::size_t pixels = std::size_t(film.width()) * std::size_t(film.height());
+  image.pixels.resize(pixels * std::size_t(image.channels));
+  std::size_t offset = 0;
+  for (Plane p : planes) {
+    const std::vector<float>& data = film.data(p);
+    const std::size_t n = std::size_t(plane_info(p).channels);
+    for (std::size_t i = 0; i < pixels; ++i)
+      for (std::size_t c = 0; c < n; ++c) {
+        float v = data[i * n + c];
+        if (p == Plane::id) v += 1.0f;  // unsigned: 0 where no glyph, else the source's index + 1
+        image.pixels[i * std::size_t(image.channels) + offset + c] = v;
+      }
+    offset += n;
+  }
+  image.bit_depth = output.bit_depth;
+  image.dpi = output.dpi;
+  image.metadata = std::move(metadata);
+  write_image(image, path);
+}
+
+}  // namespace hsb
