@@ -136,6 +136,23 @@ TEST(Flows, ColourByANamedArrayOfTheFile) {
   for (const GlyphSource& s : speed->glyphs.sources) EXPECT_DOUBLE_EQ(s.radii.x(), s.radii.z());
 }
 
+TEST(Flows, TensorGlyphsColouredByAnotherArray) {
+  // The cantilever's stress glyphs coloured by its displacement (a
+  // 3-component array: by its magnitude), largest at the free tip x = 1.
+  const auto p = prepared("[data]\nfile = \"" + (source_dir / "scenes/data/generated/beam_bending.vtu").string() +
+                          "\"\n[glyphs]\ncolor_by = \"array:displacement\"\n");
+  EXPECT_FALSE(p->glyphs.flow);
+  const GlyphSource* tip = nullptr;
+  const GlyphSource* root = nullptr;
+  for (const GlyphSource& s : p->glyphs.sources) {
+    if (!tip || s.centre.x() > tip->centre.x()) tip = &s;
+    if (!root || s.centre.x() < root->centre.x()) root = &s;
+  }
+  ASSERT_TRUE(tip && root);
+  EXPECT_GT(tip->scalar, 3e-3);   // the tip moves 4 mm
+  EXPECT_LT(root->scalar, 5e-4);  // the clamped end hardly at all
+}
+
 TEST(Flows, ColoursTheDataCannotGiveAreErrors) {
   const std::string data = "[data]\nfile = \"" + kGlazing + "\"\n";
   EXPECT_THROW(prepared(data + "[glyphs]\ncolor_by = \"lambda3\"\n"), DataError);
