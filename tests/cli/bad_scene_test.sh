@@ -1,11 +1,7 @@
 #!/usr/bin/env bash
 # hsb render on bad input: one clear file:line:column error, a non-zero exit,
 # no image left behind, and the other scenes of the batch still rendered.
-set -uo pipefail
-hsb=$1
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "$0")/common.sh"
 
 cat > "$work/bad.toml" <<'TOML'
 [seeds]
@@ -44,7 +40,6 @@ grep -q "render.width must be" "$work/err" || fail "unexpected message: $(cat "$
 "$hsb" render "$work/missing.toml" -o "$work/out" 2> "$work/err"
 [[ $? -ne 0 ]] || fail "exit status 0 for a missing scene"
 # info and export on the project's real data.
-src=$(cd "$(dirname "$0")/../.." && pwd)
 "$hsb" info "$src/scenes/data/cylinder_stress_coarse.vtu" > "$work/info" 2>&1 || fail "info: $(cat "$work/info")"
 grep -q "10784 vtkTetra" "$work/info" || fail "info lacks the cell types: $(cat "$work/info")"
 grep -q "stress\" (9 components, point data)" "$work/info" || fail "info lacks the tensors: $(cat "$work/info")"

@@ -4,12 +4,7 @@
 # shards (the shards' union is the batch, each image once); --skip-existing;
 # interruption (SIGINT, SIGTERM: stops at once, no temporary file, an old
 # image intact); a full disk (an error, no file); progress and --quiet.
-set -uo pipefail
-hsb=$1
-src=$(cd "$(dirname "$0")/../.." && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "$0")/common.sh"
 small=(--set render.width=48 --set render.height=48 --set render.samples=1)
 
 # --- A batch of every shipped scene plus broken ones.

@@ -3,12 +3,7 @@
 # automatic values with hsb info, save them as a scene, render that: the
 # same pixels (the metadata names the other scene). Export works on the
 # file too.
-set -uo pipefail
-hsb=$1
-src=$(cd "$(dirname "$0")/../.." && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "$0")/common.sh"
 
 cp "$src/scenes/data/generated/plate_with_hole_mm_pa.vtu" "$work/plate.vtu"
 cd "$work"
