@@ -63,12 +63,11 @@ ColorScale shared_scale(const std::vector<std::unique_ptr<PreparedScene>>& panel
 
 bool share_colour_bar(const std::vector<std::unique_ptr<PreparedScene>>& panels) {
   const PreparedScene& first = *panels.front();
-  if (!first.spec.output.colorbar) return false;
   return std::all_of(panels.begin(), panels.end(), [&](const auto& p) {
     return p->glyphs.color == first.glyphs.color && p->spec.color.map == first.spec.color.map &&
            p->spec.color.log == first.spec.color.log &&
            p->spec.pipeline.data.file.color_array == first.spec.pipeline.data.file.color_array &&
-           p->spec.color.range.has_value() == first.spec.color.range.has_value() && p->spec.output.colorbar;
+           p->spec.color.range.has_value() == first.spec.color.range.has_value();
   });
 }
 
@@ -128,8 +127,9 @@ RenderSummary render_panel_figure(SceneSpec figure, const std::string& image_pat
     }
   };
   const int area_height = std::max(1, int(height - caption_height));
-  prepare(width / columns, area_height / rows, true);
-  const bool shared = share_colour_bar(panels);
+  const bool bars = figure.output.colorbar;
+  prepare(width / columns, area_height / rows, bars);
+  const bool shared = bars && share_colour_bar(panels);
   double reserved_right = 0.0, reserved_bottom = 0.0;
   std::optional<LegendLayout> bar;
   if (shared) {

@@ -69,11 +69,24 @@ Vec3 automatic_view(const Box3& data) {
 
 CameraSpec frame_camera(const CameraRequest& request, const Box3& framed, int width, int height,
                         const PictureReserve& reserve) {
+  const std::array<Vec3, 8> c = corners(framed);
+  return frame_camera(request, std::vector<Vec3>(c.begin(), c.end()), width, height, reserve);
+}
+
+CameraSpec frame_camera(const CameraRequest& request, const std::vector<Vec3>& framed_points, int width, int height,
+                        const PictureReserve& reserve) {
   // Something to frame even when nothing is drawn.
-  Box3 box = framed;
+  Box3 box{Vec3::Constant(INFINITY), Vec3::Constant(-INFINITY)};
+  for (const Vec3& p : framed_points)
+    if (p.allFinite()) box = {box.lo.cwiseMin(p), box.hi.cwiseMax(p)};
+  std::vector<Vec3> points;
+  for (const Vec3& p : framed_points)
+    if (p.allFinite()) points.push_back(p);
   if (!(box.diagonal() > 0.0) || !box.lo.allFinite() || !box.hi.allFinite()) {
     const Vec3 c = box.centre().allFinite() ? box.centre() : Vec3::Zero();
     box = {c - Vec3::Constant(0.5), c + Vec3::Constant(0.5)};
+    const std::array<Vec3, 8> k = corners(box);
+    points.assign(k.begin(), k.end());
   }
   CameraSpec camera;
   camera.projection = request.projection;
@@ -88,7 +101,6 @@ CameraSpec frame_camera(const CameraRequest& request, const Box3& framed, int wi
   const Vec3 forward = -view;
   const Vec3 right = forward.cross(camera.up).normalized();
   const Vec3 up = right.cross(forward);
-  const std::array<Vec3, 8> points = corners(box);
   const bool recentre = !request.look_at;
   Vec3 target = request.look_at.value_or(box.centre());
 
@@ -138,8 +150,8 @@ CameraSpec frame_camera(const CameraRequest& request, const Box3& framed, int wi
 
   // Corners in the camera's frame about the target: r along `right`, u
   // along `up`, f along `forward`; the camera stands at (P_r, P_u, P_f).
-  std::array<Vec3, 8> c;
-  for (std::size_t i = 0; i < 8; ++i) {
+  std::vector<Vec3> c(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
     const Vec3 q = points[i] - target;
     c[i] = Vec3(q.dot(right), q.dot(up), q.dot(forward));
   }
@@ -152,11 +164,16 @@ CameraSpec frame_camera(const CameraRequest& request, const Box3& framed, int wi
     // c_r,i − hi (c_f,i − P_f) ≤ c_r,j − lo (c_f,j − P_f): a bound on P_f.
     // The largest P_f fits the box as closely as the window allows; P_r
     // and P_u then take the middle of what stays possible, centring it.
+    // The minimum over pairs separates: min over j of (c_j − lo f_j) less
+    // the max over i of (c_i − hi f_i), so many points cost no more than
+    // a few.
     const auto closest = [&](int axis, double lo, double hi) {
-      double best = INFINITY;
-      for (const Vec3& i : c)
-        for (const Vec3& j : c) best = std::min(best, (j[axis] - i[axis] - lo * j.z() + hi * i.z()) / (hi - lo));
-      return best;
+      double min_j = INFINITY, max_i = -INFINITY;
+      for (const Vec3& p : c) {
+        min_j = std::min(min_j, p[axis] - lo * p.z());
+        max_i = std::max(max_i, p[axis] - hi * p.z());
+      }
+      return (min_j - max_i) / (hi - lo);
     };
     const auto middle = [&](int axis, double lo, double hi) {
       double from = -INFINITY, to = INFINITY;

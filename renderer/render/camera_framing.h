@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "field/box3.h"
 #include "renderer/render/camera.h"
@@ -59,6 +60,10 @@ struct PictureReserve {
 // (perspective: the distance along the view; orthographic: the view
 // height), centred in it.
 CameraSpec frame_camera(const CameraRequest& request, const Box3& box, int width, int height,
+                        const PictureReserve& reserve = {});
+// The same framing `points` (all of them seen, the picture fitted to
+// their extent), for shapes a box would frame loosely.
+CameraSpec frame_camera(const CameraRequest& request, const std::vector<Vec3>& points, int width, int height,
                         const PictureReserve& reserve = {});
 
 }  // namespace hsb
