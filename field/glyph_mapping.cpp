@@ -37,6 +37,20 @@ Vec3 map_radii(const Vec3& eigenvalues, const GlyphMapping& mapping) {
   return radii.cwiseMax(mapping.floor);
 }
 
+const char* color_scalar_name(ColorScalar c) {
+  switch (c) {
+    case ColorScalar::lambda1: return "lambda1";
+    case ColorScalar::lambda2: return "lambda2";
+    case ColorScalar::lambda3: return "lambda3";
+    case ColorScalar::mean: return "mean";
+    case ColorScalar::von_mises: return "von_mises";
+    case ColorScalar::speed: return "speed";
+    case ColorScalar::array: return "array";
+    case ColorScalar::arc_length: return "arc_length";
+  }
+  return "?";
+}
+
 double color_scalar(const Vec3& eigenvalues, ColorScalar which) {
   const double l1 = eigenvalues(0), l2 = eigenvalues(1), l3 = eigenvalues(2);
   switch (which) {

@@ -33,6 +33,10 @@ enum class ColorScalar { lambda1, lambda2, lambda3, mean, von_mises, speed, arra
 // Radii r_1, r_2, r_3 for eigenvalues λ1 ≥ λ2 ≥ λ3.
 Vec3 map_radii(const Vec3& eigenvalues, const GlyphMapping& mapping);
 
+// The name a scene file gives `which` ("lambda3", "speed"; "array" is
+// written "array:NAME" there).
+const char* color_scalar_name(ColorScalar which);
+
 // The scalars that follow from the eigenvalues (a flow source's are its
 // speed three times); 0 for array and arc_length, which the caller sets.
 double color_scalar(const Vec3& eigenvalues, ColorScalar which);

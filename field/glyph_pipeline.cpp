@@ -141,20 +141,6 @@ void warn_about_the_result(GlyphScene& scene, std::size_t seeds) {
 
 namespace {
 
-const char* color_name(ColorScalar c) {
-  switch (c) {
-    case ColorScalar::lambda1: return "lambda1";
-    case ColorScalar::lambda2: return "lambda2";
-    case ColorScalar::lambda3: return "lambda3";
-    case ColorScalar::mean: return "mean";
-    case ColorScalar::von_mises: return "von_mises";
-    case ColorScalar::speed: return "speed";
-    case ColorScalar::array: return "array";
-    case ColorScalar::arc_length: return "arc_length";
-  }
-  return "?";
-}
-
 // The colour scalar, resolved: λ3 for tensors and the speed for a flow by
 // default; one that the data cannot give is an error.
 ColorScalar resolve_color(const GlyphPipelineSpec& spec, const LoadedField& loaded) {
@@ -164,7 +150,7 @@ ColorScalar resolve_color(const GlyphPipelineSpec& spec, const LoadedField& load
   const bool eigen = c == ColorScalar::lambda1 || c == ColorScalar::lambda2 || c == ColorScalar::lambda3 ||
                      c == ColorScalar::mean || c == ColorScalar::von_mises;
   if (flow && eigen)
-    throw DataError(file + ": glyphs.color_by = \"" + color_name(c) +
+    throw DataError(file + ": glyphs.color_by = \"" + color_scalar_name(c) +
                     "\" needs tensors, and this file is read as a flow (vectors): colour by \"speed\" or "
                     "\"array:NAME\"");
   if (!flow && c == ColorScalar::speed)
@@ -258,12 +244,12 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent)
       scene.trajectories[i] = flow ? trace_streamline(*flow, seeds[i], values.trajectory)
                                    : trace_trajectory(*tensors, seeds[i], values.trajectory);
     });
-    double sources = 0.0;
-    for (const Trajectory& t : scene.trajectories) sources += double(source_count(t, values.spacing));
+    double count = 0.0;
+    for (const Trajectory& t : scene.trajectories) count += double(source_count(t, values.spacing));
     std::ostringstream what;
-    what << "the glyph sources (" << std::size_t(sources) << " of them along " << seeds.size()
+    what << "the glyph sources (" << std::size_t(count) << " of them along " << seeds.size()
          << " trajectories at glyphs.spacing " << values.spacing << ")";
-    check_memory(sources * kBytesPerSource, what.str(), "raise glyphs.spacing");
+    check_memory(count * kBytesPerSource, what.str(), "raise glyphs.spacing");
     std::vector<std::vector<GlyphSource>> per_seed(seeds.size());
     tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t i) {
       per_seed[i] = place_sources(scene.trajectories[i], values.spacing, make);

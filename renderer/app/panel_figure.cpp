@@ -23,12 +23,6 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// Points to pixels as the colour bar does: at the DPI, or less on a small
-// picture (legend.h).
-double pixels_per_point(const SceneSpec& spec, int width, int height) {
-  return std::min(spec.output.dpi / 72.0, std::min(width, height) / 180.0);
-}
-
 std::string panel_letter(std::size_t i) { return std::string("(") + char('a' + int(i)) + ")"; }
 
 // Each panel's scene: the figure's with the panel's keys, errors naming the
@@ -103,7 +97,7 @@ RenderSummary render_panel_figure(SceneSpec figure, const std::string& image_pat
   const ColorManagement color = scene_color_management(figure);
 
   // The text: labels at each panel's top left, the caption under all.
-  const double point = pixels_per_point(figure, width, height);
+  const double point = legend_pixels_per_point(figure.output.dpi, width, height);
   const double font = figure.output.font_size * point;
   double caption_height = 0.0;
   if (!figure.figure.caption.empty()) {

@@ -50,11 +50,14 @@ std::string data_file_of(const SceneSpec& spec) {
   return "";
 }
 
+// The scene hash from the data file's, so the file is read once.
+std::string scene_sha1(const SceneSpec& spec, const std::string& data_sha1) {
+  return sha1_hex(scene_text(spec) + "\n" + data_sha1);
+}
+
 }  // namespace
 
-std::string scene_sha1(const SceneSpec& spec) {
-  return sha1_hex(scene_text(spec) + "\n" + file_sha1(data_file_of(spec)));
-}
+std::string scene_sha1(const SceneSpec& spec) { return scene_sha1(spec, file_sha1(data_file_of(spec))); }
 
 std::string picture_description(const PreparedScene& prepared) {
   const SceneSpec& spec = prepared.spec;
@@ -69,15 +72,16 @@ std::string picture_description(const PreparedScene& prepared) {
 std::map<std::string, std::string> picture_metadata(const SceneSpec& spec, const std::string& description,
                                                     const std::string& resolved, const ColorManagement& color) {
   const std::string data_file = data_file_of(spec);
+  const std::string data_sha1 = file_sha1(data_file);
   return {
       {"Software", std::string("Hyperstreamball ") + HSB_VERSION},
       {"ImageDescription",
        "Hyperstreamball render of " + std::filesystem::path(spec.path).filename().string() + ": " + description},
       {"hsb:scene", spec.path},
       {"hsb:scene_text", scene_text(spec)},
-      {"hsb:scene_sha1", scene_sha1(spec)},
+      {"hsb:scene_sha1", scene_sha1(spec, data_sha1)},
       {"hsb:data_file", data_file},
-      {"hsb:data_sha1", file_sha1(data_file)},
+      {"hsb:data_sha1", data_sha1},
       {"hsb:resolved", resolved},
       {"hsb:kernel", kernel_name(spec.surface.kernel)},
       {"hsb:ocio", color.config_name() + " / " + color.display() + " / " + color.view()},

@@ -44,7 +44,7 @@ std::string pinned_scene_toml(const PreparedScene& p) {
     pin(!s.pipeline.size.scale, "glyphs", "scale", v.mapping.scale);
     pin(!s.pipeline.size.floor, "glyphs", "floor", v.mapping.floor);
     pin(!s.pipeline.size.ceiling, "glyphs", "ceiling", v.mapping.ceiling);
-    pin(!s.pipeline.color, "glyphs", "color_by", p.glyphs.color == ColorScalar::speed ? "speed" : "lambda3");
+    pin(!s.pipeline.color, "glyphs", "color_by", color_scalar_name(p.glyphs.color));
   }
   pin(!s.color.range, "color", "range", toml::array{p.scale.lo, p.scale.hi});
   // The camera is pinned whole: position and look_at make view and frame moot.

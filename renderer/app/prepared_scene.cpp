@@ -66,8 +66,8 @@ ColorScale color_scale(const ColorSpec& spec, const std::vector<GlyphSource>& so
 }
 
 void add_corners(const Box3& b, std::vector<Vec3>& points) {
-  for (int i = 0; i < 8; ++i)
-    points.emplace_back(i & 1 ? b.hi.x() : b.lo.x(), i & 2 ? b.hi.y() : b.lo.y(), i & 4 ? b.hi.z() : b.lo.z());
+  const std::array<Vec3, 8> c = b.corners();
+  points.insert(points.end(), c.begin(), c.end());
 }
 
 // Points on each glyph the camera frames: the tips of its axes and the

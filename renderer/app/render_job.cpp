@@ -31,8 +31,8 @@ RenderSummary run_render_job(const RenderJob& job) {
   };
   report(JobStage::preparing, 0.0);
   SceneSpec loaded = load_scene_or_data_file(job.scene_path, job.overrides);
-  const std::string image_path =
-      (std::filesystem::path(job.output_dir) / file_for_variant(output_file_name(loaded), job.variant)).string();
+  const std::string file = file_for_variant(output_file_name(loaded), job.variant);
+  const std::string image_path = (std::filesystem::path(job.output_dir) / file).string();
   if (job.skip_existing && stored_scene_sha1(image_path) == scene_sha1(loaded)) {
     RenderSummary skipped;
     skipped.image_path = image_path;
@@ -43,7 +43,7 @@ RenderSummary run_render_job(const RenderJob& job) {
 
   const ColorManagement color = scene_color_management(loaded);
   const std::unique_ptr<PreparedScene> prepared = prepare_scene(std::move(loaded), color);
-  prepared->output.file = file_for_variant(prepared->output.file, job.variant);
+  prepared->output.file = file;
   const OutputSettings& output = prepared->output;
 
   static const EmbreeDevice device;

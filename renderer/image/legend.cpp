@@ -79,6 +79,10 @@ double LegendLayout::position(const ColorScale& scale, double value) const {
   return style.placement == LegendPlacement::right ? bar_y1 - u * (bar_y1 - bar_y0) : bar_x0 + u * (bar_x1 - bar_x0);
 }
 
+double legend_pixels_per_point(double dpi, int width, int height) {
+  return std::min(dpi / 72.0, std::min(width, height) / kFullSizePicture);
+}
+
 LegendLayout LegendLayout::shifted(double dx, double dy) const {
   LegendLayout moved = *this;
   moved.bar_x0 += dx, moved.bar_x1 += dx;
@@ -91,7 +95,7 @@ LegendLayout layout_legend(const ColorScale& scale, const std::string& title, co
   LegendLayout l;
   l.style = style;
   l.title = title;
-  l.pixels_per_point = std::min(style.dpi / 72.0, std::min(width, height) / kFullSizePicture);
+  l.pixels_per_point = legend_pixels_per_point(style.dpi, width, height);
   const double p = l.pixels_per_point, font = style.font_size * p;
   l.ticks = scale.log ? log_ticks(scale.lo, scale.hi) : linear_ticks(scale.lo, scale.hi);
   const CairoOwned<cairo_t> cr = measuring_context();

@@ -47,6 +47,11 @@ struct LegendLayout {
   LegendLayout shifted(double dx, double dy) const;
 };
 
+// Pixels a point takes in a width × height picture at `dpi`: dpi/72, or
+// less on a picture under 2.5 inches, where the legend (and a figure's
+// labels) scale with the picture.
+double legend_pixels_per_point(double dpi, int width, int height);
+
 LegendLayout layout_legend(const ColorScale& scale, const std::string& title, const LegendStyle& style, int width,
                            int height);
 

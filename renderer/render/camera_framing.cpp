@@ -25,12 +25,6 @@ const std::array<NamedView, 7>& views() {
   return table;
 }
 
-std::array<Vec3, 8> corners(const Box3& b) {
-  std::array<Vec3, 8> c;
-  for (int i = 0; i < 8; ++i)
-    c[std::size_t(i)] = Vec3(i & 1 ? b.hi.x() : b.lo.x(), i & 2 ? b.hi.y() : b.lo.y(), i & 4 ? b.hi.z() : b.lo.z());
-  return c;
-}
 
 }  // namespace
 
@@ -69,7 +63,7 @@ Vec3 automatic_view(const Box3& data) {
 
 CameraSpec frame_camera(const CameraRequest& request, const Box3& framed, int width, int height,
                         const PictureReserve& reserve) {
-  const std::array<Vec3, 8> c = corners(framed);
+  const std::array<Vec3, 8> c = framed.corners();
   return frame_camera(request, std::vector<Vec3>(c.begin(), c.end()), width, height, reserve);
 }
 
@@ -85,7 +79,7 @@ CameraSpec frame_camera(const CameraRequest& request, const std::vector<Vec3>& f
   if (!(box.diagonal() > 0.0) || !box.lo.allFinite() || !box.hi.allFinite()) {
     const Vec3 c = box.centre().allFinite() ? box.centre() : Vec3::Zero();
     box = {c - Vec3::Constant(0.5), c + Vec3::Constant(0.5)};
-    const std::array<Vec3, 8> k = corners(box);
+    const std::array<Vec3, 8> k = box.corners();
     points.assign(k.begin(), k.end());
   }
   CameraSpec camera;

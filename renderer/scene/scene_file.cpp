@@ -214,11 +214,11 @@ void read_glyphs(TableReader& g, GlyphPipelineSpec& spec, const std::string& bas
     spec.color = ColorScalar::array;
     spec.data.file.color_array = name;
   } else if (g.has("color_by")) {
-    spec.color = g.choice("color_by", ColorScalar::lambda3,
-                          {{"lambda1", ColorScalar::lambda1}, {"lambda2", ColorScalar::lambda2},
-                           {"lambda3", ColorScalar::lambda3}, {"mean", ColorScalar::mean},
-                           {"von_mises", ColorScalar::von_mises}, {"speed", ColorScalar::speed},
-                           {"arc_length", ColorScalar::arc_length}});
+    std::vector<std::pair<std::string, ColorScalar>> names;
+    for (ColorScalar c : {ColorScalar::lambda1, ColorScalar::lambda2, ColorScalar::lambda3, ColorScalar::mean,
+                          ColorScalar::von_mises, ColorScalar::speed, ColorScalar::arc_length})
+      names.emplace_back(color_scalar_name(c), c);
+    spec.color = g.choice("color_by", ColorScalar::lambda3, names);
   }
   g.finish();
   if (size.floor && size.ceiling && *size.ceiling < *size.floor) g.fail_at("ceiling", "must be >= glyphs.floor");
