@@ -61,7 +61,7 @@ const CellWeights* MeshLocator::locate(const Vec3& x) const {
   w.points.resize(n);
   w.weights.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    w.points[i] = s.cell->GetPointId(vtkIdType(i));
+    w.points[i] = s.cell->GetPointId(int(i));
     w.weights[i] = s.vtk_weights[i];
   }
   return &w;

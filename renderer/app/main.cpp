@@ -212,9 +212,9 @@ int main(int argc, char** argv) {
   if (*info) {
     return for_each(info_inputs, "inputs", [&](std::size_t i) {
       const std::string& input = info_inputs[i];
-      std::vector<std::string> overrides = info_overrides;
-      if (!info_array.empty()) overrides.push_back("data.array=" + info_array);
-      hsb::SceneSpec spec = hsb::load_scene_or_data_file(input, overrides);
+      std::vector<std::string> with_array = info_overrides;
+      if (!info_array.empty()) with_array.push_back("data.array=" + info_array);
+      hsb::SceneSpec spec = hsb::load_scene_or_data_file(input, with_array);
       std::istringstream description(hsb::describe_data(spec.pipeline.data));
       for (std::string line; std::getline(description, line);) std::printf("# %s\n", line.c_str());
       const hsb::ColorManagement color = scene_color_management(spec);

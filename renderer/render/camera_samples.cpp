@@ -44,7 +44,8 @@ class OcclusionBatch {
       auto* rays = reinterpret_cast<RTCRayHitN*>(&packet);
       for (int i = 0; i < count; ++i) {
         const Pending& r = key_[first + std::size_t(i)];
-        set_embree_ray(rays, kMaxPacket, unsigned(i), r.origin, r.direction, 0.0f, r.tfar, RayScene::kShadowRayMask);
+        set_embree_ray(rays, kMaxPacket, unsigned(i), r.origin, r.direction, 0.0f, float(r.tfar),
+                       RayScene::kShadowRayMask);
         valid[i] = -1;
       }
       rtcOccluded16(valid, scene.get(), &context.embree, &packet.ray);
@@ -173,7 +174,7 @@ void trace_camera_samples(const RayScene& scene, const ShadingSpec& shading, dou
   tracer.primary_rays += unsigned(count);
 
   // What each ray met, and the occlusion rays that shading it needs.
-  enum class Met { nothing, ground, glyph, context };
+  enum class Met { nothing, ground, glyph, context_only };
   Met met[kMaxPacket];
   Vec3 facing[kMaxPacket], ground[kMaxPacket];
   Visibility visibility[kMaxPacket];
@@ -194,7 +195,7 @@ void trace_camera_samples(const RayScene& scene, const ShadingSpec& shading, dou
     s.alpha = 1.0f;
     if (id != scene.field_id()) {
       // Box edges and trajectory tubes: round, lit by the key light alone.
-      met[i] = Met::context;
+      met[i] = Met::context_only;
       s.depth = primary.ray.tfar[i];
       const Vec3 n = Vec3(primary.hit.Ng_x[i], primary.hit.Ng_y[i], primary.hit.Ng_z[i]).normalized();
       const Rgb& base = id == scene.box_id() ? shading.box_color : shading.trajectory_color;

@@ -20,7 +20,7 @@ double blackman_harris(double d) {
 class WindowTable {
  public:
   WindowTable() {
-    for (std::size_t i = 0; i < kEntries; ++i) table_[i] = blackman_harris(-kFilterRadius + i * kStep);
+    for (std::size_t i = 0; i < kEntries; ++i) table_[i] = blackman_harris(-kFilterRadius + double(i) * kStep);
   }
   double operator()(double d) const {
     const double x = (d + kFilterRadius) / kStep;

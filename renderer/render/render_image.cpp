@@ -109,7 +109,7 @@ void gather_pixel(int x, int y, const RenderSettings& settings, int per_pixel, S
       if (nx < 0 || nx >= settings.width) continue;
       const CameraSample* samples = rows.pixel(nx, ny);
       for (int k = 0; k < per_pixel; ++k) {
-        const double w = filter_weight(dx + samples[k].x - 0.5, dy + samples[k].y - 0.5);
+        const double w = filter_weight(float(dx) + samples[k].x - 0.5, float(dy) + samples[k].y - 0.5);
         if (w == 0.0) continue;
         const CameraSample& s = samples[k];
         for (int c = 0; c < 3; ++c) color[c] += w * s.color[std::size_t(c)];
