@@ -142,16 +142,20 @@ bool FieldUpperBound::proves_rest_below(double level, double start, const std::v
   // is at most one ulp of the starting total per update.
   const double ahead = ahead_sum_ + double(ahead_updates_) * kEpsilon * ahead_total_;
   if (ahead >= level) return false;
-  double now, error;
-  if (engage(start, spans, active)) {
-    bound_on(start, start, now, error);
-  } else {
-    now = error = 0.0;
-    for (const std::uint32_t i : active) now += kernel_value(kernel_->kind, spans[i].g(start));
+  // `ahead` holds the peak of every source still approaching, active or
+  // not yet entered. An active source past its closest approach only falls
+  // from here on: its value now bounds the rest of its support. Counting
+  // only those (not the whole running sum, which would count the
+  // approaching ones twice) lets a ray leaving a crowd stop its walk as
+  // soon as the sources it is moving away from have fallen far enough.
+  double receding = 0.0;
+  for (const std::uint32_t i : active) {
+    const RaySpan& s = spans[i];
+    if (s.t_c <= start) receding += kernel_value(kernel_->kind, s.g(start));
   }
-  // Active sources still approaching count twice (now and at their peak):
-  // looser, never wrong.
-  return now + error + ahead < level;
+  // A sum of positive values and their own roundings: a few ulps each.
+  const double rounding = (double(active.size()) + 4.0) * kEpsilon * receding;
+  return receding + rounding + ahead < level;
 }
 
 }  // namespace hsb
