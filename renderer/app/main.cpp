@@ -53,6 +53,18 @@ void install_signal_handlers() {
   if (sigaction(SIGHUP, nullptr, &hangup) == 0 && hangup.sa_handler != SIG_IGN) sigaction(SIGHUP, &action, nullptr);
 }
 
+// What the rays of one kind cost inside the blob field, per ray that
+// reached it.
+void print_trace_stats(const char* kind, const hsb::TraceStats& stats) {
+  const double field_rays = double(std::max<std::uint64_t>(1, stats.field_rays));
+  std::printf("  %s rays into the field %llu: per ray %.2f span queries testing %.1f influence boxes,\n"
+              "    %.2f support intervals, %.2f segments, %.2f field evaluations, %.1f kernel evaluations\n",
+              kind, (unsigned long long)stats.field_rays, double(stats.span_queries) / field_rays,
+              double(stats.span_candidates) / field_rays, double(stats.spans) / field_rays,
+              double(stats.segments) / field_rays, double(stats.field_evaluations) / field_rays,
+              double(stats.kernel_evaluations) / field_rays);
+}
+
 void print_summary(const hsb::RenderSummary& s, bool with_stats) {
   for (const std::string& warning : s.warnings) std::fprintf(stderr, "hsb: warning: %s\n", warning.c_str());
   const double rays = double(s.primary_rays + s.shadow_rays);
@@ -61,21 +73,16 @@ void print_summary(const hsb::RenderSummary& s, bool with_stats) {
               s.image_path.c_str(), s.sources, s.trajectories, s.total_seconds, s.build_seconds,
               s.render_seconds, s.output_seconds, mrays);
   if (with_stats) {
-    const double field_rays = double(std::max<std::uint64_t>(1, s.stats.field_rays));
-    std::printf("  primary rays %llu (%.2f Mrays/s), shadow rays %llu (%.2f Mrays/s), rays into the field %llu\n",
+    std::printf("  primary rays %llu (%.2f Mrays/s), shadow rays %llu (%.2f Mrays/s)\n",
                 (unsigned long long)s.primary_rays, s.primary_mrays_per_second,
-                (unsigned long long)s.shadow_rays, s.shadow_mrays_per_second,
-                (unsigned long long)s.stats.field_rays);
-    std::printf("  per field ray: %.2f span queries testing %.1f influence boxes\n",
-                double(s.stats.span_queries) / field_rays, double(s.stats.span_candidates) / field_rays);
-    std::printf("  per field ray: %.2f support intervals, %.2f field evaluations, %.1f kernel evaluations\n",
-                double(s.stats.spans) / field_rays, double(s.stats.field_evaluations) / field_rays,
-                double(s.stats.kernel_evaluations) / field_rays);
+                (unsigned long long)s.shadow_rays, s.shadow_mrays_per_second);
+    print_trace_stats("camera", s.stats);
+    print_trace_stats("shadow", s.shadow_stats);
     const double peak = hsb::peak_resident_bytes();
     std::printf("  peak memory %.0f MB (%.0f bytes per source, the film and program included)\n", peak * 1e-6,
                 peak / double(std::max<std::size_t>(1, s.sources)));
-    if (s.stats.step_limit_hits)
-      std::printf("  rays that hit the step limit: %llu\n", (unsigned long long)s.stats.step_limit_hits);
+    const std::uint64_t gave_up = s.stats.step_limit_hits + s.shadow_stats.step_limit_hits;
+    if (gave_up) std::printf("  rays that hit the step limit: %llu\n", (unsigned long long)gave_up);
   }
   std::fflush(stdout);
 }

@@ -178,6 +178,7 @@ RenderSummary render_panel_figure(SceneSpec figure, const std::string& image_pat
     summary.primary_rays += out.primary_rays;
     summary.shadow_rays += out.shadow_rays;
     summary.stats += out.stats;
+    summary.shadow_stats += out.shadow_stats;
     for (const std::string& w : p.warnings) summary.warnings.push_back(panel_letter(i) + " " + w);
     resolved << "# panel " << panel_letter(i) << "\n" << pinned_scene_toml(p) << "\n";
   }

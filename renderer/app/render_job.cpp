@@ -87,6 +87,7 @@ RenderSummary run_render_job(const RenderJob& job) {
   summary.primary_mrays_per_second = rendered.primary_mrays_per_second();
   summary.shadow_mrays_per_second = rendered.shadow_mrays_per_second();
   summary.stats = rendered.stats;
+  summary.shadow_stats = rendered.shadow_stats;
   return summary;
 }
 

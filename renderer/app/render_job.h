@@ -36,7 +36,7 @@ struct RenderSummary {
   double total_seconds = 0.0;
   std::uint64_t primary_rays = 0, shadow_rays = 0;
   double primary_mrays_per_second = 0.0, shadow_mrays_per_second = 0.0;
-  TraceStats stats;
+  TraceStats stats, shadow_stats;  // camera rays; shadow and occlusion rays
   std::vector<std::string> warnings;  // about the data; the image is still complete
 };
 

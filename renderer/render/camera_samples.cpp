@@ -20,7 +20,8 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 // key light leave nearby points in nearly one direction: they share BVH
 // traversals as 16-ray packets. Ambient rays scatter over the hemisphere,
 // where a packet's lanes would mostly wait for each other (twice as slow
-// over fig06's cap): they go one at a time.
+// over fig06's cap): they go one at a time, or against a list of the
+// sources around them (ambient_rays.h).
 class OcclusionBatch {
  public:
   void add(const Vec3& origin, const Vec3& direction, double tfar, int lane, double weight, bool ambient) {
@@ -29,13 +30,8 @@ class OcclusionBatch {
 
   void trace(const RayScene& scene, SampleTracer& tracer, Visibility* visibility) {
     const auto start = Clock::now();
-    FieldRayContext context(tracer.tracers, tracer.stats);
-    for (const Pending& r : ambient_) {
-      RTCRayHit rh = make_embree_ray(r.origin, r.direction, 0.0f, float(r.tfar));
-      rh.ray.mask = RayScene::kShadowRayMask;
-      rtcOccluded1(scene.get(), &context.embree, &rh.ray);
-      if (rh.ray.tfar >= 0.0f) visibility[r.lane].ambient += r.weight;  // not blocked
-    }
+    FieldRayContext context(tracer.tracers, tracer.shadow_stats);
+    trace_ambient(scene, tracer, visibility);
     context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
     for (std::size_t first = 0; first < key_.size(); first += kMaxPacket) {
       const int count = int(std::min<std::size_t>(kMaxPacket, key_.size() - first));
@@ -58,9 +54,25 @@ class OcclusionBatch {
     tracer.shadow_seconds += seconds_since(start);
     key_.clear();
     ambient_.clear();
+    crowd_sum_ = crowd_points_ = 0;
+  }
+
+  // A glyph hit that sends ambient rays: how many sources overlap there.
+  void note_crowd(std::uint32_t crowd) {
+    crowd_sum_ += crowd;
+    ++crowd_points_;
   }
 
  private:
+  void trace_ambient(const RayScene& scene, SampleTracer& tracer, Visibility* visibility) {
+    rays_.clear();
+    for (const Pending& r : ambient_) rays_.push_back({r.origin, r.direction, 0.0, r.tfar});
+    const double crowd = crowd_points_ ? double(crowd_sum_) / double(crowd_points_) : 0.0;
+    tracer.ambient.trace(scene, rays_, crowd, tracer.tracers[0], tracer.shadow_stats, blocked_);
+    for (std::size_t i = 0; i < ambient_.size(); ++i)
+      if (!blocked_[i]) visibility[ambient_[i].lane].ambient += ambient_[i].weight;
+  }
+
   struct Pending {
     Vec3 origin, direction;
     double tfar;
@@ -68,6 +80,9 @@ class OcclusionBatch {
     double weight;
   };
   std::vector<Pending> key_, ambient_;
+  std::vector<RayInterval> rays_;
+  std::vector<std::uint8_t> blocked_;
+  std::uint64_t crowd_sum_ = 0, crowd_points_ = 0;
 };
 
 // Point k of the n a camera sample takes, stratified over all the n·samples
@@ -220,7 +235,10 @@ void trace_camera_samples(const RayScene& scene, const ShadingSpec& shading, dou
       add_key_rays(shading, job, x, facing[i], shadow_offset, i, batch);
     else if (!shading.shadows)
       visibility[i].key = 1.0;
-    if (shading.ao_samples > 0) add_ambient_rays(shading, job, x, facing[i], shadow_offset, i, batch);
+    if (shading.ao_samples > 0) {
+      add_ambient_rays(shading, job, x, facing[i], shadow_offset, i, batch);
+      batch.note_crowd(surface.crowd);
+    }
   }
   batch.trace(scene, tracer, visibility);
 

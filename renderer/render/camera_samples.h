@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 
+#include "renderer/render/ambient_rays.h"
 #include "renderer/render/camera.h"
 #include "renderer/render/ray_scene.h"
 #include "renderer/render/shading.h"
@@ -26,7 +27,9 @@ struct CameraSample {
 // Per-thread scratch and counters.
 struct SampleTracer {
   FieldRayLanes tracers;
-  TraceStats stats;
+  AmbientRays ambient;
+  TraceStats stats;         // camera rays
+  TraceStats shadow_stats;  // key-light shadow and ambient occlusion rays
   std::uint64_t primary_rays = 0, shadow_rays = 0;
   double primary_seconds = 0.0, shadow_seconds = 0.0;
 };

@@ -163,7 +163,7 @@ RenderOutput render_image(const RayScene& scene, const CameraSpec& camera_spec, 
   const int n = std::max(1, settings.samples);
   const int per_pixel = n * n;
 
-  RenderOutput out{Film(settings.width, settings.height, settings.planes), {}, 0, 0, 0.0};
+  RenderOutput out{Film(settings.width, settings.height, settings.planes)};
   tbb::enumerable_thread_specific<SampleTracer> tracers;
   SampleRows rows(settings.width, per_pixel, kBand + 2 * kFilterReach);
 
@@ -181,6 +181,7 @@ RenderOutput render_image(const RayScene& scene, const CameraSpec& camera_spec, 
 
   for (const SampleTracer& t : tracers) {
     out.stats += t.stats;
+    out.shadow_stats += t.shadow_stats;
     out.primary_rays += t.primary_rays;
     out.shadow_rays += t.shadow_rays;
     out.primary_seconds += t.primary_seconds;

@@ -37,7 +37,8 @@ struct RenderSettings {
 
 struct RenderOutput {
   Film film;
-  TraceStats stats;
+  TraceStats stats;         // camera rays (and the shell's layers)
+  TraceStats shadow_stats;  // key-light shadow and ambient occlusion rays
   std::uint64_t primary_rays = 0;
   std::uint64_t shadow_rays = 0;  // key-light shadows and ambient occlusion
   double seconds = 0.0;

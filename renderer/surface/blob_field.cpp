@@ -63,11 +63,7 @@ Box3 influence_bounds(const BlobSource& s) {
 Box3 influence_bounds(const BlobField& field) {
   if (field.sources.empty()) return {};
   Box3 all = influence_bounds(field.sources.front());
-  for (const BlobSource& s : field.sources) {
-    const Box3 b = influence_bounds(s);
-    all.lo = all.lo.cwiseMin(b.lo);
-    all.hi = all.hi.cwiseMax(b.hi);
-  }
+  for (const BlobSource& s : field.sources) all.extend(influence_bounds(s));
   return all;
 }
 

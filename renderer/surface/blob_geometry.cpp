@@ -1,5 +1,6 @@
 #include "renderer/surface/blob_geometry.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -9,6 +10,7 @@
 #include <utility>
 
 #include "renderer/surface/embree_ray.h"
+#include "renderer/surface/spatial_rank.h"
 
 namespace hsb {
 namespace {
@@ -39,21 +41,6 @@ void check_device(RTCDevice device, const char* what) {
   if (error != RTC_ERROR_NONE)
     throw std::runtime_error(std::string("Embree error ") + std::to_string(int(error)) + " while " +
                              what);
-}
-
-// The parameter interval where the ray o + t d is inside `box`, intersected
-// with [tmin, tmax]; empty (lo > hi) when it misses.
-std::pair<double, double> clip_to_box(const Box3& box, const Vec3& o, const Vec3& d, double tmin, double tmax) {
-  double lo = tmin, hi = tmax;
-  for (int k = 0; k < 3; ++k) {
-    const double inv = 1.0 / d[k];  // ±inf for an axis-parallel ray: the slab test still works
-    double a = (box.lo[k] - o[k]) * inv, b = (box.hi[k] - o[k]) * inv;
-    if (a > b) std::swap(a, b);
-    if (!(a <= b)) continue;  // NaN: the ray lies in the slab's plane
-    lo = std::max(lo, a);
-    hi = std::min(hi, b);
-  }
-  return {lo, hi};
 }
 
 // The active lanes of a callback's ray packet, gathered in lane order.
@@ -100,6 +87,7 @@ BlobGeometry::BlobGeometry(RTCDevice device, const BlobField& field, const Trace
       settings_(settings),
       bounds_(influence_bounds(field)),
       first_window_(2.0 * mean_influence_diagonal(field)),
+      rank_(spatial_ranks(field, bounds_)),
       device_(device) {
   span_scene_ = rtcNewScene(device_);
   // Up to a few hundred thousand sources the best BVH costs nothing
@@ -150,6 +138,15 @@ void BlobGeometry::span_bounds(const RTCBoundsFunctionArguments* args) {
 void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
   auto* query = reinterpret_cast<SpanQueryContext*>(args->context);
   const int n = int(args->N);
+  if (n == 1) {  // a lone ray (rtcIntersect1): no lanes to gather
+    ++query->candidates;
+    const RayLanes& r = query->rays;
+    RaySpan span;
+    if (ray_span(query->field->sources[args->primID], args->primID, Vec3(r.ox[0], r.oy[0], r.oz[0]),
+                 Vec3(r.dx[0], r.dy[0], r.dz[0]), r.tmin[0], r.tmax[0], span))
+      query->tracers[0].spans.push_back(span);
+    return;
+  }
   unsigned valid = 0;
   for (int i = 0; i < n; ++i) valid |= unsigned(args->valid[i] != 0) << i;
   query->candidates += unsigned(__builtin_popcount(valid));
@@ -227,7 +224,7 @@ void BlobGeometry::first_crossings(const RayInterval* rays, int count, FieldRay*
   for (int i = 0; i < count; ++i) {
     ++stats.field_rays;
     hits[i] = -1.0;
-    const auto [t, end] = clip_to_box(bounds_, rays[i].origin, rays[i].direction, rays[i].tmin, rays[i].tmax);
+    const auto [t, end] = ray_interval_in(bounds_, rays[i].origin, rays[i].direction, rays[i].tmin, rays[i].tmax);
     window[i] = {rays[i].origin, rays[i].direction, t, t};
     t_end[i] = end;
     length[i] = first_window_ / rays[i].direction.norm();  // in units of t
@@ -254,6 +251,89 @@ void BlobGeometry::first_crossings(const RayInterval* rays, int count, FieldRay*
       if (!(window[i].tmin < t_end[i])) looking &= ~bit;
     }
   }
+}
+
+namespace {
+
+// The point query that gather_nearby() runs: Embree calls back for every
+// source whose bounds come within the radius of the region's centre; the
+// box test settles which of them meet the region.
+struct NearbyQuery {
+  const BlobField* field;
+  Box3 region;
+  std::size_t limit;
+  std::vector<std::uint32_t>* found;
+  bool overflow = false;
+};
+
+bool nearby_candidate(RTCPointQueryFunctionArguments* args) {
+  auto* q = static_cast<NearbyQuery*>(args->userPtr);
+  if (q->overflow) return false;
+  if (!influence_bounds(q->field->sources[args->primID]).overlaps(q->region)) return false;
+  if (q->found->size() == q->limit) {
+    // Too many to be worth it: shrink the query to nothing so the
+    // traversal ends soon.
+    q->overflow = true;
+    args->query->radius = 0.0f;
+    return true;
+  }
+  q->found->push_back(args->primID);
+  return false;
+}
+
+}  // namespace
+
+bool BlobGeometry::gather_nearby(const Box3& region, std::size_t limit, NearbySources& nearby,
+                                 std::vector<std::uint32_t>& scratch) const {
+  nearby.clear();
+  scratch.clear();
+  NearbyQuery q{&field_, region, limit, &scratch};
+  const Vec3 centre = region.centre();
+  RTCPointQuery query;
+  query.x = float(centre.x());
+  query.y = float(centre.y());
+  query.z = float(centre.z());
+  query.time = 0.0f;
+  // The sphere around the box, a hair larger so float rounding never culls
+  // a source that meets the box.
+  query.radius = std::nextafter(float(0.5 * region.diagonal() * (1.0 + 1e-6)), INFINITY);
+  RTCPointQueryContext context;
+  rtcInitPointQueryContext(&context);
+  rtcPointQuery(span_scene_, &query, &context, nearby_candidate, &q);
+  if (q.overflow) return false;
+  // Rank order, whatever order the traversal met them in: groups of
+  // neighbours for the list's boxes, and the order first_crossing_in_order()
+  // puts its spans in.
+  std::sort(scratch.begin(), scratch.end(), [&](std::uint32_t a, std::uint32_t b) { return rank_[a] < rank_[b]; });
+  for (const std::uint32_t i : scratch) nearby.add(field_.sources[i], i);
+  return true;
+}
+
+double BlobGeometry::first_crossing_near(const NearbySources& nearby, const RayInterval& ray, FieldRay& tracer,
+                                         TraceStats& stats, CrossingQuery query) const {
+  ++stats.field_rays;
+  tracer.spans.clear();
+  const auto [t, end] = ray_interval_in(bounds_, ray.origin, ray.direction, ray.tmin, ray.tmax);
+  if (!(t < end)) return -1.0;
+  nearby.collect_spans(ray.origin, ray.direction, t, end, tracer.spans);
+  stats.span_candidates += nearby.size();
+  if (tracer.spans.empty()) return -1.0;
+  return tracer.first_crossing(field_, t, end, settings_, stats, query);
+}
+
+double BlobGeometry::first_crossing_in_order(const RayInterval& ray, FieldRay& tracer, TraceStats& stats,
+                                             CrossingQuery query) const {
+  ++stats.field_rays;
+  tracer.spans.clear();
+  const auto [t, end] = ray_interval_in(bounds_, ray.origin, ray.direction, ray.tmin, ray.tmax);
+  if (!(t < end)) return -1.0;
+  const RayInterval clipped{ray.origin, ray.direction, t, end};
+  ++stats.span_queries;
+  stats.span_candidates += query_spans(&clipped, &tracer, 1u);
+  if (tracer.spans.empty()) return -1.0;
+  std::sort(tracer.spans.begin(), tracer.spans.end(),
+            [&](const RaySpan& x, const RaySpan& y) { return rank_[x.source] < rank_[y.source]; });
+  return tracer.first_crossing(field_, t, end, settings_, stats, query);
 }
 
 void BlobGeometry::field_bounds(const RTCBoundsFunctionArguments* args) {

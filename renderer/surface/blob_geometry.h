@@ -16,6 +16,7 @@
 
 #include "renderer/surface/blob_field.h"
 #include "renderer/surface/field_ray.h"
+#include "renderer/surface/nearby_sources.h"
 
 namespace hsb {
 
@@ -75,6 +76,24 @@ class BlobGeometry {
   void first_crossings(const RayInterval* rays, int count, FieldRay* tracers, TraceStats& stats,
                        double* hits, CrossingQuery query = CrossingQuery::first) const;
 
+  // Lists in `nearby` every source whose influence box meets `region`, in
+  // spatial rank order, from one query of the span BVH. Returns false, with
+  // `nearby` incomplete, when more than `limit` do.
+  bool gather_nearby(const Box3& region, std::size_t limit, NearbySources& nearby,
+                     std::vector<std::uint32_t>& scratch) const;
+
+  // first_crossings for one ray that stays inside the region `nearby` was
+  // gathered for: the same answer, with the BVH traversal replaced by a
+  // SIMD pass over the list.
+  double first_crossing_near(const NearbySources& nearby, const RayInterval& ray, FieldRay& tracer,
+                             TraceStats& stats, CrossingQuery query = CrossingQuery::first) const;
+
+  // The same answer by one traversal of the span BVH, its spans put in
+  // spatial rank order first, as first_crossing_near() has them: either way a ray
+  // gets the same spans in the same order, so the same result to the bit.
+  double first_crossing_in_order(const RayInterval& ray, FieldRay& tracer, TraceStats& stats,
+                                 CrossingQuery query = CrossingQuery::first) const;
+
  private:
   static void span_bounds(const RTCBoundsFunctionArguments* args);
   static void span_intersect(const RTCIntersectFunctionNArguments* args);
@@ -89,6 +108,7 @@ class BlobGeometry {
   TraceSettings settings_;
   Box3 bounds_;
   double first_window_;  // length of the first query window along a ray
+  std::vector<std::uint32_t> rank_;  // each source's spatial rank (spatial_rank.h)
   RTCDevice device_;
   RTCScene span_scene_ = nullptr;
 };

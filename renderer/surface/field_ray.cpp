@@ -166,6 +166,7 @@ SurfaceSample FieldRay::surface_at(const BlobField& field, const Vec3& origin,
     const double g = q.squaredNorm();
     const double k = kernel_value(field.kernel, g);
     if (k <= 0.0) continue;
+    ++sample.crowd;
     const Vec3 grad_g = 2.0 * (w.transpose() * q);
     const Vec3 source_color(s.color[0], s.color[1], s.color[2]);
     const bool strongest = k > best;

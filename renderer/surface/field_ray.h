@@ -41,6 +41,7 @@ struct SurfaceSample {
   std::array<float, 3> color{0, 0, 0};   // influence-weighted, scene-linear
   float scalar = 0.0f;                   // influence-weighted colour scalar
   std::uint32_t source = 0;              // the source contributing most
+  std::uint32_t crowd = 0;               // how many sources contribute here
 };
 
 // Scratch space for one ray at a time; keep one per thread and reuse it so

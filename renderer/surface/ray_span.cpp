@@ -4,6 +4,71 @@
 
 namespace hsb {
 
+namespace {
+
+// One source against one ray, in two stages. The first, with no division
+// or root, decides whether the ray's line enters the support at all; a
+// lone ray stops there for the many boxes it crosses without meeting their
+// ellipsoids. Branch-free, so that the loops below vectorise, over rays or
+// over sources.
+struct ScaledRay {
+  double a;        // |W d|²
+  double half_b;   // (W d)·(W (o − c))
+  double a_g_min;  // a · g at the closest approach
+  bool line_enters() const { return (a > 0.0) & (a_g_min < a); }  // false for NaN and a = 0
+};
+
+inline ScaledRay scaled_ray(const double (&w)[9], double cx, double cy, double cz, double ox, double oy, double oz,
+                            double dx, double dy, double dz) {
+  // In the source's scaled frame q(t) = W(o − c) + t W d, and g = |q|².
+  const double px = ox - cx, py = oy - cy, pz = oz - cz;
+  const double wp0 = w[0] * px + w[1] * py + w[2] * pz;
+  const double wp1 = w[3] * px + w[4] * py + w[5] * pz;
+  const double wp2 = w[6] * px + w[7] * py + w[8] * pz;
+  const double wd0 = w[0] * dx + w[1] * dy + w[2] * dz;
+  const double wd1 = w[3] * dx + w[4] * dy + w[5] * dz;
+  const double wd2 = w[6] * dx + w[7] * dy + w[8] * dz;
+  // g(t) = a t² + 2 half_b t + |Wp|², smallest at t_c = −half_b/a, where
+  // a·g = |Wp|²|Wd|² − (Wp·Wd)² = |Wp × Wd|² (Lagrange's identity). The
+  // cross product keeps it accurate when the camera is far from a small
+  // glyph, where |Wp|² − half_b²/a would cancel catastrophically.
+  const double x0 = wp1 * wd2 - wp2 * wd1, x1 = wp2 * wd0 - wp0 * wd2, x2 = wp0 * wd1 - wp1 * wd0;
+  return {wd0 * wd0 + wd1 * wd1 + wd2 * wd2, wd0 * wp0 + wd1 * wp1 + wd2 * wp2, x0 * x0 + x1 * x1 + x2 * x2};
+}
+
+struct LaneSpan {
+  double t0, t1, a, t_c, g_min;
+  bool enters;
+};
+
+// The second stage: the support's interval on the ray, clipped to [tmin, tmax].
+inline LaneSpan finish_span(const ScaledRay& r, double tmin, double tmax) {
+  // One division for three quotients: SIMD division is slow.
+  const double inv_a = 1.0 / r.a;
+  const double tc = -r.half_b * inv_a;
+  const double g_min = r.a_g_min * inv_a;
+  const double reach = (1.0 - g_min) * inv_a;  // (half the support's length)²
+  const double half_width = std::sqrt(reach > 0.0 ? reach : 0.0);
+  const double t0 = tc - half_width > tmin ? tc - half_width : tmin;
+  const double t1 = tc + half_width < tmax ? tc + half_width : tmax;
+  return {t0, t1, r.a, tc, g_min, bool(r.line_enters() & (g_min < 1.0) & (t0 < t1))};
+}
+
+inline LaneSpan span_on_lane(const double (&w)[9], double cx, double cy, double cz, double ox, double oy,
+                             double oz, double dx, double dy, double dz, double tmin, double tmax) {
+  return finish_span(scaled_ray(w, cx, cy, cz, ox, oy, oz, dx, dy, dz), tmin, tmax);
+}
+
+inline void store(const LaneSpan& span, SpanLanes& spans, int i) {
+  spans.t0[i] = span.t0;
+  spans.t1[i] = span.t1;
+  spans.a[i] = span.a;
+  spans.t_c[i] = span.t_c;
+  spans.g_min[i] = span.g_min;
+}
+
+}  // namespace
+
 // The span BVH's callback spends most of a render here, one source against
 // a packet of rays. The lane loop has no branches so the compiler turns it
 // into SIMD; the clones let one portable binary use AVX-512 or AVX2 where
@@ -15,47 +80,46 @@ unsigned ray_spans(const BlobSource& s, const RayLanes& __restrict rays, int cou
   const double cx = s.centre[0], cy = s.centre[1], cz = s.centre[2];
   std::int64_t inside[kMaxPacket];  // as wide as a double, so the loop keeps one vector width
   for (int i = 0; i < count; ++i) {
-    // In the source's scaled frame q(t) = W(o − c) + t W d, and g = |q|².
-    const double px = rays.ox[i] - cx, py = rays.oy[i] - cy, pz = rays.oz[i] - cz;
-    const double wp0 = w[0] * px + w[1] * py + w[2] * pz;
-    const double wp1 = w[3] * px + w[4] * py + w[5] * pz;
-    const double wp2 = w[6] * px + w[7] * py + w[8] * pz;
-    const double wd0 = w[0] * rays.dx[i] + w[1] * rays.dy[i] + w[2] * rays.dz[i];
-    const double wd1 = w[3] * rays.dx[i] + w[4] * rays.dy[i] + w[5] * rays.dz[i];
-    const double wd2 = w[6] * rays.dx[i] + w[7] * rays.dy[i] + w[8] * rays.dz[i];
-    const double a = wd0 * wd0 + wd1 * wd1 + wd2 * wd2;
-    const double half_b = wd0 * wp0 + wd1 * wp1 + wd2 * wp2;
-    // g(t) = a t² + 2 half_b t + |Wp|². Whether the ray enters at all is
-    // decided by g at the closest approach t_c; it is computed as |q(t_c)|²
-    // rather than |Wp|² − half_b²/a, which cancels catastrophically when the
-    // camera is far from a small glyph.
-    const double tc = -half_b / a;
-    const double q0 = wp0 + tc * wd0, q1 = wp1 + tc * wd1, q2 = wp2 + tc * wd2;
-    const double g_min = q0 * q0 + q1 * q1 + q2 * q2;
-    const double reach = (1.0 - g_min) / a;  // (half the support's length)²
-    const double half_width = std::sqrt(reach > 0.0 ? reach : 0.0);
-    const double t0 = tc - half_width > rays.tmin[i] ? tc - half_width : rays.tmin[i];
-    const double t1 = tc + half_width < rays.tmax[i] ? tc + half_width : rays.tmax[i];
-    spans.t0[i] = t0;
-    spans.t1[i] = t1;
-    spans.a[i] = a;
-    spans.t_c[i] = tc;
-    spans.g_min[i] = g_min;
-    // Comparisons that are false for NaN: a = 0 (no direction) never enters.
-    inside[i] = std::int64_t((a > 0.0) & (g_min < 1.0) & (t0 < t1));
+    const LaneSpan span = span_on_lane(w, cx, cy, cz, rays.ox[i], rays.oy[i], rays.oz[i], rays.dx[i], rays.dy[i],
+                                       rays.dz[i], rays.tmin[i], rays.tmax[i]);
+    store(span, spans, i);
+    inside[i] = span.enters;
   }
   unsigned mask = 0;
   for (int i = 0; i < count; ++i) mask |= unsigned(inside[i]) << i;
   return mask;
 }
 
+// The same formula the other way round: one ray against a packet of
+// sources (a bundle of short rays tested against the sources near them).
+__attribute__((target_clones("avx512f", "avx2", "default")))
+unsigned source_spans(const SourceLanes& __restrict sources, const Vec3& o, const Vec3& d, double tmin, double tmax,
+                      SpanLanes& __restrict spans) {
+  const double ox = o.x(), oy = o.y(), oz = o.z(), dx = d.x(), dy = d.y(), dz = d.z();
+  std::int64_t inside[kMaxPacket];
+  for (int i = 0; i < kMaxPacket; ++i) {  // all lanes: unused ones hold a source that never matches
+    const double w[9] = {sources.w[0][i], sources.w[1][i], sources.w[2][i], sources.w[3][i], sources.w[4][i],
+                         sources.w[5][i], sources.w[6][i], sources.w[7][i], sources.w[8][i]};
+    const LaneSpan span = span_on_lane(w, sources.c[0][i], sources.c[1][i], sources.c[2][i], ox, oy, oz, dx, dy, dz,
+                                       tmin, tmax);
+    store(span, spans, i);
+    inside[i] = span.enters;
+  }
+  unsigned mask = 0;
+  for (int i = 0; i < kMaxPacket; ++i) mask |= unsigned(inside[i]) << i;
+  return mask & ((1u << sources.count) - 1u);
+}
+
 bool ray_span(const BlobSource& s, std::uint32_t index, const Vec3& o, const Vec3& d, double tmin,
               double tmax, RaySpan& span) {
-  RayLanes ray;
-  ray.set(0, o, d, tmin, tmax);
-  SpanLanes lanes;
-  if (!ray_spans(s, ray, 1, lanes)) return false;
-  span = RaySpan{lanes.t0[0], lanes.t1[0], lanes.a[0], lanes.t_c[0], lanes.g_min[0], index};
+  // Scalar: a lone ray would pay more for the packet version's dispatch and
+  // lane set-up than it saves.
+  const double w[9] = {s.w[0], s.w[1], s.w[2], s.w[3], s.w[4], s.w[5], s.w[6], s.w[7], s.w[8]};
+  const ScaledRay r = scaled_ray(w, s.centre[0], s.centre[1], s.centre[2], o.x(), o.y(), o.z(), d.x(), d.y(), d.z());
+  if (!r.line_enters()) return false;
+  const LaneSpan lane = finish_span(r, tmin, tmax);
+  if (!lane.enters) return false;
+  span = RaySpan{lane.t0, lane.t1, lane.a, lane.t_c, lane.g_min, index};
   return true;
 }
 

@@ -48,6 +48,21 @@ struct SpanLanes {
 };
 unsigned ray_spans(const BlobSource& s, const RayLanes& rays, int count, SpanLanes& spans);
 
+// Up to kMaxPacket sources as structure of arrays, W's rows and the centres
+// in double: one ray is tested against all of them in SIMD lanes.
+struct SourceLanes {
+  alignas(64) double w[9][kMaxPacket];
+  alignas(64) double c[3][kMaxPacket];
+  std::uint32_t index[kMaxPacket];
+  int count = 0;  // lanes [0, count) hold sources
+};
+
+// The spans of the ray o + t d, t ∈ [tmin, tmax], on the sources of
+// `sources`: lane i of `spans` is source i's. Returns a bit mask of the
+// sources whose support the ray enters.
+unsigned source_spans(const SourceLanes& sources, const Vec3& o, const Vec3& d, double tmin, double tmax,
+                      SpanLanes& spans);
+
 // The same for one ray: fills `span` and returns true when the ray enters
 // the support of `s`.
 bool ray_span(const BlobSource& s, std::uint32_t index, const Vec3& o, const Vec3& d, double tmin,

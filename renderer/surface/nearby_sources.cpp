@@ -1,0 +1,44 @@
+#include "renderer/surface/nearby_sources.h"
+
+namespace hsb {
+
+void NearbySources::clear() {
+  used_chunks_ = 0;
+  size_ = 0;
+}
+
+void NearbySources::add(const BlobSource& source, std::uint32_t index) {
+  if (size_ == used_chunks_ * kMaxPacket) {
+    if (used_chunks_ == chunks_.size()) {
+      chunks_.emplace_back();
+      chunk_bounds_.emplace_back();
+    }
+    // Empty lanes hold W = 0: no ray enters them, and no NaN or denormal
+    // slows the lane arithmetic down.
+    chunks_[used_chunks_] = SourceLanes{};
+    chunk_bounds_[used_chunks_++] = influence_bounds(source);
+  }
+  chunk_bounds_[used_chunks_ - 1].extend(influence_bounds(source));
+  SourceLanes& chunk = chunks_[used_chunks_ - 1];
+  const int lane = chunk.count++;
+  for (int k = 0; k < 9; ++k) chunk.w[k][lane] = source.w[std::size_t(k)];
+  for (int k = 0; k < 3; ++k) chunk.c[k][lane] = source.centre[std::size_t(k)];
+  chunk.index[lane] = index;
+  ++size_;
+}
+
+void NearbySources::collect_spans(const Vec3& o, const Vec3& d, double tmin, double tmax,
+                                  std::vector<RaySpan>& spans) const {
+  SpanLanes lanes;
+  for (std::size_t c = 0; c < used_chunks_; ++c) {
+    const auto [t0, t1] = ray_interval_in(chunk_bounds_[c], o, d, tmin, tmax);
+    if (!(t0 <= t1)) continue;
+    const SourceLanes& chunk = chunks_[c];
+    for (unsigned entered = source_spans(chunk, o, d, tmin, tmax, lanes); entered; entered &= entered - 1) {
+      const int i = __builtin_ctz(entered);
+      spans.push_back(RaySpan{lanes.t0[i], lanes.t1[i], lanes.a[i], lanes.t_c[i], lanes.g_min[i], chunk.index[i]});
+    }
+  }
+}
+
+}  // namespace hsb
