@@ -13,7 +13,11 @@ namespace {
 // The automatic lengths of the renderer, as fractions of the data's size D
 // or of a median glyph's size.
 constexpr double kBoxRadiusPerDiagonal = 1.0 / 500.0;
-constexpr double kShadowOffsetPerDiagonal = 1e-5;
+// Shadow and occlusion rays start this many pixels off the surface (at the
+// depth of what is framed): far below anything a picture shows, and far
+// enough out that a ray leaving a dense crowd of sources, where the field
+// starts just under C, is soon proven clear of it.
+constexpr double kShadowOffsetPerPixel = 0.1;
 constexpr double kMinStepPerDiagonal = 1e-6;
 constexpr double kTubePerGlyph = 0.2;
 constexpr double kOcclusionPerGlyph = 4.0;
@@ -287,7 +291,6 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   check_memory(kBytesPerPixel * p.render.width * p.render.height, picture.str(),
                "lower render.width and render.height (or output.print_size or output.dpi)");
   p.render.samples = s.render.samples;
-  p.render.shadow_offset = s.render.shadow_offset.value_or(kShadowOffsetPerDiagonal * diagonal);
   // Exact wherever it applies: it was the faster of the two over the
   // figure scenes, and exact; blinn summed has no polynomial form.
   p.trace.intersector = s.render.intersector.value_or(
@@ -311,6 +314,14 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   if (!camera.view) camera.view = automatic_view(domain);
   const std::vector<Vec3> framed = framed_points(s.camera.frame, p, extent);
   p.camera = frame_camera(camera, framed, p.render.width, p.render.height, reserve);
+  Box3 drawn = domain;
+  if (!framed.empty()) {
+    drawn = {framed.front(), framed.front()};
+    for (const Vec3& point : framed) drawn.extend({point, point});
+  }
+  p.render.shadow_offset =
+      s.render.shadow_offset.value_or(kShadowOffsetPerPixel * Camera(p.camera, p.render.width, p.render.height)
+                                                                    .pixel_size_at(drawn.centre()));
   p.shading.ground = s.context.ground;
   double lowest = INFINITY;
   for (const Vec3& point : framed) lowest = std::min(lowest, point.z());

@@ -28,4 +28,10 @@ CameraRay Camera::ray(double x, double y) const {
   return {origin_, (forward_ + sx * right_ + sy * down_).normalized()};
 }
 
+double Camera::pixel_size_at(const Vec3& point) const {
+  const double at_unit_depth = 2.0 * half_height_ / frame_height_;
+  if (projection_ == Projection::orthographic) return at_unit_depth;
+  return at_unit_depth * std::fabs((point - origin_).dot(forward_));
+}
+
 }  // namespace hsb

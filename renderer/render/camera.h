@@ -36,6 +36,10 @@ class Camera {
   // camera's position.
   CameraRay ray(double x, double y) const;
 
+  // The side of a pixel, in world units, at `point`: at its depth along
+  // the view for a perspective camera, everywhere for an orthographic one.
+  double pixel_size_at(const Vec3& point) const;
+
  private:
   Vec3 origin_, forward_, right_, down_;
   double half_height_, half_width_;  // of the frame; perspective: tangents; orthographic: lengths

@@ -139,3 +139,40 @@ TEST(CameraFraming, AnEmptyBoxStillGivesACamera) {
 
 }  // namespace
 }  // namespace hsb
+
+namespace hsb {
+namespace {
+
+// Where the ray through image position (x, y) meets the plane facing the
+// camera at `depth` along `forward` from `eye`.
+Vec3 on_plane(const Camera& camera, const Vec3& eye, const Vec3& forward, double depth, double x, double y) {
+  const CameraRay r = camera.ray(x, y);
+  const Vec3 o = r.origin, d = r.direction;
+  return o + ((depth - (o - eye).dot(forward)) / d.dot(forward)) * d;
+}
+
+// A pixel's size at a point is the spacing of neighbouring pixels' rays in
+// the plane through the point, facing the camera.
+TEST(Camera, PixelSizeIsTheSpacingOfNeighbouringRaysAtThatDepth) {
+  for (const Projection projection : {Projection::perspective, Projection::orthographic}) {
+    CameraSpec spec;
+    spec.projection = projection;
+    spec.position = Vec3(3, -5, 2);
+    spec.look_at = Vec3(0.2, 0.1, -0.3);
+    spec.fov_degrees = 35;
+    spec.height = 2.5;
+    spec.frame_width = 0.8;  // a legend's place on the right
+    const Camera camera(spec, 300, 200);
+    const Vec3 forward = (spec.look_at - spec.position).normalized();
+    const Vec3 point = spec.position + 4.0 * forward + Vec3(0.3, -0.2, 0.1);
+    const double depth = (point - spec.position).dot(forward);
+    const Vec3 here = on_plane(camera, spec.position, forward, depth, 120, 100);
+    const double across = (on_plane(camera, spec.position, forward, depth, 121, 100) - here).norm();
+    const double down = (on_plane(camera, spec.position, forward, depth, 120, 101) - here).norm();
+    EXPECT_NEAR(camera.pixel_size_at(point), across, 1e-9 * across);
+    EXPECT_NEAR(camera.pixel_size_at(point), down, 1e-9 * down);
+  }
+}
+
+}  // namespace
+}  // namespace hsb
