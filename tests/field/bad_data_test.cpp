@@ -13,6 +13,7 @@
 
 #include "field/data_error.h"
 #include "field/vtk_data.h"
+#include "tests/temp_dir.h"
 
 namespace hsb {
 namespace {
@@ -84,7 +85,7 @@ std::string tetrahedron_vtu(const std::string& points, bool active) {
 class BadData : public ::testing::Test {
  protected:
   fs::path write(const std::string& name, const std::string& text) {
-    const fs::path dir = fs::temp_directory_path() / "hsb_bad_data";
+    const fs::path dir = test_temp_dir("bad_data");
     fs::create_directories(dir);
     const fs::path path = dir / name;
     std::ofstream(path, std::ios::binary) << text;
@@ -209,7 +210,7 @@ TEST_F(BadData, RandomBytesWithAVtkExtension) {
 }
 
 TEST_F(BadData, ADirectoryNamedLikeADataFile) {
-  const fs::path dir = fs::temp_directory_path() / "hsb_bad_data" / "folder.vtu";
+  const fs::path dir = test_temp_dir("bad_data") / "folder.vtu";
   fs::create_directories(dir);
   EXPECT_EQ(error_of(dir), dir.string() + ": a directory, not a data file");
 }

@@ -14,6 +14,7 @@
 #include "field/source_list.h"
 #include "field/trajectory.h"
 #include "field/vector_field.h"
+#include "tests/temp_dir.h"
 
 namespace hsb {
 namespace {
@@ -156,7 +157,7 @@ TEST(CurveSources, EvenlyAlongACircleWithTheirShape) {
 class SourceList : public ::testing::Test {
  protected:
   std::string write(const std::string& text) {
-    const auto path = std::filesystem::temp_directory_path() / "hsb_source_list.csv";
+    const auto path = test_temp_dir("source_list") / "hsb_source_list.csv";
     std::ofstream(path) << text;
     return path.string();
   }

@@ -27,6 +27,7 @@
 #include "field/glyph_pipeline.h"
 #include "field/trajectory.h"
 #include "field/vtk_data.h"
+#include "tests/temp_dir.h"
 
 namespace hsb {
 namespace {
@@ -34,9 +35,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path temp_dir() {
-  const fs::path dir = fs::temp_directory_path() / "hsb_vtk_test";
-  fs::create_directories(dir);
-  return dir;
+  return test_temp_dir("vtk_test");
 }
 
 // A tensor field whose six components are different affine functions of x:

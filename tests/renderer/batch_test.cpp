@@ -9,6 +9,7 @@
 #include <map>
 
 #include "renderer/app/batch.h"
+#include "tests/temp_dir.h"
 
 namespace hsb {
 namespace {
@@ -40,8 +41,7 @@ TEST(Batch, EveryCombinationOfEverySweptKey) {
 }
 
 TEST(Batch, ASceneSweepTableAddsItsKeys) {
-  const auto dir = std::filesystem::temp_directory_path() / "hsb_batch_test";
-  std::filesystem::create_directories(dir);
+  const auto dir = test_temp_dir("batch_test");
   const std::string scene = (dir / "swept.toml").string();
   std::ofstream(scene) << "[glyphs]\nscale = 0.2\n[sweep]\n\"glyphs.spacing\" = [0.1, 0.2]\n"
                           "[sweep.color]\nmap = [\"viridis\", \"magma\"]\n";

@@ -9,6 +9,7 @@
 
 #include "renderer/image/color_management.h"
 #include "renderer/image/colormap.h"
+#include "tests/temp_dir.h"
 
 namespace hsb {
 namespace {
@@ -59,7 +60,7 @@ std::string raw_first_config() {
   text.insert(text.find(standard), raw);
   const std::string views = "active_views: [Standard, Filmic, Raw]";
   text.replace(text.find(views), views.size(), "active_views: [Raw, Standard, Filmic]");
-  const std::string path = (std::filesystem::temp_directory_path() / "hsb_raw_first.ocio").string();
+  const std::string path = (test_temp_dir("color_test") / "raw_first.ocio").string();
   std::ofstream(path) << text;
   return path;
 }

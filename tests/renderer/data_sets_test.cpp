@@ -12,6 +12,7 @@
 #include "renderer/app/pinned_scene.h"
 #include "renderer/app/prepared_scene.h"
 #include "renderer/render/ray_scene.h"
+#include "tests/temp_dir.h"
 
 namespace hsb {
 namespace {
@@ -54,7 +55,7 @@ TEST_P(DataSet, ASceneNamingOnlyTheFileGivesAUsefulPicture) {
   EXPECT_LT(fraction, 0.6) << "the glyphs fill the frame";
 
   // Export and info on the same file.
-  const fs::path dir = fs::temp_directory_path() / "hsb_data_sets_test";
+  const fs::path dir = test_temp_dir("data_sets_test");
   const std::vector<std::string> written = run_export_job({file, {}, dir.string()});
   for (const std::string& w : written) EXPECT_GT(fs::file_size(w), 0u) << w;
   EXPECT_NE(describe_data(p->spec.pipeline.data).find("bounds"), std::string::npos);

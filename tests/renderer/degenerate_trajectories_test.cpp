@@ -12,6 +12,7 @@
 #include "renderer/app/pinned_scene.h"
 #include "renderer/app/prepared_scene.h"
 #include "renderer/app/render_job.h"
+#include "tests/temp_dir.h"
 
 namespace hsb {
 namespace {
@@ -35,9 +36,7 @@ std::vector<std::string> leftovers(const fs::path& dir) {
 }
 
 TEST(DegenerateTrajectories, SeedsOnZeroStressAndOutsideTheData) {
-  const fs::path dir = fs::temp_directory_path() / "hsb_degenerate_test";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = test_temp_dir("degenerate_test", true);
   const fs::path scene = dir / "degenerate.toml";
   std::ofstream(scene) << degenerate_scene;
 

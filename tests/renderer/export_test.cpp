@@ -17,6 +17,7 @@
 #include "renderer/app/prepared_scene.h"
 #include "renderer/scene/scene_spec.h"
 #include "renderer/surface/kernel.h"
+#include "tests/temp_dir.h"
 
 namespace hsb {
 namespace {
@@ -29,9 +30,7 @@ vtkSmartPointer<vtkPolyData> read_vtp(const std::string& path) {
 }
 
 TEST(Export, SourcesAndTrajectoriesReadBackWithTheirArrays) {
-  const auto dir = std::filesystem::temp_directory_path() / "hsb_export_test";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
+  const auto dir = test_temp_dir("export_test", true);
   const std::string scene = (dir / "s.toml").string();
   std::ofstream(scene) << "[seeds]\npoints = [[0, 0, 0.5], [0.3, 0.2, 0.6]]\n"
                           "[trajectories]\nfamily = \"minor\"\n"

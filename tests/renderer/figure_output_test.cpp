@@ -16,6 +16,7 @@
 #include "renderer/app/prepared_scene.h"
 #include "renderer/app/render_job.h"
 #include "tests/renderer/command_output.h"
+#include "tests/temp_dir.h"
 
 namespace hsb {
 namespace {
@@ -25,10 +26,8 @@ namespace fs = std::filesystem;
 class FigureOutput : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("hsb_figure_" + std::string(
-        ::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = test_temp_dir("figure_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()),
+                         true);
   }
   // Writes `text` as a scene beside a copy of the shipped plate data set.
   std::string scene(const std::string& text) {

@@ -16,6 +16,7 @@
 #include "renderer/app/prepared_scene.h"
 #include "renderer/app/render_job.h"
 #include "tests/renderer/command_output.h"
+#include "tests/temp_dir.h"
 
 namespace hsb {
 namespace {
@@ -25,10 +26,7 @@ namespace fs = std::filesystem;
 const fs::path source_dir(HSB_SOURCE_DIR);
 
 fs::path temp_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("hsb_panels_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
+  return test_temp_dir("panels_" + name, true);
 }
 
 

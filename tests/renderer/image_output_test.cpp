@@ -7,14 +7,13 @@
 #include <filesystem>
 
 #include "renderer/image/image_output.h"
+#include "tests/temp_dir.h"
 
 namespace hsb {
 namespace {
 
 std::filesystem::path temp_dir() {
-  const auto dir = std::filesystem::temp_directory_path() / "hsb_image_test";
-  std::filesystem::create_directories(dir);
-  return dir;
+  return test_temp_dir("image_test");
 }
 
 ImageToWrite gradient(int channels) {

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "renderer/scene/scene_spec.h"
+#include "tests/temp_dir.h"
 
 namespace hsb {
 namespace {
@@ -13,8 +14,7 @@ namespace {
 class SceneFile : public ::testing::Test {
  protected:
   std::string write(const std::string& text) {
-    const auto dir = std::filesystem::temp_directory_path() / "hsb_scene_test";
-    std::filesystem::create_directories(dir);
+    const auto dir = test_temp_dir("scene_test");
     path_ = (dir / (std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".toml")).string();
     std::ofstream(path_) << text;
     return path_;
@@ -149,9 +149,10 @@ TEST_F(SceneFile, NonFiniteNumbersAreRefusedExceptAnInfiniteCeiling) {
 }
 
 TEST_F(SceneFile, ADirectoryIsNoDataFile) {
-  std::filesystem::create_directories("/tmp/hsb_scene_test/folder.vtu");
+  const std::filesystem::path folder = test_temp_dir("scene_test") / "folder.vtu";
+  std::filesystem::create_directories(folder);
   const std::string e = error_of("[data]\nfile = \"folder.vtu\"\n");
-  EXPECT_EQ(e, path_ + ":2:8: data.file names a directory, not a file: /tmp/hsb_scene_test/folder.vtu");
+  EXPECT_EQ(e, path_ + ":2:8: data.file names a directory, not a file: " + folder.string());
 }
 
 TEST_F(SceneFile, UnknownKeyIsAnErrorNotIgnored) {
@@ -242,8 +243,8 @@ TEST_F(SceneFile, UnknownKeyFromTheCommandLineNamesTheArgument) {
 TEST_F(SceneFile, MissingDataFileAndBadImageTypeAreLocated) {
   const std::string missing = error_of("[data]\nkind = \"vtk\"\nfile = \"nope.vtu\"\n");
   EXPECT_EQ(missing,
-            path_ + ":3:8: data.file names no file: /tmp/hsb_scene_test/nope.vtu (relative paths are relative to "
-                    "the scene file)");
+            path_ + ":3:8: data.file names no file: " + (test_temp_dir("scene_test") / "nope.vtu").string() +
+                " (relative paths are relative to the scene file)");
   const std::string image = error_of(std::string(minimal) + "[output]\nfile = \"x.bmp\"\n");
   EXPECT_EQ(image,
             path_ + ":4:8: output.file must end in .png, .tif, .tiff, .exr, .pdf or .svg, got \"x.bmp\"");
