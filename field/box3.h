@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <utility>
+#include <vector>
 
 #include "field/sym3.h"
 
@@ -16,6 +18,7 @@ struct Box3 {
   bool contains(const Vec3& p) const {
     return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all();
   }
+  bool contains(const Box3& o) const { return contains(o.lo) && contains(o.hi); }
   bool overlaps(const Box3& o) const {
     return (lo.array() <= o.hi.array()).all() && (o.lo.array() <= hi.array()).all();
   }
@@ -33,6 +36,15 @@ struct Box3 {
     return c;
   }
 };
+
+// The box around the finite ones of `points`; lo = +inf and hi = −inf
+// (empty) when there are none.
+inline Box3 bounding_box(const std::vector<Vec3>& points) {
+  Box3 box{Vec3::Constant(INFINITY), Vec3::Constant(-INFINITY)};
+  for (const Vec3& p : points)
+    if (p.allFinite()) box = {box.lo.cwiseMin(p), box.hi.cwiseMax(p)};
+  return box;
+}
 
 // The parameter interval where the ray o + t d is inside `box`, intersected
 // with [tmin, tmax]; empty (first > second) when it misses.

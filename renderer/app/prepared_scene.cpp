@@ -314,11 +314,8 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   if (!camera.view) camera.view = automatic_view(domain);
   const std::vector<Vec3> framed = framed_points(s.camera.frame, p, extent);
   p.camera = frame_camera(camera, framed, p.render.width, p.render.height, reserve);
-  Box3 drawn = domain;
-  if (!framed.empty()) {
-    drawn = {framed.front(), framed.front()};
-    for (const Vec3& point : framed) drawn.extend({point, point});
-  }
+  Box3 drawn = bounding_box(framed);
+  if (!drawn.lo.allFinite() || !drawn.hi.allFinite()) drawn = domain;  // nothing drawn
   p.render.shadow_offset =
       s.render.shadow_offset.value_or(kShadowOffsetPerPixel * Camera(p.camera, p.render.width, p.render.height)
                                                                     .pixel_size_at(drawn.centre()));

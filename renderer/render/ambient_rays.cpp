@@ -19,16 +19,12 @@ constexpr double kShortestList = 256.0;
 // on every side, so that the next packets along the row still fit.
 constexpr double kListMargin = 0.5;
 
-bool inside(const Box3& inner, const Box3& outer) {
-  return (inner.lo.array() >= outer.lo.array()).all() && (inner.hi.array() <= outer.hi.array()).all();
-}
-
 double volume(const Box3& box) { return std::max(0.0, box.size().prod()); }
 
 }  // namespace
 
 bool AmbientRays::cover(const BlobGeometry& blobs, const Box3& needed, double crowd) {
-  if (have_list_ && inside(needed, listed_)) return true;
+  if (have_list_ && listed_.contains(needed)) return true;
   const double limit = kListedPerCrowd * crowd;
   if (limit < kShortestList) return false;
   const Vec3 margin = kListMargin * needed.size();

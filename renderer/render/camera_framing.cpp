@@ -70,9 +70,7 @@ CameraSpec frame_camera(const CameraRequest& request, const Box3& framed, int wi
 CameraSpec frame_camera(const CameraRequest& request, const std::vector<Vec3>& framed_points, int width, int height,
                         const PictureReserve& reserve) {
   // Something to frame even when nothing is drawn.
-  Box3 box{Vec3::Constant(INFINITY), Vec3::Constant(-INFINITY)};
-  for (const Vec3& p : framed_points)
-    if (p.allFinite()) box = {box.lo.cwiseMin(p), box.hi.cwiseMax(p)};
+  Box3 box = bounding_box(framed_points);
   std::vector<Vec3> points;
   for (const Vec3& p : framed_points)
     if (p.allFinite()) points.push_back(p);

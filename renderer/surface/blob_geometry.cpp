@@ -309,31 +309,34 @@ bool BlobGeometry::gather_nearby(const Box3& region, std::size_t limit, NearbySo
   return true;
 }
 
-double BlobGeometry::first_crossing_near(const NearbySources& nearby, const RayInterval& ray, FieldRay& tracer,
-                                         TraceStats& stats, CrossingQuery query) const {
+template <class CollectSpans>
+double BlobGeometry::first_crossing_of(const RayInterval& ray, FieldRay& tracer, TraceStats& stats,
+                                       CrossingQuery query, CollectSpans&& collect_spans) const {
   ++stats.field_rays;
   tracer.spans.clear();
   const auto [t, end] = ray_interval_in(bounds_, ray.origin, ray.direction, ray.tmin, ray.tmax);
   if (!(t < end)) return -1.0;
-  nearby.collect_spans(ray.origin, ray.direction, t, end, tracer.spans);
-  stats.span_candidates += nearby.size();
+  collect_spans(RayInterval{ray.origin, ray.direction, t, end});
   if (tracer.spans.empty()) return -1.0;
   return tracer.first_crossing(field_, t, end, settings_, stats, query);
 }
 
+double BlobGeometry::first_crossing_near(const NearbySources& nearby, const RayInterval& ray, FieldRay& tracer,
+                                         TraceStats& stats, CrossingQuery query) const {
+  return first_crossing_of(ray, tracer, stats, query, [&](const RayInterval& clipped) {
+    nearby.collect_spans(clipped.origin, clipped.direction, clipped.tmin, clipped.tmax, tracer.spans);
+    stats.span_candidates += nearby.size();
+  });
+}
+
 double BlobGeometry::first_crossing_in_order(const RayInterval& ray, FieldRay& tracer, TraceStats& stats,
                                              CrossingQuery query) const {
-  ++stats.field_rays;
-  tracer.spans.clear();
-  const auto [t, end] = ray_interval_in(bounds_, ray.origin, ray.direction, ray.tmin, ray.tmax);
-  if (!(t < end)) return -1.0;
-  const RayInterval clipped{ray.origin, ray.direction, t, end};
-  ++stats.span_queries;
-  stats.span_candidates += query_spans(&clipped, &tracer, 1u);
-  if (tracer.spans.empty()) return -1.0;
-  std::sort(tracer.spans.begin(), tracer.spans.end(),
-            [&](const RaySpan& x, const RaySpan& y) { return rank_[x.source] < rank_[y.source]; });
-  return tracer.first_crossing(field_, t, end, settings_, stats, query);
+  return first_crossing_of(ray, tracer, stats, query, [&](const RayInterval& clipped) {
+    ++stats.span_queries;
+    stats.span_candidates += query_spans(&clipped, &tracer, 1u);
+    std::sort(tracer.spans.begin(), tracer.spans.end(),
+              [&](const RaySpan& x, const RaySpan& y) { return rank_[x.source] < rank_[y.source]; });
+  });
 }
 
 void BlobGeometry::field_bounds(const RTCBoundsFunctionArguments* args) {

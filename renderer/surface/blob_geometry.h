@@ -100,6 +100,12 @@ class BlobGeometry {
   // collect_spans for the rays whose bit is set in `lanes`: one traversal,
   // a packet one when there are several.
   std::size_t query_spans(const RayInterval* rays, FieldRay* tracers, unsigned lanes) const;
+  // What first_crossing_near() and first_crossing_in_order() share: the ray
+  // clipped to the field's bounds, its spans collected there by
+  // `collect_spans` (given the clipped ray), and the crossing among them.
+  template <class CollectSpans>
+  double first_crossing_of(const RayInterval& ray, FieldRay& tracer, TraceStats& stats, CrossingQuery query,
+                           CollectSpans&& collect_spans) const;
   static void field_bounds(const RTCBoundsFunctionArguments* args);
   static void field_intersect(const RTCIntersectFunctionNArguments* args);
   static void field_occluded(const RTCOccludedFunctionNArguments* args);
