@@ -22,6 +22,8 @@
 #include "renderer/app/prepared_scene.h"
 #include "renderer/app/process_memory.h"
 #include "renderer/app/render_job.h"
+#include "renderer/render/ray_scene.h"
+#include "renderer/surface/instruction_set.h"
 #include "renderer/scene/scene_spec.h"
 #include "renderer/scene/scene_error.h"
 
@@ -87,6 +89,25 @@ void print_summary(const hsb::RenderSummary& s, bool with_stats) {
   std::fflush(stdout);
 }
 
+// `hsb --version`: the program's, and what it traces with.
+std::string version_text() {
+  std::string text = std::string("hsb ") + HSB_VERSION + "\n";
+  try {
+    const hsb::InstructionSet isa = hsb::active_isa();
+    const hsb::EmbreeDevice device;
+    text += std::string("instruction set: ") + hsb::isa_name(isa) +
+            (hsb::isa_forced() ? std::string(" (forced; this processor has up to ") +
+                                     hsb::isa_name(hsb::best_supported_isa()) + ")"
+                               : std::string(" (this processor's best)")) +
+            "\n";
+    text += "  " + device.describe() + "\n";
+    text += std::string("  renderer: ") + hsb::isa_name(isa) + " span kernels";
+  } catch (const std::runtime_error& e) {
+    text += std::string("instruction set: ") + e.what();
+  }
+  return text;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -97,7 +118,8 @@ int main(int argc, char** argv) {
   app.footer(
       "Scene files are TOML; every key and its default is documented in scenes/README.md.\n"
       "Example: hsb render scenes/fig05_point_load_linear.toml -o out --set render.width=400");
-  app.set_version_flag("--version", std::string("hsb ") + HSB_VERSION);
+  app.set_version_flag("--version", version_text,
+                       "Print the version and the instruction set in use (Embree's and the renderer's), then exit");
   app.require_subcommand(1);
 
   CLI::App* render = app.add_subcommand("render", "Render scene files to images, one after another.");
@@ -180,8 +202,27 @@ int main(int argc, char** argv) {
 
   int threads = 0;
   app.add_option("--threads", threads, "Use at most N threads (default: every core)")->check(CLI::PositiveNumber);
+  app.add_option_function<std::string>(
+         "--isa",
+         [](const std::string& name) {
+           try {
+             hsb::force_isa(*hsb::parse_isa(name));
+           } catch (const std::runtime_error& e) {
+             throw CLI::ValidationError("--isa", e.what());
+           }
+         },
+         "Trace with this instruction set (default: the processor's best; also HSB_ISA=NAME), to reproduce\n"
+         "what another processor does; every one gives the same pictures, byte for byte")
+      ->check(CLI::IsMember({"sse2", "sse4.2", "avx", "avx2", "avx512"}))
+      ->trigger_on_parse();
 
   CLI11_PARSE(app, argc, argv);
+  try {
+    hsb::active_isa();  // a bad HSB_ISA is one error here, not one per scene
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "hsb: %s\n", e.what());
+    return 2;
+  }
   std::optional<tbb::global_control> thread_limit;
 
   if (threads > 0) thread_limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));

@@ -59,7 +59,7 @@ void AmbientRays::trace(const RayScene& scene, const std::vector<RayInterval>& r
   const bool listed = cover(blobs, needed, crowd);
   for (std::size_t i = 0; i < count; ++i) {
     const double hit = listed ? blobs.first_crossing_near(nearby_, rays[i], tracer, stats, CrossingQuery::any)
-                              : blobs.first_crossing_in_order(rays[i], tracer, stats, CrossingQuery::any);
+                              : blobs.first_crossing_traversed(rays[i], tracer, stats, CrossingQuery::any);
     blocked[i] = hit >= 0.0 ? 1 : 0;
   }
 }

@@ -10,8 +10,9 @@
 // list is kept while the following packets' rays stay inside it. Where the
 // sources are sparse a list would hold far more sources than a ray meets,
 // and each ray traverses the BVH instead. Both ways give every ray the same
-// spans in the same order (by spatial rank, spatial_rank.h), so the choice,
-// which depends on what the thread traced before, never changes a pixel.
+// spans, and the answer does not depend on their order (field_ray.h), so
+// the choice, which depends on what the thread traced before, never
+// changes a pixel.
 
 #include <cstdint>
 #include <vector>

@@ -7,6 +7,7 @@
 
 #include "renderer/render/sampling.h"
 #include "renderer/surface/embree_ray.h"
+#include "renderer/surface/ray_packets.h"
 
 namespace hsb {
 namespace {
@@ -35,20 +36,17 @@ class OcclusionBatch {
     context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
     for (std::size_t first = 0; first < key_.size(); first += kMaxPacket) {
       const int count = int(std::min<std::size_t>(kMaxPacket, key_.size() - first));
-      alignas(64) int valid[kMaxPacket] = {};
-      alignas(64) RTCRayHit16 packet{};
-      auto* rays = reinterpret_cast<RTCRayHitN*>(&packet);
-      for (int i = 0; i < count; ++i) {
-        const Pending& r = key_[first + std::size_t(i)];
-        set_embree_ray(rays, kMaxPacket, unsigned(i), r.origin, r.direction, 0.0f, float(r.tfar),
-                       RayScene::kShadowRayMask);
-        valid[i] = -1;
-      }
-      rtcOccluded16(valid, scene.get(), &context.embree, &packet.ray);
-      for (int i = 0; i < count; ++i) {
-        const Pending& r = key_[first + std::size_t(i)];
-        if (packet.ray.tfar[i] >= 0.0f) visibility[r.lane].key += r.weight;
-      }
+      const Pending* batch = &key_[first];
+      occluded_rays(
+          scene.get(), &context.embree, scene.packet_width(), first_rays(count),
+          [&](RTCRayN* packet, unsigned width, unsigned lane, int i) {
+            const Pending& r = batch[i];
+            set_embree_ray(packet, width, lane, unsigned(i), r.origin, r.direction, 0.0f, float(r.tfar),
+                           RayScene::kShadowRayMask);
+          },
+          [&](RTCRayN* packet, unsigned width, unsigned lane, int i) {
+            if (RTCRayN_tfar(packet, width, lane) >= 0.0f) visibility[batch[i].lane].key += batch[i].weight;
+          });
     }
     tracer.shadow_rays += unsigned(key_.size() + ambient_.size());
     tracer.shadow_seconds += seconds_since(start);
@@ -125,20 +123,15 @@ void add_ambient_rays(const ShadingSpec& shading, const CameraRayJob& job, const
 // shell_edge_opacity at grazing angles, so the body's outline shows as an
 // edge while glyphs inside stay visible.
 void composite_shell(const RayScene& scene, const ShadingSpec& shading, const CameraRay& ray, CameraSample& sample) {
-  constexpr int max_layers = 8;
+  constexpr std::size_t max_layers = 8;
+  thread_local std::vector<ShellCrossing> layers;
+  scene.shell()->crossings(ray.origin, ray.direction, std::isinf(sample.depth) ? INFINITY : double(sample.depth),
+                           max_layers, layers);
   const Vec3 key = shading.light_from.normalized();
   std::array<double, 3> sum{0, 0, 0};
   double transmittance = 1.0;
-  float t_near = 0.0f;
-  const float t_far = std::isinf(sample.depth) ? INFINITY : sample.depth;
-  for (int layer = 0; layer < max_layers; ++layer) {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    RTCRayHit rh = make_embree_ray(ray.origin, ray.direction, t_near, t_far);
-    rtcIntersect1(scene.shell(), &context, &rh);
-    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) break;
-    const Vec3 geometric(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
-    const Vec3 n = scene.shell_normal(rh.hit.primID, rh.hit.u, rh.hit.v, geometric);
+  for (const ShellCrossing& layer : layers) {
+    const Vec3& n = layer.normal;
     const double facing = std::fabs(n.dot(ray.direction));
     const double grazing = std::pow(1.0 - facing, 3.0);
     const double alpha = shading.shell_opacity + (shading.shell_edge_opacity - shading.shell_opacity) * grazing;
@@ -146,7 +139,6 @@ void composite_shell(const RayScene& scene, const ShadingSpec& shading, const Ca
     for (int c = 0; c < 3; ++c)
       sum[std::size_t(c)] += transmittance * alpha * lit * shading.shell_color[std::size_t(c)] * shading.light_color[std::size_t(c)];
     transmittance *= 1.0 - alpha;
-    t_near = std::nextafter(rh.ray.tfar, INFINITY);
   }
   for (int c = 0; c < 3; ++c)
     sample.color[std::size_t(c)] = float(sum[std::size_t(c)] + transmittance * sample.color[std::size_t(c)]);
@@ -175,16 +167,23 @@ void trace_camera_samples(const RayScene& scene, const ShadingSpec& shading, dou
                           const CameraRayJob* jobs, int count, SampleTracer& tracer, CameraSample* out) {
   FieldRayContext context(tracer.tracers, tracer.stats);
   context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-  alignas(64) int valid[kMaxPacket];
-  alignas(64) RTCRayHit16 primary{};
-  auto* primary_n = reinterpret_cast<RTCRayHitN*>(&primary);
-  for (int i = 0; i < kMaxPacket; ++i) {
-    valid[i] = i < count ? -1 : 0;
-    if (i < count)
-      set_embree_ray(primary_n, kMaxPacket, unsigned(i), jobs[i].ray.origin, jobs[i].ray.direction, 0.0f, INFINITY);
-  }
+  struct PrimaryHit {
+    unsigned geometry;
+    float t;
+    Vec3 normal;  // Embree's geometric normal, for the context geometry
+  } primary[kMaxPacket];
   const auto primary_start = Clock::now();
-  rtcIntersect16(valid, scene.get(), &context.embree, &primary);
+  intersect_rays(
+      scene.get(), &context.embree, scene.packet_width(), first_rays(count),
+      [&](RTCRayHitN* packet, unsigned width, unsigned lane, int i) {
+        set_embree_ray(packet, width, lane, unsigned(i), jobs[i].ray.origin, jobs[i].ray.direction, 0.0f, INFINITY);
+      },
+      [&](RTCRayHitN* packet, unsigned width, unsigned lane, int i) {
+        RTCHitN* hit = RTCRayHitN_HitN(packet, width);
+        primary[i] = {RTCHitN_geomID(hit, width, lane), RTCRayN_tfar(RTCRayHitN_RayN(packet, width), width, lane),
+                      Vec3(RTCHitN_Ng_x(hit, width, lane), RTCHitN_Ng_y(hit, width, lane),
+                           RTCHitN_Ng_z(hit, width, lane))};
+      });
   tracer.primary_seconds += seconds_since(primary_start);
   tracer.primary_rays += unsigned(count);
 
@@ -198,7 +197,7 @@ void trace_camera_samples(const RayScene& scene, const ShadingSpec& shading, dou
     const CameraRayJob& job = jobs[i];
     const CameraRay& ray = job.ray;
     CameraSample& s = out[i] = CameraSample{};
-    const unsigned id = primary.hit.geomID[i];
+    const unsigned id = primary[i].geometry;
     if (id == RTC_INVALID_GEOMETRY_ID) {
       met[i] = background_sample(shading, job, s, ground[i]) ? Met::ground : Met::nothing;
       if (met[i] == Met::ground) {
@@ -211,8 +210,8 @@ void trace_camera_samples(const RayScene& scene, const ShadingSpec& shading, dou
     if (id != scene.field_id()) {
       // Box edges and trajectory tubes: round, lit by the key light alone.
       met[i] = Met::context_only;
-      s.depth = primary.ray.tfar[i];
-      const Vec3 n = Vec3(primary.hit.Ng_x[i], primary.hit.Ng_y[i], primary.hit.Ng_z[i]).normalized();
+      s.depth = primary[i].t;
+      const Vec3 n = primary[i].normal.normalized();
       const Rgb& base = id == scene.box_id() ? shading.box_color : shading.trajectory_color;
       const double lit = id == scene.box_id()
                              ? 1.0

@@ -5,15 +5,21 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "field/box3.h"
 #include "field/triangle_mesh.h"
+#include "renderer/render/context_lines.h"
 #include "renderer/render/shading.h"
+#include "renderer/render/shell_geometry.h"
 #include "renderer/surface/blob_geometry.h"
+#include "renderer/surface/instruction_set.h"
 
 namespace hsb {
 
-// Owns an Embree device; one per process is enough, scenes share it.
+// Owns an Embree device; one per process is enough, scenes share it. Its
+// kernels are those of active_isa() (instruction_set.h), like the
+// renderer's own.
 class EmbreeDevice {
  public:
   EmbreeDevice();
@@ -21,9 +27,15 @@ class EmbreeDevice {
   EmbreeDevice(const EmbreeDevice&) = delete;
   EmbreeDevice& operator=(const EmbreeDevice&) = delete;
   RTCDevice get() const { return device_; }
+  InstructionSet isa() const { return isa_; }
+  int packet_width() const { return packet_width_; }  // native_packet_width()
+  // "Embree 3.13.5, avx2 kernels, 8-ray packets"
+  std::string describe() const;
 
  private:
+  InstructionSet isa_;
   RTCDevice device_;
+  int packet_width_;
 };
 
 // What is drawn besides (or instead of) the glyphs, each part when present.
@@ -47,10 +59,11 @@ class RayScene {
   static constexpr unsigned kShadowRayMask = kFieldMask;
 
   // `field` (and what `context` points to) must outlive the scene. The
-  // box's edges and the trajectory tubes are round curves that cast no
-  // shadow (shadow rays carry kShadowRayMask). The shell becomes a
-  // separate scene of triangles, shaded with its vertex normals: it is
-  // composited over what the rays hit, casts no shadow and hides nothing.
+  // box's edges and the trajectory tubes are round tubes (context_lines.h)
+  // that cast no shadow (shadow rays carry kShadowRayMask). The shell is
+  // a separate geometry (shell_geometry.h), shaded with its vertex normals:
+  // it is composited over what the rays hit, casts no shadow and hides
+  // nothing.
   RayScene(const EmbreeDevice& device, const BlobField& field, const TraceSettings& settings,
            const DrawnContext& context = {});
   ~RayScene();
@@ -58,24 +71,23 @@ class RayScene {
   RayScene& operator=(const RayScene&) = delete;
 
   RTCScene get() const { return scene_; }
+  // How many rays to trace in one packet (ray_packets.h).
+  int packet_width() const { return packet_width_; }
   unsigned field_id() const { return field_id_; }
   unsigned box_id() const { return box_id_; }
   unsigned tubes_id() const { return tubes_id_; }
   const BlobGeometry& blobs() const { return *blobs_; }
-  RTCScene shell() const { return shell_; }  // nullptr when there is none
-  // The shell's normal at a hit: interpolated from its vertices when it has
-  // vertex normals, else the triangle's own.
-  Vec3 shell_normal(unsigned primitive, float u, float v, const Vec3& geometric) const;
+  const ShellGeometry* shell() const { return shell_.get(); }  // nullptr when there is none
 
  private:
   RTCScene scene_ = nullptr;
-  RTCScene shell_ = nullptr;
+  int packet_width_ = 1;
   std::unique_ptr<BlobGeometry> blobs_;
+  std::unique_ptr<ContextLines> box_, tubes_;
+  std::unique_ptr<ShellGeometry> shell_;
   unsigned field_id_ = RTC_INVALID_GEOMETRY_ID;
   unsigned box_id_ = RTC_INVALID_GEOMETRY_ID;
   unsigned tubes_id_ = RTC_INVALID_GEOMETRY_ID;
-  RTCGeometry shell_geometry_ = nullptr;  // owned by shell_
-  bool shell_has_normals_ = false;
 };
 
 }  // namespace hsb

@@ -9,32 +9,25 @@
 #include <string>
 #include <utility>
 
+#include "renderer/surface/embree_bounds.h"
 #include "renderer/surface/embree_ray.h"
+#include "renderer/surface/ray_packets.h"
 #include "renderer/surface/spatial_rank.h"
 
 namespace hsb {
 namespace {
 
-// The span query's context: where the span BVH's callback writes. Lane i of
-// the query is rays lane i, and its spans go to tracers[i].
+// The span query's context: where the span BVH's callback writes. The
+// query's ray k (its Embree id) is lane k of `rays`, and its spans go to
+// tracers[k].
 struct SpanQueryContext {
   RTCIntersectContext embree;  // first member, see FieldRayContext
   const BlobField* field;
+  const std::uint32_t* rank;  // each source's spatial rank
   RayLanes rays;
   FieldRay* tracers;
   std::size_t candidates;
 };
-
-// Rounds a double box outwards to float so the BVH never clips an ellipsoid.
-void store_bounds(const Box3& box, RTCBounds* out) {
-  constexpr float inf = std::numeric_limits<float>::infinity();
-  out->lower_x = std::nextafter(static_cast<float>(box.lo.x()), -inf);
-  out->lower_y = std::nextafter(static_cast<float>(box.lo.y()), -inf);
-  out->lower_z = std::nextafter(static_cast<float>(box.lo.z()), -inf);
-  out->upper_x = std::nextafter(static_cast<float>(box.hi.x()), inf);
-  out->upper_y = std::nextafter(static_cast<float>(box.hi.y()), inf);
-  out->upper_z = std::nextafter(static_cast<float>(box.hi.z()), inf);
-}
 
 void check_device(RTCDevice device, const char* what) {
   const RTCError error = rtcGetDeviceError(device);
@@ -43,30 +36,40 @@ void check_device(RTCDevice device, const char* what) {
                              what);
 }
 
-// The active lanes of a callback's ray packet, gathered in lane order.
+// The caller's index of the ray in lane i of a callback's packet of n
+// (ray_packets.h). Every query on these scenes numbers its rays below
+// kMaxPacket; anything else is a bug that would write past per-ray slots.
+// (An exception must not cross Embree's C frames, hence the abort.)
+unsigned checked_ray_index(RTCRayN* rays, unsigned n, unsigned i) {
+  const unsigned index = ray_index(rays, n, i);
+  if (n > unsigned(kMaxPacket) || index >= unsigned(kMaxPacket)) {
+    std::fprintf(stderr, "hsb: internal error: ray %u of a %u-ray packet reached the field geometry\n", index, n);
+    std::abort();
+  }
+  return index;
+}
+
+// The active lanes of a callback's ray packet, gathered in lane order, with
+// the caller's index of each.
 struct ValidLanes {
   int count = 0;
   std::array<RayInterval, kMaxPacket> rays;
-  std::array<unsigned, kMaxPacket> lane;
+  std::array<unsigned, kMaxPacket> lane;   // in the callback's packet
+  std::array<unsigned, kMaxPacket> index;  // the caller's
 };
 
 ValidLanes gather_lanes(const int* valid, RTCRayN* rays, unsigned n) {
-  // Embree calls back with the width of the caller's query, and no caller
-  // issues packets wider than kMaxPacket. (An exception must not cross
-  // Embree's C frames, hence the abort.)
-  if (n > unsigned(kMaxPacket)) {
-    std::fprintf(stderr, "hsb: internal error: a %u-ray packet reached the field geometry\n", n);
-    std::abort();
-  }
   ValidLanes lanes;
   for (unsigned i = 0; i < n; ++i) {
     if (!valid[i]) continue;
-    RayInterval& ray = lanes.rays[std::size_t(lanes.count)];
+    const std::size_t j = std::size_t(lanes.count++);
+    lanes.index[j] = checked_ray_index(rays, n, i);
+    lanes.lane[j] = i;
+    RayInterval& ray = lanes.rays[j];
     ray.origin = Vec3(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i));
     ray.direction = Vec3(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i));
     ray.tmin = RTCRayN_tnear(rays, n, i);
     ray.tmax = RTCRayN_tfar(rays, n, i);
-    lanes.lane[std::size_t(lanes.count++)] = i;
   }
   return lanes;
 }
@@ -86,9 +89,11 @@ BlobGeometry::BlobGeometry(RTCDevice device, const BlobField& field, const Trace
     : field_(field),
       settings_(settings),
       bounds_(influence_bounds(field)),
+      margin_(bounds_margin(bounds_.diagonal())),
       first_window_(2.0 * mean_influence_diagonal(field)),
       rank_(spatial_ranks(field, bounds_)),
-      device_(device) {
+      device_(device),
+      packet_width_(native_packet_width(device)) {
   span_scene_ = rtcNewScene(device_);
   // Up to a few hundred thousand sources the best BVH costs nothing
   // noticeable. Beyond, its build arrays dominate peak memory: Embree's
@@ -101,7 +106,7 @@ BlobGeometry::BlobGeometry(RTCDevice device, const BlobField& field, const Trace
   rtcSetSceneFlags(span_scene_, RTC_SCENE_FLAG_COMPACT);
   RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
   rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(field.sources.size()));
-  rtcSetGeometryUserData(geometry, const_cast<BlobField*>(&field_));
+  rtcSetGeometryUserData(geometry, this);
   rtcSetGeometryBoundsFunction(geometry, span_bounds, nullptr);
   rtcSetGeometryIntersectFunction(geometry, span_intersect);
   rtcCommitGeometry(geometry);
@@ -131,31 +136,65 @@ unsigned BlobGeometry::attach_to(RTCScene scene, unsigned mask) {
 }
 
 void BlobGeometry::span_bounds(const RTCBoundsFunctionArguments* args) {
-  const auto* field = static_cast<const BlobField*>(args->geometryUserPtr);
-  store_bounds(influence_bounds(field->sources[args->primID]), args->bounds_o);
+  const auto* self = static_cast<const BlobGeometry*>(args->geometryUserPtr);
+  store_bounds(influence_bounds(self->field_.sources[args->primID]), self->margin_, args->bounds_o);
 }
 
 void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
   auto* query = reinterpret_cast<SpanQueryContext*>(args->context);
-  const int n = int(args->N);
+  const unsigned n = args->N;
+  RTCRayN* embree_rays = RTCRayHitN_RayN(args->rayhit, n);
+  const BlobSource& source = query->field->sources[args->primID];
+  const RayLanes& r = query->rays;
   if (n == 1) {  // a lone ray (rtcIntersect1): no lanes to gather
     ++query->candidates;
-    const RayLanes& r = query->rays;
+    const unsigned k = checked_ray_index(embree_rays, 1, 0);
     RaySpan span;
-    if (ray_span(query->field->sources[args->primID], args->primID, Vec3(r.ox[0], r.oy[0], r.oz[0]),
-                 Vec3(r.dx[0], r.dy[0], r.dz[0]), r.tmin[0], r.tmax[0], span))
-      query->tracers[0].spans.push_back(span);
+    if (ray_span(source, args->primID, query->rank[args->primID], Vec3(r.ox[k], r.oy[k], r.oz[k]), Vec3(r.dx[k], r.dy[k], r.dz[k]), r.tmin[k],
+                 r.tmax[k], span))
+      query->tracers[k].spans.push_back(span);
     return;
   }
+  // Which of the query's rays each lane holds. A packet issued at the
+  // device's width reaches here whole, lane i holding ray first + i, and
+  // the query's own lanes serve as they are; any other arrangement is
+  // gathered into lanes [0, n) first.
   unsigned valid = 0;
-  for (int i = 0; i < n; ++i) valid |= unsigned(args->valid[i] != 0) << i;
+  std::array<unsigned, kMaxPacket> index;
+  for (unsigned i = 0; i < n; ++i) {
+    if (!args->valid[i]) continue;
+    valid |= 1u << i;
+    index[i] = checked_ray_index(embree_rays, n, i);
+  }
+  if (!valid) return;
   query->candidates += unsigned(__builtin_popcount(valid));
+  const unsigned lowest = unsigned(__builtin_ctz(valid));
+  const int first = int(index[lowest]) - int(lowest);
+  bool in_place = first >= 0 && first + int(n) <= kMaxPacket;
+  for (unsigned rest = valid; rest && in_place; rest &= rest - 1) {
+    const unsigned i = unsigned(__builtin_ctz(rest));
+    in_place = index[i] == unsigned(first) + i;
+  }
   SpanLanes spans;
-  unsigned entered = valid & ray_spans(query->field->sources[args->primID], query->rays, n, spans);
-  for (; entered; entered &= entered - 1) {
-    const int i = __builtin_ctz(entered);
-    query->tracers[i].spans.push_back(
-        RaySpan{spans.t0[i], spans.t1[i], spans.a[i], spans.t_c[i], spans.g_min[i], args->primID});
+  if (in_place) {
+    const unsigned entered = (ray_spans(source, r, first, int(n), spans) >> first) & valid;
+    for (unsigned rest = entered; rest; rest &= rest - 1) {
+      const unsigned i = unsigned(__builtin_ctz(rest)), k = unsigned(first) + i;
+      query->tracers[k].spans.push_back(RaySpan{spans.t0[k], spans.t1[k], spans.a[k], spans.t_c[k], spans.g_min[k], args->primID,
+                                                        query->rank[args->primID]});
+    }
+    return;
+  }
+  RayLanes gathered;
+  for (unsigned i = 0; i < n; ++i) {
+    const unsigned k = valid & (1u << i) ? index[i] : index[lowest];  // idle lanes repeat a real ray
+    gathered.set(int(i), Vec3(r.ox[k], r.oy[k], r.oz[k]), Vec3(r.dx[k], r.dy[k], r.dz[k]), r.tmin[k], r.tmax[k]);
+  }
+  const unsigned entered = ray_spans(source, gathered, 0, int(n), spans) & valid;
+  for (unsigned rest = entered; rest; rest &= rest - 1) {
+    const unsigned i = unsigned(__builtin_ctz(rest));
+    query->tracers[index[i]].spans.push_back(RaySpan{spans.t0[i], spans.t1[i], spans.a[i], spans.t_c[i], spans.g_min[i], args->primID,
+                                                              query->rank[args->primID]});
   }
   // No hit is reported: traversal goes on and visits every crossed box.
 }
@@ -170,42 +209,32 @@ std::size_t BlobGeometry::query_spans(const RayInterval* rays, FieldRay* tracers
   SpanQueryContext query;
   rtcInitIntersectContext(&query.embree);
   query.field = &field_;
+  query.rank = rank_.data();
   query.tracers = tracers;
   query.candidates = 0;
-  for (unsigned i = 0; i < unsigned(kMaxPacket); ++i)
-    if (lanes & (1u << i)) tracers[i].spans.clear();
-
+  // Ray i of the query is lane i of `rays` and has Embree id i. For a
+  // packet, idle lanes repeat an asked ray so the SIMD lanes stay finite.
+  const bool alone = (lanes & (lanes - 1)) == 0;
+  for (int i = 0; i < kMaxPacket; ++i) {
+    const bool asked = lanes & (1u << i);
+    if (!asked && alone) continue;
+    const RayInterval& ray = asked ? rays[i] : rays[__builtin_ctz(lanes)];
+    query.rays.set(i, ray.origin, ray.direction, ray.tmin, ray.tmax);
+    if (asked) tracers[i].spans.clear();
+  }
   // Widen the float interval by a hair: the spans are clipped exactly to
   // [tmin, tmax] in double by ray_spans, and Embree's float boxes must not
   // cull a source that touches the interval's ends.
   constexpr float inf = std::numeric_limits<float>::infinity();
-  auto float_interval = [&](const RayInterval& ray) {
-    return std::pair<float, float>(std::nextafter(float(ray.tmin), 0.0f),
-                                   std::isinf(ray.tmax) ? inf : std::nextafter(float(ray.tmax), inf));
+  const auto set = [&](RTCRayHitN* packet, unsigned width, unsigned lane, int i) {
+    const RayInterval& ray = rays[i];
+    set_embree_ray(packet, width, lane, unsigned(i), ray.origin, ray.direction, std::nextafter(float(ray.tmin), 0.0f),
+                   std::isinf(ray.tmax) ? inf : std::nextafter(float(ray.tmax), inf));
   };
-  if ((lanes & (lanes - 1)) == 0) {  // one ray: a packet would only add overhead
-    const int lane = __builtin_ctz(lanes);
-    const RayInterval& ray = rays[lane];
-    query.rays.set(0, ray.origin, ray.direction, ray.tmin, ray.tmax);
-    query.tracers = tracers + lane;
-    const auto [tnear, tfar] = float_interval(ray);
-    RTCRayHit rayhit = make_embree_ray(ray.origin, ray.direction, tnear, tfar);
-    rtcIntersect1(span_scene_, &query.embree, &rayhit);
-    return query.candidates;
-  }
-  query.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-  alignas(64) int valid[kMaxPacket];
-  alignas(64) RTCRayHit16 packet{};
-  for (int i = 0; i < kMaxPacket; ++i) {
-    valid[i] = (lanes & (1u << i)) ? -1 : 0;
-    const RayInterval& ray = valid[i] ? rays[i] : rays[__builtin_ctz(lanes)];  // idle lanes stay finite
-    query.rays.set(i, ray.origin, ray.direction, ray.tmin, ray.tmax);
-    if (!valid[i]) continue;
-    const auto [tnear, tfar] = float_interval(ray);
-    set_embree_ray(reinterpret_cast<RTCRayHitN*>(&packet), kMaxPacket, unsigned(i), ray.origin,
-                   ray.direction, tnear, tfar);
-  }
-  rtcIntersect16(valid, span_scene_, &query.embree, &packet);
+  // A lone ray goes alone: a packet would only add overhead.
+  const int width = alone ? 1 : packet_width_;
+  if (width > 1) query.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  intersect_rays(span_scene_, &query.embree, width, lanes, set, [](RTCRayHitN*, unsigned, unsigned, int) {});
   return query.candidates;
 }
 
@@ -302,10 +331,9 @@ bool BlobGeometry::gather_nearby(const Box3& region, std::size_t limit, NearbySo
   rtcPointQuery(span_scene_, &query, &context, nearby_candidate, &q);
   if (q.overflow) return false;
   // Rank order, whatever order the traversal met them in: groups of
-  // neighbours for the list's boxes, and the order first_crossing_in_order()
-  // puts its spans in.
+  // neighbours for the list's boxes.
   std::sort(scratch.begin(), scratch.end(), [&](std::uint32_t a, std::uint32_t b) { return rank_[a] < rank_[b]; });
-  for (const std::uint32_t i : scratch) nearby.add(field_.sources[i], i);
+  for (const std::uint32_t i : scratch) nearby.add(field_.sources[i], i, rank_[i]);
   return true;
 }
 
@@ -329,19 +357,17 @@ double BlobGeometry::first_crossing_near(const NearbySources& nearby, const RayI
   });
 }
 
-double BlobGeometry::first_crossing_in_order(const RayInterval& ray, FieldRay& tracer, TraceStats& stats,
+double BlobGeometry::first_crossing_traversed(const RayInterval& ray, FieldRay& tracer, TraceStats& stats,
                                              CrossingQuery query) const {
   return first_crossing_of(ray, tracer, stats, query, [&](const RayInterval& clipped) {
     ++stats.span_queries;
     stats.span_candidates += query_spans(&clipped, &tracer, 1u);
-    std::sort(tracer.spans.begin(), tracer.spans.end(),
-              [&](const RaySpan& x, const RaySpan& y) { return rank_[x.source] < rank_[y.source]; });
   });
 }
 
 void BlobGeometry::field_bounds(const RTCBoundsFunctionArguments* args) {
   const auto* self = static_cast<const BlobGeometry*>(args->geometryUserPtr);
-  store_bounds(self->bounds_, args->bounds_o);
+  store_bounds(self->bounds_, self->margin_, args->bounds_o);
 }
 
 void BlobGeometry::field_intersect(const RTCIntersectFunctionNArguments* args) {
@@ -354,10 +380,10 @@ void BlobGeometry::field_intersect(const RTCIntersectFunctionNArguments* args) {
   self->first_crossings(lanes.rays.data(), lanes.count, context->tracers->data(), *context->stats, t);
   for (int j = 0; j < lanes.count; ++j) {
     if (t[j] < 0.0) continue;
-    const unsigned i = lanes.lane[j];
+    const unsigned i = lanes.lane[j], k = lanes.index[j];
     const RayInterval& ray = lanes.rays[j];
-    context->t[i] = t[j];
-    const SurfaceSample& surface = context->surface[i] =
+    context->t[k] = t[j];
+    const SurfaceSample& surface = context->surface[k] =
         (*context->tracers)[j].surface_at(self->field_, ray.origin, ray.direction, t[j]);
     RTCRayN_tfar(rays, args->N, i) = static_cast<float>(t[j]);
     RTCHitN_Ng_x(hits, args->N, i) = static_cast<float>(surface.normal.x());

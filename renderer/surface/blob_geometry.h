@@ -25,13 +25,15 @@ using FieldRayLanes = std::array<FieldRay, kMaxPacket>;
 
 // The context every rtcIntersect/rtcOccluded (1, 4, 8 or 16 wide) on a scene
 // holding a BlobGeometry must pass. Embree hands the RTCIntersectContext
-// pointer back to the callbacks, so it has to be the first member.
+// pointer back to the callbacks, so it has to be the first member. Each ray's
+// id must be its index in the caller's batch, below kMaxPacket
+// (ray_packets.h): the results go to that slot.
 struct FieldRayContext {
   RTCIntersectContext embree;
   FieldRayLanes* tracers = nullptr;  // per-thread scratch
   TraceStats* stats = nullptr;       // per-thread counters
-  // Filled for each lane whose hit the field geometry accepts (valid while
-  // that lane's geomID is the field's).
+  // Filled for each ray, by its id, whose hit the field geometry accepts
+  // (valid while that ray's geomID is the field's).
   std::array<double, kMaxPacket> t{};
   std::array<SurfaceSample, kMaxPacket> surface{};
 
@@ -88,10 +90,11 @@ class BlobGeometry {
   double first_crossing_near(const NearbySources& nearby, const RayInterval& ray, FieldRay& tracer,
                              TraceStats& stats, CrossingQuery query = CrossingQuery::first) const;
 
-  // The same answer by one traversal of the span BVH, its spans put in
-  // spatial rank order first, as first_crossing_near() has them: either way a ray
-  // gets the same spans in the same order, so the same result to the bit.
-  double first_crossing_in_order(const RayInterval& ray, FieldRay& tracer, TraceStats& stats,
+  // The same answer by one traversal of the span BVH. The spans come in
+  // another order than first_crossing_near() lists them, and the answer
+  // does not depend on it (FieldRay), so either way it is the same to the
+  // bit.
+  double first_crossing_traversed(const RayInterval& ray, FieldRay& tracer, TraceStats& stats,
                                  CrossingQuery query = CrossingQuery::first) const;
 
  private:
@@ -100,7 +103,7 @@ class BlobGeometry {
   // collect_spans for the rays whose bit is set in `lanes`: one traversal,
   // a packet one when there are several.
   std::size_t query_spans(const RayInterval* rays, FieldRay* tracers, unsigned lanes) const;
-  // What first_crossing_near() and first_crossing_in_order() share: the ray
+  // What first_crossing_near() and first_crossing_traversed() share: the ray
   // clipped to the field's bounds, its spans collected there by
   // `collect_spans` (given the clipped ray), and the crossing among them.
   template <class CollectSpans>
@@ -113,9 +116,11 @@ class BlobGeometry {
   const BlobField& field_;
   TraceSettings settings_;
   Box3 bounds_;
+  double margin_;  // how far the boxes Embree sees are widened (embree_bounds.h)
   double first_window_;  // length of the first query window along a ray
   std::vector<std::uint32_t> rank_;  // each source's spatial rank (spatial_rank.h)
   RTCDevice device_;
+  int packet_width_;  // the span queries' (ray_packets.h)
   RTCScene span_scene_ = nullptr;
 };
 

@@ -7,12 +7,12 @@
 
 namespace hsb {
 
-// Lane i of an N-wide ray packet; a single RTCRayHit is the packet with N = 1.
-// The ray meets the geometries whose mask shares a bit with `mask`.
-inline void set_embree_ray(RTCRayHitN* rayhit, unsigned n, unsigned i, const Vec3& o, const Vec3& d,
+// Lane i of an N-wide ray packet; a single RTCRay is the packet with N = 1.
+// `index` is the caller's number for the ray, which callbacks read back
+// (ray_packets.h). The ray meets the geometries whose mask shares a bit
+// with `mask`.
+inline void set_embree_ray(RTCRayN* ray, unsigned n, unsigned i, unsigned index, const Vec3& o, const Vec3& d,
                            float tnear, float tfar, unsigned mask = 0xFFFFFFFFu) {
-  RTCRayN* ray = RTCRayHitN_RayN(rayhit, n);
-  RTCHitN* hit = RTCRayHitN_HitN(rayhit, n);
   RTCRayN_org_x(ray, n, i) = float(o.x());
   RTCRayN_org_y(ray, n, i) = float(o.y());
   RTCRayN_org_z(ray, n, i) = float(o.z());
@@ -23,15 +23,22 @@ inline void set_embree_ray(RTCRayHitN* rayhit, unsigned n, unsigned i, const Vec
   RTCRayN_tfar(ray, n, i) = tfar;
   RTCRayN_time(ray, n, i) = 0.0f;
   RTCRayN_mask(ray, n, i) = mask;
-  RTCRayN_id(ray, n, i) = 0;
+  RTCRayN_id(ray, n, i) = index;
   RTCRayN_flags(ray, n, i) = 0;
+}
+
+// The same with its hit record cleared, for rtcIntersect.
+inline void set_embree_ray(RTCRayHitN* rayhit, unsigned n, unsigned i, unsigned index, const Vec3& o, const Vec3& d,
+                           float tnear, float tfar, unsigned mask = 0xFFFFFFFFu) {
+  set_embree_ray(RTCRayHitN_RayN(rayhit, n), n, i, index, o, d, tnear, tfar, mask);
+  RTCHitN* hit = RTCRayHitN_HitN(rayhit, n);
   RTCHitN_geomID(hit, n, i) = RTC_INVALID_GEOMETRY_ID;
   RTCHitN_instID(hit, n, i, 0) = RTC_INVALID_GEOMETRY_ID;
 }
 
 inline RTCRayHit make_embree_ray(const Vec3& o, const Vec3& d, float tnear, float tfar) {
   RTCRayHit rh{};
-  set_embree_ray(reinterpret_cast<RTCRayHitN*>(&rh), 1, 0, o, d, tnear, tfar);
+  set_embree_ray(reinterpret_cast<RTCRayHitN*>(&rh), 1, 0, 0, o, d, tnear, tfar);
   return rh;
 }
 

@@ -34,7 +34,7 @@ void FieldUpperBound::reset(const KernelTraits& kernel, const std::vector<RaySpa
   ahead_sum_ = 0.0;
   for (std::size_t i = 0; i < spans.size(); ++i) {
     const RaySpan& s = spans[i];
-    const double t = std::clamp(s.t_c, s.t0, s.t1);
+    const double t = peak_t(s);
     if (t > tmin) {
       ahead_scratch_.push_back({t, std::uint32_t(i)});
       ahead_sum_ += peaks[i];

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace hsb {
@@ -47,6 +48,26 @@ double FieldRay::refine(const BlobField& field, double lo, double hi, double f_l
                   tolerance, 0.0, 100);
 }
 
+// Where the peaks of the ray's sources lie on average, weighted by their
+// height: a mean of fractions of [tmin, last_peak], summed in fixed point.
+// Integer sums are exact, so the mean is the same to the bit in whatever
+// order the spans were collected (BVH traversal order depends on the
+// instruction set); a float sum's last bits would not be, and they would
+// reach the picture through the crossing found below this bound.
+double FieldRay::crowd_peak(double tmin, double last_peak) const {
+  constexpr double unit = 0x1p40;  // each term ≤ 2⁴⁰: 2²³ of them fit in 64 bits
+  const double length = last_peak - tmin;
+  if (!(length > 0.0)) return tmin;
+  std::uint64_t height = 0, moment = 0;
+  for (std::size_t i = 0; i < spans.size(); ++i) {
+    const double p = std::clamp(peaks_[i], 0.0, 1.0);
+    height += std::uint64_t(std::llround(p * unit));
+    moment += std::uint64_t(std::llround(p * ((peak_t(spans[i]) - tmin) / length) * unit));
+  }
+  if (height == 0) return tmin;
+  return tmin + std::min(1.0, double(moment) / double(height)) * length;
+}
+
 double FieldRay::first_crossing(const BlobField& field, double tmin, double tmax,
                                 const TraceSettings& settings, TraceStats& stats, CrossingQuery query) {
   // Bounds from the sources one at a time, before anything is ordered, in
@@ -56,17 +77,16 @@ double FieldRay::first_crossing(const BlobField& field, double tmin, double tmax
   // value on the ray: when even that is below C, so is F.
   const double c = field.isovalue;
   const double g_level = level_g(field.kernel, c);
-  double upper = -1.0, at_start = 0.0, peaks = 0.0, weighted = 0.0;
+  double upper = -1.0, at_start = 0.0, peaks = 0.0, last_peak = tmin;
   peaks_.resize(spans.size());
   for (std::size_t i = 0; i < spans.size(); ++i) {
     const RaySpan& s = spans[i];
     const double t = single_source_entry(s, g_level, tmin, tmax);
     if (t >= 0.0 && (upper < 0.0 || t < upper)) upper = t;
     if (s.t0 <= tmin) at_start += kernel_value(field.kernel, s.g(tmin));
-    const double t_peak = std::clamp(s.t_c, s.t0, s.t1);  // g is smallest there
-    peaks_[i] = kernel_value(field.kernel, s.g(t_peak));
+    peaks_[i] = kernel_value(field.kernel, s.g(peak_t(s)));
     peaks += peaks_[i];
-    weighted += peaks_[i] * t_peak;
+    last_peak = std::max(last_peak, peak_t(s));
   }
   stats.kernel_evaluations += 2 * spans.size();
   stats.spans += spans.size();
@@ -77,7 +97,7 @@ double FieldRay::first_crossing(const BlobField& field, double tmin, double tmax
   // A crowd of sources that no single one reaches C in (a blended cap)
   // is most likely to lift F over C where they peak together: F there,
   // if it is C or more, bounds the first crossing too.
-  const double t_crowd = weighted / peaks;
+  const double t_crowd = crowd_peak(tmin, last_peak);
   if (upper < 0.0 || t_crowd < upper) {
     double f = 0.0;
     for (const RaySpan& s : spans)
@@ -158,7 +178,15 @@ SurfaceSample FieldRay::surface_at(const BlobField& field, const Vec3& origin,
   double weight = 0.0, best = -1.0, scalar = 0.0;
   Vec3 color = Vec3::Zero();
   SurfaceSample sample;
-  for (const RaySpan& span : spans) {
+  // The sources that reach x, summed in spatial rank order: the same bits
+  // whatever order the spans were collected in.
+  contributing_.clear();
+  for (std::uint32_t i = 0; i < spans.size(); ++i)
+    if (spans[i].g(t) < 1.0 + 1e-9) contributing_.push_back(i);  // the rest are zero at x
+  std::sort(contributing_.begin(), contributing_.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return spans[a].rank < spans[b].rank; });
+  for (const std::uint32_t i : contributing_) {
+    const RaySpan& span = spans[i];
     const BlobSource& s = field.sources[span.source];
     // q = W(x − c), g = |q|² and ∇g = 2 Wᵀ q.
     const Mat3 w = shape_matrix(s);

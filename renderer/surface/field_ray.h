@@ -49,7 +49,9 @@ struct SurfaceSample {
 class FieldRay {
  public:
   // The caller fills these with every source whose support the ray crosses
-  // within [tmin, tmax] (in any order), then calls first_crossing().
+  // within [tmin, tmax], in any order, then calls first_crossing(). The
+  // answers do not depend on the order, to the bit: every sum that reaches
+  // them is taken in spatial rank order or is exact.
   std::vector<RaySpan> spans;
 
   // Returns the smallest t in [tmin, tmax] with F(t) ≥ C (the ray's first
@@ -85,6 +87,7 @@ class FieldRay {
   // active source, and F < C not proven. False when none is left.
   bool next_segment(const BlobField& field, double tmax, double& start, double& end, TraceStats& stats);
 
+  double crowd_peak(double tmin, double last_peak) const;
   double value_at(const BlobField& field, double t, TraceStats& stats) const;
   double slope_bound_at(const BlobField& field, double t) const;
   double refine(const BlobField& field, double lo, double hi, double f_lo, double f_hi,
@@ -93,6 +96,7 @@ class FieldRay {
   SupportSweep sweep_;
   FieldUpperBound bound_;
   std::vector<double> peaks_;  // each span's largest value on its interval
+  mutable std::vector<std::uint32_t> contributing_;  // surface_at()'s scratch
 };
 
 // Whether exact_crossing() handles this field.

@@ -7,7 +7,7 @@ void NearbySources::clear() {
   size_ = 0;
 }
 
-void NearbySources::add(const BlobSource& source, std::uint32_t index) {
+void NearbySources::add(const BlobSource& source, std::uint32_t index, std::uint32_t rank) {
   if (size_ == used_chunks_ * kMaxPacket) {
     if (used_chunks_ == chunks_.size()) {
       chunks_.emplace_back();
@@ -24,6 +24,7 @@ void NearbySources::add(const BlobSource& source, std::uint32_t index) {
   for (int k = 0; k < 9; ++k) chunk.w[k][lane] = source.w[std::size_t(k)];
   for (int k = 0; k < 3; ++k) chunk.c[k][lane] = source.centre[std::size_t(k)];
   chunk.index[lane] = index;
+  chunk.rank[lane] = rank;
   ++size_;
 }
 
@@ -36,7 +37,8 @@ void NearbySources::collect_spans(const Vec3& o, const Vec3& d, double tmin, dou
     const SourceLanes& chunk = chunks_[c];
     for (unsigned entered = source_spans(chunk, o, d, tmin, tmax, lanes); entered; entered &= entered - 1) {
       const int i = __builtin_ctz(entered);
-      spans.push_back(RaySpan{lanes.t0[i], lanes.t1[i], lanes.a[i], lanes.t_c[i], lanes.g_min[i], chunk.index[i]});
+      spans.push_back(RaySpan{lanes.t0[i], lanes.t1[i], lanes.a[i], lanes.t_c[i], lanes.g_min[i], chunk.index[i],
+                              chunk.rank[i]});
     }
   }
 }

@@ -1,6 +1,7 @@
 #include "renderer/surface/ray_span.h"
 
 #include <cmath>
+#include <cstddef>
 
 namespace hsb {
 
@@ -67,34 +68,32 @@ inline void store(const LaneSpan& span, SpanLanes& spans, int i) {
   spans.g_min[i] = span.g_min;
 }
 
-}  // namespace
-
-// The span BVH's callback spends most of a render here, one source against
-// a packet of rays. The lane loop has no branches so the compiler turns it
-// into SIMD; the clones let one portable binary use AVX-512 or AVX2 where
-// the processor has them (picked once, when the program loads).
-__attribute__((target_clones("avx512f", "avx2", "default")))
-unsigned ray_spans(const BlobSource& s, const RayLanes& __restrict rays, int count,
-                   SpanLanes& __restrict spans) {
+// The lane loops. They have no branches, so the compiler turns them into
+// SIMD at whatever width the instruction set of the function they are
+// inlined into allows (below): the same operations in the same order on
+// every lane, so every variant gives the same bits.
+__attribute__((always_inline)) inline unsigned ray_spans_lanes(const BlobSource& s, const RayLanes& __restrict rays,
+                                                               int first, int count, SpanLanes& __restrict spans) {
   const double w[9] = {s.w[0], s.w[1], s.w[2], s.w[3], s.w[4], s.w[5], s.w[6], s.w[7], s.w[8]};
   const double cx = s.centre[0], cy = s.centre[1], cz = s.centre[2];
   std::int64_t inside[kMaxPacket];  // as wide as a double, so the loop keeps one vector width
-  for (int i = 0; i < count; ++i) {
+  const int end = first + count;
+  for (int i = first; i < end; ++i) {
     const LaneSpan span = span_on_lane(w, cx, cy, cz, rays.ox[i], rays.oy[i], rays.oz[i], rays.dx[i], rays.dy[i],
                                        rays.dz[i], rays.tmin[i], rays.tmax[i]);
     store(span, spans, i);
     inside[i] = span.enters;
   }
   unsigned mask = 0;
-  for (int i = 0; i < count; ++i) mask |= unsigned(inside[i]) << i;
+  for (int i = first; i < end; ++i) mask |= unsigned(inside[i]) << i;
   return mask;
 }
 
 // The same formula the other way round: one ray against a packet of
 // sources (a bundle of short rays tested against the sources near them).
-__attribute__((target_clones("avx512f", "avx2", "default")))
-unsigned source_spans(const SourceLanes& __restrict sources, const Vec3& o, const Vec3& d, double tmin, double tmax,
-                      SpanLanes& __restrict spans) {
+__attribute__((always_inline)) inline unsigned source_spans_lanes(const SourceLanes& __restrict sources, const Vec3& o,
+                                                                  const Vec3& d, double tmin, double tmax,
+                                                                  SpanLanes& __restrict spans) {
   const double ox = o.x(), oy = o.y(), oz = o.z(), dx = d.x(), dy = d.y(), dz = d.z();
   std::int64_t inside[kMaxPacket];
   for (int i = 0; i < kMaxPacket; ++i) {  // all lanes: unused ones hold a source that never matches
@@ -110,7 +109,49 @@ unsigned source_spans(const SourceLanes& __restrict sources, const Vec3& o, cons
   return mask & ((1u << sources.count) - 1u);
 }
 
-bool ray_span(const BlobSource& s, std::uint32_t index, const Vec3& o, const Vec3& d, double tmin,
+// One variant of both loops per instruction set, each compiled for that set
+// alone (GCC's target_clones would pick one when the program loads, with no
+// way to force another for a test or a reproduction).
+#define HSB_SPAN_KERNELS(suffix, target_isa)                                                                  \
+  __attribute__((target(target_isa))) unsigned ray_spans_##suffix(                                            \
+      const BlobSource& s, const RayLanes& __restrict rays, int first, int count, SpanLanes& __restrict spans) { \
+    return ray_spans_lanes(s, rays, first, count, spans);                                                     \
+  }                                                                                                           \
+  __attribute__((target(target_isa))) unsigned source_spans_##suffix(const SourceLanes& __restrict sources,   \
+                                                                     const Vec3& o, const Vec3& d, double tmin, \
+                                                                     double tmax, SpanLanes& __restrict spans) { \
+    return source_spans_lanes(sources, o, d, tmin, tmax, spans);                                              \
+  }
+
+HSB_SPAN_KERNELS(sse2, "sse2")
+HSB_SPAN_KERNELS(sse42, "sse4.2,popcnt")
+HSB_SPAN_KERNELS(avx, "avx")
+HSB_SPAN_KERNELS(avx2, "avx2,fma,bmi,bmi2")
+HSB_SPAN_KERNELS(avx512, "avx512f,avx512cd,avx512dq,avx512bw,avx512vl")
+#undef HSB_SPAN_KERNELS
+
+// In InstructionSet order.
+constexpr SpanKernels kKernels[] = {
+    {ray_spans_sse2, source_spans_sse2}, {ray_spans_sse42, source_spans_sse42}, {ray_spans_avx, source_spans_avx},
+    {ray_spans_avx2, source_spans_avx2}, {ray_spans_avx512, source_spans_avx512},
+};
+
+}  // namespace
+
+const SpanKernels& span_kernels(InstructionSet isa) { return kKernels[std::size_t(isa)]; }
+
+// The span BVH's callback spends most of a render here, one source against
+// a packet of rays.
+unsigned ray_spans(const BlobSource& s, const RayLanes& rays, int first, int count, SpanLanes& spans) {
+  return span_kernels(active_isa()).ray_spans(s, rays, first, count, spans);
+}
+
+unsigned source_spans(const SourceLanes& sources, const Vec3& o, const Vec3& d, double tmin, double tmax,
+                      SpanLanes& spans) {
+  return span_kernels(active_isa()).source_spans(sources, o, d, tmin, tmax, spans);
+}
+
+bool ray_span(const BlobSource& s, std::uint32_t index, std::uint32_t rank, const Vec3& o, const Vec3& d, double tmin,
               double tmax, RaySpan& span) {
   // Scalar: a lone ray would pay more for the packet version's dispatch and
   // lane set-up than it saves.
@@ -119,7 +160,7 @@ bool ray_span(const BlobSource& s, std::uint32_t index, const Vec3& o, const Vec
   if (!r.line_enters()) return false;
   const LaneSpan lane = finish_span(r, tmin, tmax);
   if (!lane.enters) return false;
-  span = RaySpan{lane.t0, lane.t1, lane.a, lane.t_c, lane.g_min, index};
+  span = RaySpan{lane.t0, lane.t1, lane.a, lane.t_c, lane.g_min, index, rank};
   return true;
 }
 

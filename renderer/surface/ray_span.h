@@ -7,6 +7,7 @@
 
 #include "field/sym3.h"
 #include "renderer/surface/blob_field.h"
+#include "renderer/surface/instruction_set.h"
 
 namespace hsb {
 
@@ -22,9 +23,13 @@ struct RaySpan {
   double t_c;       // closest approach: K rises before it and falls after it
   double g_min;     // g(t_c)
   std::uint32_t source;
+  std::uint32_t rank = 0;  // the source's spatial rank (spatial_rank.h): the order a ray's spans are kept in
 
   double g(double t) const { return a * (t - t_c) * (t - t_c) + g_min; }
 };
+
+// Where g is smallest on the span: the source's peak along the ray.
+inline double peak_t(const RaySpan& s) { return s.t_c < s.t0 ? s.t0 : (s.t_c > s.t1 ? s.t1 : s.t_c); }
 
 // Up to kMaxPacket rays o + t d, t ∈ [tmin, tmax], as structure of arrays:
 // one source is tested against all of them in SIMD lanes.
@@ -40,13 +45,14 @@ struct RayLanes {
   }
 };
 
-// The spans of one source on lanes [0, count) of `rays`, in `spans`
-// (fields t0, t1, a, t_c, g_min; `source` is left to the caller). Returns a
-// bit mask of the lanes whose ray enters the source's support.
+// The spans of one source on lanes [first, first + count) of `rays`, in the
+// same lanes of `spans` (fields t0, t1, a, t_c, g_min; `source` is left to
+// the caller). Returns a bit mask of the lanes whose ray enters the
+// source's support.
 struct SpanLanes {
   alignas(64) double t0[kMaxPacket], t1[kMaxPacket], a[kMaxPacket], t_c[kMaxPacket], g_min[kMaxPacket];
 };
-unsigned ray_spans(const BlobSource& s, const RayLanes& rays, int count, SpanLanes& spans);
+unsigned ray_spans(const BlobSource& s, const RayLanes& rays, int first, int count, SpanLanes& spans);
 
 // Up to kMaxPacket sources as structure of arrays, W's rows and the centres
 // in double: one ray is tested against all of them in SIMD lanes.
@@ -54,6 +60,7 @@ struct SourceLanes {
   alignas(64) double w[9][kMaxPacket];
   alignas(64) double c[3][kMaxPacket];
   std::uint32_t index[kMaxPacket];
+  std::uint32_t rank[kMaxPacket];
   int count = 0;  // lanes [0, count) hold sources
 };
 
@@ -63,9 +70,19 @@ struct SourceLanes {
 unsigned source_spans(const SourceLanes& sources, const Vec3& o, const Vec3& d, double tmin, double tmax,
                       SpanLanes& spans);
 
+// The two lane loops above compiled for one instruction set; ray_spans()
+// and source_spans() call those of active_isa(). Every variant gives the
+// same bits (the tests hold them to it).
+struct SpanKernels {
+  unsigned (*ray_spans)(const BlobSource& s, const RayLanes& rays, int first, int count, SpanLanes& spans);
+  unsigned (*source_spans)(const SourceLanes& sources, const Vec3& o, const Vec3& d, double tmin, double tmax,
+                           SpanLanes& spans);
+};
+const SpanKernels& span_kernels(InstructionSet isa);
+
 // The same for one ray: fills `span` and returns true when the ray enters
-// the support of `s`.
-bool ray_span(const BlobSource& s, std::uint32_t index, const Vec3& o, const Vec3& d, double tmin,
+// the support of `s` (source number `index`, spatial rank `rank`).
+bool ray_span(const BlobSource& s, std::uint32_t index, std::uint32_t rank, const Vec3& o, const Vec3& d, double tmin,
               double tmax, RaySpan& span);
 
 }  // namespace hsb

@@ -54,7 +54,7 @@ void SupportSweep::remove(std::uint32_t i) {
 void SupportSweep::sort_active() {
   const std::vector<RaySpan>& spans = *spans_;
   std::sort(active_.begin(), active_.end(), [&](std::uint32_t x, std::uint32_t y) {
-    return spans[x].t0 < spans[y].t0 || (spans[x].t0 == spans[y].t0 && x < y);
+    return spans[x].t0 < spans[y].t0 || (spans[x].t0 == spans[y].t0 && spans[x].rank < spans[y].rank);
   });
   for (std::size_t k = 0; k < active_.size(); ++k) slot_[active_[k]] = std::int32_t(k);
 }

@@ -37,8 +37,9 @@ class SupportSweep {
 
   // The active spans' indices; in no particular order until sort_active().
   const std::vector<std::uint32_t>& active() const { return active_; }
-  // Puts the active set in entry order, so sums over it do not depend on
-  // the order of the walk's updates.
+  // Puts the active set in entry order (ties by spatial rank), so sums over
+  // it depend neither on the order of the walk's updates nor on the order
+  // the spans were collected in.
   void sort_active();
 
  private:
