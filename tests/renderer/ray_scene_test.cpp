@@ -22,7 +22,7 @@ Traced trace_both(const RayScene& scene, const Vec3& o, const Vec3& d) {
   TraceStats stats;
   FieldRayContext shadow_context(tracers, stats);
   RTCRayHit shadow{};
-  set_embree_ray(reinterpret_cast<RTCRayHitN*>(&shadow), 1, 0, o, d, 0.0f, INFINITY, RayScene::kShadowRayMask);
+  set_embree_ray(reinterpret_cast<RTCRayHitN*>(&shadow), 1, 0, 0, o, d, 0.0f, INFINITY, RayScene::kShadowRayMask);
   rtcOccluded1(scene.get(), &shadow_context.embree, &shadow.ray);
   return {trace_camera_ray(scene, o, d).geom_id, shadow.ray.tfar < 0.0f};
 }

@@ -1,0 +1,118 @@
+// Every instruction set the renderer can trace with: the switch that picks
+// one, and the span kernels compiled for each, held to the same bits.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <random>
+
+#include "renderer/surface/instruction_set.h"
+#include "renderer/surface/ray_span.h"
+
+namespace hsb {
+namespace {
+
+TEST(InstructionSet, NamesRoundTripAndUnknownOnesAreRefused) {
+  for (InstructionSet isa : {InstructionSet::sse2, InstructionSet::sse42, InstructionSet::avx, InstructionSet::avx2,
+                             InstructionSet::avx512})
+    EXPECT_EQ(parse_isa(isa_name(isa)), isa);
+  EXPECT_EQ(parse_isa("sse4.2"), InstructionSet::sse42);
+  EXPECT_FALSE(parse_isa("avx3"));
+  EXPECT_FALSE(parse_isa("AVX2"));
+  EXPECT_FALSE(parse_isa(""));
+}
+
+TEST(InstructionSet, TheProcessorsSetsAreALadderFromSse2) {
+  // Every x86-64 processor has SSE2, and each set includes the ones below.
+  const std::vector<InstructionSet> isas = supported_isas();
+  ASSERT_FALSE(isas.empty());
+  EXPECT_EQ(isas.front(), InstructionSet::sse2);
+  for (std::size_t i = 0; i < isas.size(); ++i) EXPECT_EQ(int(isas[i]), int(i));
+  EXPECT_EQ(best_supported_isa(), isas.back());
+  // Whatever the suite was started with (HSB_ISA) is one of them.
+  EXPECT_TRUE(processor_supports(active_isa()));
+}
+
+void expect_same_bits(double x, double y, const char* what, InstructionSet isa, int lane) {
+  EXPECT_EQ(std::memcmp(&x, &y, sizeof x), 0) << what << " differs on " << isa_name(isa) << " lane " << lane << ": " << x
+                                              << " against " << y;
+}
+
+// Sources of every shape and distance, rays from near and far: each
+// variant's lanes must equal the scalar ray_span() bit for bit, so a ray's
+// spans never depend on the processor or on how it was packed.
+TEST(SpanKernels, EveryInstructionSetGivesTheScalarBits) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::normal_distribution<double> normal;
+  int entered = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const Eigen::Quaterniond q(normal(rng), normal(rng), normal(rng), normal(rng));
+    const Vec3 radii(std::pow(10.0, unit(rng)), std::pow(10.0, unit(rng) - 1.0), 0.05);
+    const BlobSource source =
+        make_blob_source(Vec3(unit(rng), unit(rng), unit(rng)), q.normalized().toRotationMatrix(), radii, 1.3, {1, 1, 1});
+    RayLanes rays;
+    const double distance = std::pow(10.0, 3.0 * (unit(rng) + 1.0));  // 1 to 10⁶ away
+    for (int i = 0; i < kMaxPacket; ++i) {
+      const Vec3 o = distance * Vec3(normal(rng), normal(rng), normal(rng)).normalized();
+      const Vec3 d = (0.5 * Vec3(unit(rng), unit(rng), unit(rng)) - o).normalized();
+      rays.set(i, o, d, i % 3 == 0 ? 0.0 : distance * 0.9, i % 4 == 0 ? INFINITY : distance * 1.1);
+    }
+    const int first = trial % 2 ? 0 : 8, count = trial % 2 ? kMaxPacket : 8;
+    for (InstructionSet isa : supported_isas()) {
+      SpanLanes spans;
+      const unsigned mask = span_kernels(isa).ray_spans(source, rays, first, count, spans);
+      for (int i = first; i < first + count; ++i) {
+        RaySpan alone;
+        const bool enters = ray_span(source, 7, 0, Vec3(rays.ox[i], rays.oy[i], rays.oz[i]),
+                                     Vec3(rays.dx[i], rays.dy[i], rays.dz[i]), rays.tmin[i], rays.tmax[i], alone);
+        ASSERT_EQ(bool(mask & (1u << i)), enters) << isa_name(isa) << " lane " << i;
+        if (!enters) continue;
+        ++entered;
+        expect_same_bits(spans.t0[i], alone.t0, "t0", isa, i);
+        expect_same_bits(spans.t1[i], alone.t1, "t1", isa, i);
+        expect_same_bits(spans.a[i], alone.a, "a", isa, i);
+        expect_same_bits(spans.t_c[i], alone.t_c, "t_c", isa, i);
+        expect_same_bits(spans.g_min[i], alone.g_min, "g_min", isa, i);
+      }
+      EXPECT_EQ(mask & ~(((1u << count) - 1u) << first), 0u) << "lanes outside the asked ones";
+    }
+
+    // One ray against sixteen sources, the other way round.
+    SourceLanes lanes;
+    std::vector<BlobSource> listed;
+    for (int k = 0; k < kMaxPacket - trial % 5; ++k) {
+      const BlobSource s = make_blob_source(Vec3(unit(rng), unit(rng), unit(rng)), Mat3::Identity(),
+                                            Vec3(0.3, 0.2, 0.1) * (1.0 + unit(rng)), 1.3, {1, 1, 1});
+      for (int r = 0; r < 9; ++r) lanes.w[r][k] = s.w[std::size_t(r)];
+      for (int c = 0; c < 3; ++c) lanes.c[c][k] = s.centre[std::size_t(c)];
+      lanes.index[k] = std::uint32_t(k);
+      listed.push_back(s);
+    }
+    lanes.count = int(listed.size());
+    for (int k = lanes.count; k < kMaxPacket; ++k) {  // unused lanes: a source no ray meets
+      for (int r = 0; r < 9; ++r) lanes.w[r][k] = 0.0;
+      for (int c = 0; c < 3; ++c) lanes.c[c][k] = 0.0;
+    }
+    const Vec3 o(rays.ox[0], rays.oy[0], rays.oz[0]), d = (Vec3(unit(rng), unit(rng), unit(rng)) * 0.3 - o).normalized();
+    for (InstructionSet isa : supported_isas()) {
+      SpanLanes spans;
+      const unsigned mask = span_kernels(isa).source_spans(lanes, o, d, 0.0, INFINITY, spans);
+      for (int k = 0; k < lanes.count; ++k) {
+        RaySpan alone;
+        const bool enters = ray_span(listed[std::size_t(k)], 0, 0, o, d, 0.0, INFINITY, alone);
+        ASSERT_EQ(bool(mask & (1u << k)), enters) << isa_name(isa) << " source " << k;
+        if (!enters) continue;
+        ++entered;
+        expect_same_bits(spans.t0[k], alone.t0, "t0", isa, k);
+        expect_same_bits(spans.t1[k], alone.t1, "t1", isa, k);
+        expect_same_bits(spans.g_min[k], alone.g_min, "g_min", isa, k);
+      }
+    }
+  }
+  EXPECT_GT(entered, 2000);  // the rays did meet the sources
+}
+
+}  // namespace
+}  // namespace hsb
