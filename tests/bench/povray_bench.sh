@@ -10,7 +10,8 @@
 # processes, each three times (the median is reported: one busy moment on a
 # shared machine moves a single run by ±20%). Prints both times, their ratio
 # and the fraction of pixels where the two images agree on surface versus
-# background. Not part of the test suite: it measures, it does not judge.
+# background, and the instruction set hsb used (HSB_ISA=avx2 forces one).
+# Not part of the test suite: it measures, it does not judge.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 scripts/setup.sh > /dev/null
@@ -67,3 +68,5 @@ while (($# >= 2)); do
 done
 commit=$(git rev-parse --short HEAD 2> /dev/null || echo unknown)
 echo "(${size}x${size}, 1 sample per pixel, one light with shadows; median whole-process times of 3 runs on $(nproc) cores; hsb at $commit)"
+# What hsb traced with (HSB_ISA forces another set), and on what.
+echo "($(sed -n 's/^model name[^:]*: //p' /proc/cpuinfo | head -1); hsb $(./build/hsb --version | sed -n 2p))"

@@ -23,6 +23,7 @@
 #include "renderer/app/process_memory.h"
 #include "renderer/render/ray_scene.h"
 #include "renderer/render/render_image.h"
+#include "renderer/surface/instruction_set.h"
 
 namespace {
 
@@ -96,6 +97,7 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
   }
   std::printf("(1000x1000, 1 sample per pixel, one light with shadows; Mrays/s from the time spent in\n"
-              " camera-ray and shadow-ray queries)\n");
+              " camera-ray and shadow-ray queries; instruction set %s, HSB_ISA forces another)\n",
+              isa_name(device.isa()));
   return 0;
 }
