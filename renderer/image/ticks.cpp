@@ -46,10 +46,6 @@ std::string power_of_ten(int exponent) { return "10" + superscript(exponent); }
 TickSet linear_ticks(double lo, double hi, int target) {
   TickSet set;
   if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi)) return set;
-  double step = round_step(hi - lo, target);
-  // Fewer than two ticks inside is no scale: halve the step until there are.
-  for (int tries = 0; tries < 4 && std::floor(hi / step) - std::ceil(lo / step) < 1.0; ++tries)
-    step = round_step(step, 2);
   const double largest = std::max(std::fabs(lo), std::fabs(hi));
   // Plain digits between 10⁻³ and 10⁴; beyond, a shared factor of 10ᵉ
   // (a multiple of three, as engineers write units).
@@ -57,9 +53,28 @@ TickSet linear_ticks(double lo, double hi, int target) {
   if (largest >= 1e4 || largest < 1e-3) exponent = 3 * int(std::floor(std::log10(largest) / 3.0));
   const double unit = std::pow(10.0, exponent);
   if (exponent != 0) set.factor = "\u00d7" + power_of_ten(exponent);
+  // A range too narrow for round steps between its values to be told
+  // apart (constant data up to round-off): one tick, in the middle, with
+  // six significant digits.
+  if (hi - lo <= 1e-9 * largest) {
+    const double mid = lo + 0.5 * (hi - lo);
+    const int digits = mid == 0.0 ? 0 : int(std::floor(std::log10(std::fabs(mid) / unit)));
+    set.ticks.push_back({mid, fixed(mid / unit, std::max(0, 5 - digits))});
+    return set;
+  }
+  // A range across the whole of double's overflows its width: then the
+  // step for half of it, doubled.
+  const double span = hi - lo;
+  double step = std::isfinite(span) ? round_step(span, target) : 2.0 * round_step(0.5 * hi - 0.5 * lo, target);
+  // Fewer than two ticks inside is no scale: halve the step until there are.
+  for (int tries = 0; tries < 4 && std::floor(hi / step) - std::ceil(lo / step) < 1.0; ++tries)
+    step = round_step(step, 2);
   const int decimals = std::max(0, -int(std::floor(std::log10(step / unit) + 1e-9)));
-  for (double k = std::ceil(lo / step - 1e-9); k * step <= hi * (1.0 + 1e-12) + 1e-300; k += 1.0) {
-    const double v = k * step;
+  // Counted, not stepped: k += 1 would stand still where k is beyond 2⁵³.
+  const double first = std::ceil(lo / step - 1e-9), last = std::floor(hi / step + 1e-9);
+  const int count = int(std::clamp(last - first + 1.0, 0.0, 4.0 * std::max(1, target) + 2.0));
+  for (int i = 0; i < count; ++i) {
+    const double v = (first + i) * step;
     set.ticks.push_back({v, fixed(v / unit, decimals)});
   }
   return set;
@@ -68,9 +83,18 @@ TickSet linear_ticks(double lo, double hi, int target) {
 TickSet log_ticks(double lo, double hi) {
   TickSet set;
   if (!(lo > 0.0) || !(hi > lo)) return set;
+  if (!std::isfinite(hi)) return set;
   const int first = int(std::ceil(std::log10(lo) - 1e-9)), last = int(std::floor(std::log10(hi) + 1e-9));
-  const bool fine = std::log10(hi / lo) < 2.0;
+  const bool fine = std::log10(hi) - std::log10(lo) < 2.0;
+  // Over many decades, every 2nd, 5th, 10th … power, so that at most
+  // eight labels share the bar.
+  int stride = 1;
+  for (const int s : {1, 2, 5, 10, 20, 50, 100, 200, 500}) {
+    stride = s;
+    if ((last - first) / s <= 7) break;
+  }
   for (int e = first - 1; e <= last; ++e) {
+    if (e % stride != 0) continue;
     for (const double m : {1.0, 2.0, 5.0}) {
       if (m != 1.0 && !fine) continue;
       const double v = m * std::pow(10.0, e);
