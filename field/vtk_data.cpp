@@ -34,6 +34,7 @@
 #include "field/data_error.h"
 #include "field/eigenvalue_range.h"
 #include "field/file_extension.h"
+#include "field/input_file.h"
 #include "field/mesh_field.h"
 #include "field/mesh_locator.h"
 #include "field/vector_field.h"
@@ -189,8 +190,7 @@ void check_dataset(vtkDataSet* data, const std::string& path) {
 
 // The data set in `path`; VTK's complaints end up in `vtk`.
 vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSession& vtk) {
-  if (std::filesystem::is_directory(path)) throw DataError(path + ": a directory, not a data file");
-  if (!std::filesystem::is_regular_file(path)) throw DataError(path + ": no such data file");
+  if (const std::string why = unreadable_input(path); !why.empty()) throw DataError(path + ": " + why);
 
   const std::string ext = lower_extension(path);
   vtkSmartPointer<vtkAlgorithm> reader;

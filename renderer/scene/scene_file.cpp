@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "field/file_extension.h"
+#include "field/input_file.h"
 #include "renderer/image/colormap.h"
 #include "renderer/image/image_output.h"
 #include "renderer/scene/scene_spec.h"
@@ -64,9 +65,9 @@ std::string existing_file(TableReader& table, std::string_view key, const std::s
                           const std::string& base_dir) {
   const std::filesystem::path p(file);
   const std::string path = p.is_absolute() ? file : (std::filesystem::path(base_dir) / p).lexically_normal().string();
-  if (std::filesystem::is_directory(path)) table.fail_at(key, "names a directory, not a file: " + path);
-  if (!std::filesystem::is_regular_file(path))
-    table.fail_at(key, "names no file: " + path + " (relative paths are relative to the scene file)");
+  if (const std::string why = unreadable_input(path); !why.empty())
+    table.fail_at(key, "names " + path + ": " + why +
+                           (why == "no such file" ? " (relative paths are relative to the scene file)" : ""));
   return path;
 }
 
@@ -497,7 +498,7 @@ SceneSpec load_scene_text(const std::string& text, const std::string& path, cons
 }
 
 SceneSpec load_scene(const std::string& path, const std::vector<std::string>& overrides) {
-  if (!std::filesystem::is_regular_file(path)) throw SceneError(path + ": no such scene file");
+  if (const std::string why = unreadable_input(path); !why.empty()) throw SceneError(path + ": " + why);
   std::ifstream in(path, std::ios::binary);
   std::ostringstream text;
   text << in.rdbuf();

@@ -4,6 +4,7 @@
 // test breaks exactly one thing.
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -212,7 +213,15 @@ TEST_F(BadData, RandomBytesWithAVtkExtension) {
 TEST_F(BadData, ADirectoryNamedLikeADataFile) {
   const fs::path dir = test_temp_dir("bad_data") / "folder.vtu";
   fs::create_directories(dir);
-  EXPECT_EQ(error_of(dir), dir.string() + ": a directory, not a data file");
+  EXPECT_EQ(error_of(dir), dir.string() + ": a directory, not a file");
+}
+
+TEST_F(BadData, AFileItMayNotReadIsSaidSo) {
+  if (geteuid() == 0) GTEST_SKIP() << "root reads any file";
+  const fs::path locked = write("locked.vtu", "<?xml version=\"1.0\"?>\n");
+  fs::permissions(locked, fs::perms::none);
+  EXPECT_EQ(error_of(locked), locked.string() + ": cannot be read: Permission denied");
+  fs::permissions(locked, fs::perms::owner_all);
 }
 
 TEST_F(BadData, WrongComponentCount) {

@@ -1,6 +1,7 @@
 // Scene files: defaults, overrides, and one clear error per kind of mistake.
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <fstream>
@@ -152,7 +153,24 @@ TEST_F(SceneFile, ADirectoryIsNoDataFile) {
   const std::filesystem::path folder = test_temp_dir("scene_test") / "folder.vtu";
   std::filesystem::create_directories(folder);
   const std::string e = error_of("[data]\nfile = \"folder.vtu\"\n");
-  EXPECT_EQ(e, path_ + ":2:8: data.file names a directory, not a file: " + folder.string());
+  EXPECT_EQ(e, path_ + ":2:8: data.file names " + folder.string() + ": a directory, not a file");
+}
+
+// A FIFO would block the reader for ever: refused at once, as the scene
+// and as its data file.
+TEST_F(SceneFile, AFifoIsRefusedWithoutWaiting) {
+  const std::filesystem::path fifo = test_temp_dir("scene_test") / "pipe.vtu";
+  std::filesystem::remove(fifo);
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  const std::string as_data = error_of("[data]\nfile = \"pipe.vtu\"\n");
+  EXPECT_EQ(as_data, path_ + ":2:8: data.file names " + fifo.string() + ": not a regular file (a FIFO, socket or device)");
+  try {
+    load_scene(fifo.string(), {});
+    ADD_FAILURE() << "a FIFO loaded as a scene";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), fifo.string() + ": not a regular file (a FIFO, socket or device)");
+  }
+  std::filesystem::remove(fifo);
 }
 
 TEST_F(SceneFile, UnknownKeyIsAnErrorNotIgnored) {
@@ -243,8 +261,8 @@ TEST_F(SceneFile, UnknownKeyFromTheCommandLineNamesTheArgument) {
 TEST_F(SceneFile, MissingDataFileAndBadImageTypeAreLocated) {
   const std::string missing = error_of("[data]\nkind = \"vtk\"\nfile = \"nope.vtu\"\n");
   EXPECT_EQ(missing,
-            path_ + ":3:8: data.file names no file: " + (test_temp_dir("scene_test") / "nope.vtu").string() +
-                " (relative paths are relative to the scene file)");
+            path_ + ":3:8: data.file names " + (test_temp_dir("scene_test") / "nope.vtu").string() +
+                ": no such file (relative paths are relative to the scene file)");
   const std::string image = error_of(std::string(minimal) + "[output]\nfile = \"x.bmp\"\n");
   EXPECT_EQ(image,
             path_ + ":4:8: output.file must end in .png, .tif, .tiff, .exr, .pdf or .svg, got \"x.bmp\"");
@@ -305,7 +323,7 @@ TEST_F(SceneFile, EveryBadValueIsOneLocatedError) {
       {"[camera]\nposition = [1, 1, 1]\nlook_at = [1, 1, 1]\n", ":2:12: camera.position must differ from camera.look_at"},
       {"[camera]\nposition = [0, 0, 5]\nlook_at = [0, 0, 0]\nup = [0, 0, 1]\n",
        ":4:6: camera.up must not be parallel to the viewing direction"},
-      {"[data]\nfile = \"nope.vtu\"\n", ":2:8: data.file names no file:"},
+      {"[data]\nfile = \"nope.vtu\"\n", ":2:8: data.file names "},
       {"[output]\nfile = \"x.bmp\"\n", ":2:8: output.file must end in .png, .tif, .tiff, .exr, .pdf or .svg"},
       {"[output]\nfile = \"x.exr\"\nbit_depth = 8\n", ":3:13: output.bit_depth must be 16 (half) or 32 (float) for an EXR"},
       {"[color]\nmap = \"jet\"\n", ":2:7: color.map must be one of"},

@@ -1,0 +1,16 @@
+#pragma once
+// Whether a path names a file this program can read as input (a scene or a
+// data set), and if not, why, in words a user can act on. Checked before
+// anything opens it: opening a FIFO would wait for a writer for ever, and a
+// reader that meets a file it may not read reports it as malformed.
+
+#include <string>
+
+namespace hsb {
+
+// "" when `path` is a regular file that can be opened for reading; else
+// "no such file", "a directory, not a file", "not a regular file (a FIFO,
+// socket or device)" or "cannot be read: Permission denied".
+std::string unreadable_input(const std::string& path);
+
+}  // namespace hsb
