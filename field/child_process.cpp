@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -21,6 +22,11 @@ ChildResult run_in_child(const std::function<void()>& work, double seconds) {
   const pid_t pid = fork();
   if (pid < 0) return {};  // no child to be had: run it only for real
   if (pid == 0) {
+    // The child dies with its parent (Ctrl-C, a scheduler's SIGKILL): it
+    // is only ever a trial of the parent's next step. If the parent died
+    // before this line, the child is an orphan already and stops now.
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() == 1) _exit(0);
     // Whatever the child says (a crash report) is not for the user.
     const int null = open("/dev/null", O_WRONLY);
     if (null >= 0) dup2(null, STDERR_FILENO), dup2(null, STDOUT_FILENO);

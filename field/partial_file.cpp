@@ -1,11 +1,14 @@
 #include "field/partial_file.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
 #include <cstring>
+#include <mutex>
+#include <set>
 #include <stdexcept>
 
 namespace hsb {
@@ -34,6 +37,17 @@ void unregister_path(int slot) {
   if (slot >= 0) registry_state[slot].store(0);
 }
 
+std::string host_name() {
+  char name[256] = {};
+  if (gethostname(name, sizeof name - 1) != 0 || !name[0]) return "host";
+  std::string host = name;
+  for (char& c : host)
+    if (c == '/' || c == '.') c = '_';  // one path component, no extension in it
+  return host;
+}
+
+const std::string kMarker = ".partial-";
+
 }  // namespace
 
 void remove_partial_files() {
@@ -41,9 +55,45 @@ void remove_partial_files() {
     if (registry_state[i].load() == 2) unlink(registry_paths[i]);
 }
 
+int remove_stale_partial_files(const std::filesystem::path& folder) {
+  static const std::string own = kMarker + host_name() + "-";
+  int removed = 0;
+  std::error_code error;
+  for (std::filesystem::directory_iterator it(folder, error), end; !error && it != end; it.increment(error)) {
+    // ".NAME.partial-HOST-PID.EXT" of this host: the digits after the host.
+    const std::string name = it->path().filename().string();
+    const std::size_t at = name.rfind(own);
+    if (name.empty() || name[0] != '.' || at == std::string::npos) continue;
+    const std::size_t digits = at + own.size(), dot = name.find('.', digits);
+    if (dot == std::string::npos || dot == digits) continue;
+    const std::string pid_text = name.substr(digits, dot - digits);
+    if (pid_text.find_first_not_of("0123456789") != std::string::npos || pid_text.size() > 9) continue;
+    const pid_t pid = pid_t(std::stol(pid_text));
+    if (pid == getpid() || kill(pid, 0) == 0 || errno != ESRCH) continue;  // alive, or not ours to judge
+    std::error_code ignored;
+    removed += std::filesystem::remove(it->path(), ignored) ? 1 : 0;
+  }
+  return removed;
+}
+
+namespace {
+
+// Each folder once per process: the first file written there clears what
+// a killed run left.
+void clear_stale_once(const std::filesystem::path& folder) {
+  static std::mutex mutex;
+  static std::set<std::string> cleared;
+  const std::lock_guard<std::mutex> lock(mutex);
+  if (cleared.insert(folder.string()).second) remove_stale_partial_files(folder.empty() ? "." : folder);
+}
+
+}  // namespace
+
 PartialFile::PartialFile(const std::string& final_path)
     : final_(final_path),
-      temp_(final_.parent_path() / ("." + final_.stem().string() + ".partial" + final_.extension().string())) {
+      temp_(final_.parent_path() / ("." + final_.stem().string() + kMarker + host_name() + "-" +
+                                    std::to_string(getpid()) + final_.extension().string())) {
+  clear_stale_once(final_.parent_path());
   slot_ = register_path(temp_.string());
 }
 

@@ -1,12 +1,17 @@
 #pragma once
 // A file that appears complete or not at all: written under a temporary
-// name beside its final path (".NAME.partial.EXT", hidden), then renamed
-// into place, which replaces a file of that name only at the very end.
+// name beside its final path (".NAME.partial-HOST-PID.EXT", hidden), then
+// renamed into place, which replaces a file of that name only at the very
+// end.
 //
 // Every temporary name is registered while it exists, so that a signal
 // handler can remove them all before the program exits
 // (remove_partial_files, async-signal-safe): an interrupted run leaves
-// neither a temporary file nor a half-written one under a final name.
+// neither a temporary file nor a half-written one under a final name. A
+// process killed outright (SIGKILL, a node lost) cannot clean up; its
+// temporaries carry its host and process ID, so the next run that writes
+// into the folder removes them, and never those of a process still
+// running, here or on another node that shares the folder.
 
 #include <filesystem>
 #include <string>
@@ -42,5 +47,9 @@ class PartialFile {
 // Removes every registered temporary file. Safe to call from a signal
 // handler: it only reads fixed buffers and calls unlink().
 void remove_partial_files();
+
+// Removes the temporaries in `folder` that a process of this host left
+// when it died; returns how many. PartialFile calls it once per folder.
+int remove_stale_partial_files(const std::filesystem::path& folder);
 
 }  // namespace hsb

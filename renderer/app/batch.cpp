@@ -2,32 +2,41 @@
 
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <cctype>
+#include <iterator>
+#include <limits>
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
 
+#include "field/input_file.h"
 #include "renderer/scene/scene_spec.h"
 #include "renderer/scene/toml_text.h"
 
 namespace hsb {
 namespace {
 
-struct SweptKey {
+// The scene file's [sweep] table, as (key, values, where) in file order;
+// none for data files and unreadable scenes.
+struct SceneSweep {
   std::string key;
-  std::vector<std::string> values;  // each as TOML text
+  std::vector<std::string> values;
+  std::string where;  // file:line:column of the key's values
 };
 
-// The scene file's [sweep] table; none for data files and unreadable scenes.
-std::vector<SweptKey> scene_sweeps(const std::string& scene) {
-  std::vector<SweptKey> out;
-  if (is_data_file(scene)) return out;
+std::vector<SceneSweep> scene_sweeps(const std::string& scene) {
+  std::vector<SceneSweep> out;
+  // A FIFO would block the read; anything unreadable is reported when
+  // the scene is rendered.
+  if (is_data_file(scene) || !unreadable_input(scene).empty()) return out;
   try {
     const toml::table root = toml::parse_file(scene);
     // "glyphs.spacing" = [...] and [sweep.glyphs] spacing = [...] say the same.
     if (const toml::table* sweep = root["sweep"].as_table())
       for_each_leaf(*sweep, "", [&](const std::string& path, const toml::node& node) {
-        SweptKey swept{path, {}};
+        SceneSweep swept{path, {}, scene + ":" + std::to_string(node.source().begin.line) + ":" +
+                                       std::to_string(node.source().begin.column)};
         if (const toml::array* values = node.as_array())
           for (const toml::node& v : *values) swept.values.push_back(toml_text(v));
         else
@@ -67,37 +76,68 @@ std::vector<std::string> split_sweep(const std::string& value) {
   return parts;
 }
 
-std::vector<BatchItem> expand_batch(const std::vector<std::string>& scenes, const std::vector<std::string>& overrides) {
+Batch::Batch(const std::vector<std::string>& scenes, const std::vector<std::string>& overrides) {
   // The --set sweeps, in order; plain --set values stay as they are.
-  std::vector<std::string> fixed;
   std::vector<SweptKey> cli;
   for (const std::string& o : overrides) {
     const std::size_t eq = o.find('=');
-    const std::vector<std::string> values = eq == std::string::npos ? std::vector<std::string>{} : split_sweep(o.substr(eq + 1));
+    const std::vector<std::string> values =
+        eq == std::string::npos ? std::vector<std::string>{} : split_sweep(o.substr(eq + 1));
     if (values.size() > 1)
       cli.push_back({o.substr(0, eq), values});
     else
-      fixed.push_back(o);
+      fixed_.push_back(o);
   }
-  std::vector<BatchItem> items;
-  for (const std::string& scene : scenes) {
-    std::vector<SweptKey> swept = cli;
-    for (SweptKey& s : scene_sweeps(scene)) swept.push_back(std::move(s));
-    // Every combination, the last key changing fastest.
-    std::vector<std::size_t> at(swept.size(), 0);
-    for (;;) {
-      BatchItem item{scene, fixed, ""};
-      for (std::size_t k = 0; k < swept.size(); ++k) {
-        const std::string assignment = swept[k].key + "=" + swept[k].values[at[k]];
-        item.overrides.push_back(assignment);
-        item.variant += (item.variant.empty() ? "" : ",") + assignment;
-      }
-      items.push_back(std::move(item));
-      std::size_t k = swept.size();
-      while (k > 0 && ++at[k - 1] == swept[k - 1].values.size()) at[--k] = 0;
-      if (k == 0) break;
+  for (const std::string& path : scenes) {
+    Scene scene{path, cli, "", size_, 1};
+    for (SceneSweep& s : scene_sweeps(path)) {
+      if (s.values.empty() && scene.error.empty())
+        scene.error = s.where + ": sweep." + s.key + " lists no values; a sweep needs one or more";
+      scene.swept.push_back({std::move(s.key), std::move(s.values)});
     }
+    if (scene.error.empty())
+      for (const SweptKey& k : scene.swept) {
+        if (k.values.size() > std::numeric_limits<std::size_t>::max() / scene.count)
+          throw std::invalid_argument(path + ": its sweeps ask for more images than can be counted");
+        scene.count *= k.values.size();
+      }
+    if (scene.count > std::numeric_limits<std::size_t>::max() - size_)
+      throw std::invalid_argument("the batch asks for more images than can be counted");
+    size_ += scene.count;
+    scenes_.push_back(std::move(scene));
   }
+}
+
+BatchItem Batch::item(std::size_t position) const {
+  const auto after = std::upper_bound(scenes_.begin(), scenes_.end(), position,
+                                      [](std::size_t p, const Scene& s) { return p < s.first; });
+  const Scene& scene = *std::prev(after);
+  BatchItem item{scene.path, fixed_, "", scene.error};
+  if (!scene.error.empty()) return item;
+  // The position within the scene in mixed radix, the last key fastest.
+  std::size_t rest = position - scene.first;
+  std::vector<std::string> assignments(scene.swept.size());
+  for (std::size_t k = scene.swept.size(); k-- > 0;) {
+    const SweptKey& swept = scene.swept[k];
+    assignments[k] = swept.key + "=" + swept.values[rest % swept.values.size()];
+    rest /= swept.values.size();
+  }
+  for (const std::string& a : assignments) {
+    item.overrides.push_back(a);
+    item.variant += (item.variant.empty() ? "" : ",") + a;
+  }
+  return item;
+}
+
+std::size_t Batch::shard_size(Shard shard) const {
+  const std::size_t first = std::size_t(shard.index - 1), n = std::size_t(shard.count);
+  return size_ > first ? (size_ - first - 1) / n + 1 : 0;
+}
+
+std::vector<BatchItem> expand_batch(const std::vector<std::string>& scenes, const std::vector<std::string>& overrides) {
+  const Batch batch(scenes, overrides);
+  std::vector<BatchItem> items;
+  for (std::size_t i = 0; i < batch.size(); ++i) items.push_back(batch.item(i));
   return items;
 }
 
@@ -109,13 +149,6 @@ Shard parse_shard(const std::string& text) {
       shard.index < 1 || shard.index > shard.count)
     throw std::invalid_argument("--shard must be K/N with 1 <= K <= N (as in 3/8), got \"" + text + "\"");
   return shard;
-}
-
-std::vector<BatchItem> shard_items(const std::vector<BatchItem>& items, Shard shard) {
-  std::vector<BatchItem> mine;
-  for (std::size_t i = std::size_t(shard.index - 1); i < items.size(); i += std::size_t(shard.count))
-    mine.push_back(items[i]);
-  return mine;
 }
 
 std::string file_for_variant(const std::string& file, const std::string& variant) {

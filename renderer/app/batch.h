@@ -12,6 +12,7 @@
 // (i mod N) + 1 of N, so N machines given 1/N … N/N render every item
 // exactly once with no coordinator.
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -21,15 +22,11 @@ struct BatchItem {
   std::string scene;                   // a scene or data file
   std::vector<std::string> overrides;  // --set key=value, then this item's swept values
   std::string variant;                 // its swept values, "glyphs.spacing=0.02"; "" without sweeps
+  std::string error;                   // why it cannot render (file:line:column: ...), or ""
 };
 
 // The values of one --set value: several for a sweep, else the value itself.
 std::vector<std::string> split_sweep(const std::string& value);
-
-// Every item of the batch, in order: scene by scene, then the product of
-// the --set sweeps and the scene's own [sweep] table (last key fastest).
-// A scene that cannot be read is one item; its error comes when it renders.
-std::vector<BatchItem> expand_batch(const std::vector<std::string>& scenes, const std::vector<std::string>& overrides);
 
 struct Shard {
   int index = 1, count = 1;  // 1 ≤ index ≤ count
@@ -38,8 +35,46 @@ struct Shard {
 // "K/N"; throws std::invalid_argument with a message for anything else.
 Shard parse_shard(const std::string& text);
 
-// The items of `shard`: those at positions i with i mod N = K − 1.
-std::vector<BatchItem> shard_items(const std::vector<BatchItem>& items, Shard shard);
+// Every item of the batch, in order: scene by scene, then the product of
+// the --set sweeps and the scene's own [sweep] table (last key fastest).
+// Items are made when asked for, never all at once: four swept keys of a
+// hundred values each are 10⁸ items, and a cluster node takes its share of
+// them by position. A scene that cannot be read is one item; its error
+// comes when it renders. A sweep with no values is one item that carries
+// its error.
+class Batch {
+ public:
+  // Throws std::invalid_argument when the items would not fit a count.
+  Batch(const std::vector<std::string>& scenes, const std::vector<std::string>& overrides);
+
+  std::size_t size() const { return size_; }
+  BatchItem item(std::size_t position) const;
+
+  // How many items `shard` holds, and the position of its j-th: shard K of
+  // N holds the positions i with i mod N = K − 1.
+  std::size_t shard_size(Shard shard) const;
+  static std::size_t shard_position(Shard shard, std::size_t j) {
+    return std::size_t(shard.index - 1) + j * std::size_t(shard.count);
+  }
+
+ private:
+  struct SweptKey {
+    std::string key;
+    std::vector<std::string> values;  // each as TOML text
+  };
+  struct Scene {
+    std::string path;
+    std::vector<SweptKey> swept;  // the --set sweeps, then the scene's [sweep] table
+    std::string error;
+    std::size_t first = 0, count = 1;  // its items' positions
+  };
+  std::vector<std::string> fixed_;  // the --set values that are not sweeps
+  std::vector<Scene> scenes_;
+  std::size_t size_ = 0;
+};
+
+// Every item, in order (for a batch known to be small).
+std::vector<BatchItem> expand_batch(const std::vector<std::string>& scenes, const std::vector<std::string>& overrides);
 
 // `file` with the variant before its extension: "fig09.png" and
 // "glyphs.spacing=0.02" give "fig09_glyphs.spacing=0.02.png"; characters a

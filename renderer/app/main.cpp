@@ -6,11 +6,14 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
-#include <filesystem>
-#include <sstream>
+#include <cstring>
 #include <exception>
+#include <filesystem>
+#include <map>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -49,10 +52,24 @@ void install_signal_handlers() {
   struct sigaction action {};
   action.sa_handler = stop_on_signal;
   sigemptyset(&action.sa_mask);
-  for (int signal : {SIGINT, SIGTERM}) sigaction(signal, &action, nullptr);
+  // Every signal that would end the program and can be caught.
+  for (int signal : {SIGINT, SIGTERM, SIGQUIT, SIGUSR1, SIGUSR2, SIGALRM, SIGVTALRM, SIGPROF, SIGXCPU})
+    sigaction(signal, &action, nullptr);
+  // A closed pipe or a file size limit is a failed write, reported where
+  // it happens, not a silent death: `hsb render ... | head` renders on.
+  signal(SIGPIPE, SIG_IGN);
+  signal(SIGXFSZ, SIG_IGN);
   // A hang-up stops the batch too, unless it runs under nohup.
   struct sigaction hangup {};
   if (sigaction(SIGHUP, nullptr, &hangup) == 0 && hangup.sa_handler != SIG_IGN) sigaction(SIGHUP, &action, nullptr);
+}
+
+// Whether all that was printed reached standard output; if not, `why`.
+bool standard_output_written(std::string& why) {
+  errno = 0;
+  if (std::fflush(stdout) == 0 && !std::ferror(stdout)) return true;
+  why = errno ? std::strerror(errno) : "write error";
+  return false;
 }
 
 // What the rays of one kind cost inside the blob field, per ray that
@@ -227,12 +244,13 @@ int main(int argc, char** argv) {
 
   if (threads > 0) thread_limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
 
-  // Runs `work` for each input; each failure is reported once as it
-  // happens and again, with the others, in a summary at the end.
-  auto for_each = [](const std::vector<std::string>& inputs, const char* noun, auto&& work) {
+  // Runs `work` for inputs [0, count), named name_of(i); each failure is
+  // reported once as it happens and again, with the others, in a summary
+  // at the end.
+  auto for_each = [](std::size_t count, auto&& name_of, const char* noun, auto&& work) {
     std::vector<std::string> failures;
-    for (std::size_t i = 0; i < inputs.size(); ++i) {
-      const std::string& input = inputs[i];
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::string input = name_of(i);
       std::string message;
       try {
         work(i);
@@ -250,15 +268,23 @@ int main(int argc, char** argv) {
     }
     // One input's error needs no summary; a batch's failures are listed
     // again at its end, where a long log is read first.
-    if (!failures.empty() && inputs.size() > 1) {
-      std::fprintf(stderr, "hsb: %zu of %zu %s failed:\n", failures.size(), inputs.size(), noun);
+    if (!failures.empty() && count > 1) {
+      std::fprintf(stderr, "hsb: %zu of %zu %s failed:\n", failures.size(), count, noun);
       for (const std::string& f : failures) std::fprintf(stderr, "  %s\n", f.substr(0, f.find('\n')).c_str());
     }
     return failures.empty() ? 0 : 1;
   };
 
+  // For info and export, what they print is what was asked for: a failed
+  // write (a full disk under `> scene.toml`) fails the command.
+  const auto printed = [&](int status) {
+    std::string why;
+    if (standard_output_written(why)) return status;
+    std::fprintf(stderr, "hsb: cannot write to standard output: %s\n", why.c_str());
+    return 1;
+  };
   if (*info) {
-    return for_each(info_inputs, "inputs", [&](std::size_t i) {
+    return printed(for_each(info_inputs.size(), [&](std::size_t i) { return info_inputs[i]; }, "inputs", [&](std::size_t i) {
       const std::string& input = info_inputs[i];
       std::vector<std::string> with_array = info_overrides;
       if (!info_array.empty()) with_array.push_back("data.array=" + info_array);
@@ -269,36 +295,42 @@ int main(int argc, char** argv) {
       const std::unique_ptr<hsb::PreparedScene> prepared = hsb::prepare_scene(std::move(spec), color);
       for (const std::string& warning : prepared->warnings) std::printf("# warning: %s\n", warning.c_str());
       std::fputs(hsb::pinned_scene_toml(*prepared).c_str(), stdout);
-    });
+    }));
   }
   if (*exporter) {
-    return for_each(export_scenes, "scenes", [&](std::size_t i) {
+    return printed(for_each(export_scenes.size(), [&](std::size_t i) { return export_scenes[i]; }, "scenes", [&](std::size_t i) {
       const hsb::ExportFormat f = format == "pov" ? hsb::ExportFormat::pov : hsb::ExportFormat::vtp;
       for (const std::string& path : hsb::run_export_job({export_scenes[i], export_overrides, export_dir, f}))
         std::printf("%s\n", path.c_str());
-    });
+    }));
   }
-  // The batch: every scene times every swept value, this node's share.
-  std::vector<hsb::BatchItem> items = hsb::expand_batch(scenes, overrides);
-  if (!shard_text.empty()) {
-    try {
-      items = hsb::shard_items(items, hsb::parse_shard(shard_text));
-    } catch (const std::invalid_argument& e) {
-      std::fprintf(stderr, "hsb: %s\n", e.what());
-      return 2;
-    }
+  // The batch: every scene times every swept value, this node's share,
+  // each item made when its turn comes.
+  hsb::Shard shard;
+  std::optional<hsb::Batch> batch;
+  try {
+    if (!shard_text.empty()) shard = hsb::parse_shard(shard_text);
+    batch.emplace(scenes, overrides);
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "hsb: %s\n", e.what());
+    return 2;
   }
-  std::vector<std::string> names;
-  for (const hsb::BatchItem& item : items)
-    names.push_back(item.variant.empty() ? item.scene : item.scene + " [" + item.variant + "]");
-  hsb::BatchProgress progress(hsb::BatchProgress::mode_for(quiet), items.size());
+  const auto item_at = [&](std::size_t j) { return batch->item(hsb::Batch::shard_position(shard, j)); };
+  const auto name_of = [&](std::size_t j) {
+    const hsb::BatchItem item = item_at(j);
+    return item.variant.empty() ? item.scene : item.scene + " [" + item.variant + "]";
+  };
+  const std::size_t mine = batch->shard_size(shard);
+  hsb::BatchProgress progress(hsb::BatchProgress::mode_for(quiet), mine);
   std::size_t skipped = 0;
-  const int status = for_each(names, "images", [&](std::size_t i) {
-    const hsb::BatchItem& item = items[i];
+  std::map<std::string, std::string> written;  // image → the scene that wrote it
+  const int status = for_each(mine, name_of, "images", [&](std::size_t i) {
+    const hsb::BatchItem item = item_at(i);
+    if (!item.error.empty()) throw hsb::SceneError(item.error);
     progress.start(i, std::filesystem::path(item.scene).filename().string() +
                           (item.variant.empty() ? "" : " [" + item.variant + "]"));
     hsb::RenderJob job{item.scene, item.overrides, output_dir, item.variant, skip_existing,
-                       [&](hsb::JobStage stage, double fraction) { progress.update(stage, fraction); }};
+                       [&](hsb::JobStage stage, double fraction) { progress.update(stage, fraction); }, &written};
     hsb::RenderSummary summary;
     try {
       summary = hsb::run_render_job(job);
@@ -317,6 +349,12 @@ int main(int argc, char** argv) {
       for (const std::string& w : summary.warnings) std::fprintf(stderr, "hsb: warning: %s\n", w.c_str());
     }
   });
-  if (skipped && !quiet) std::printf("%zu of %zu images up to date, skipped\n", skipped, items.size());
+  if (skipped && !quiet) std::printf("%zu of %zu images up to date, skipped\n", skipped, mine);
+  // The images are the product; the lines printed are a report, so a
+  // closed pipe (`| head`) is no failure, only said.
+  std::string why;
+  if (!standard_output_written(why) && why != std::strerror(EPIPE))
+    std::fprintf(stderr, "hsb: warning: the report did not reach standard output (%s); the images are written\n",
+                 why.c_str());
   return status;
 }

@@ -2,6 +2,7 @@
 // One scene file rendered to one image: the whole data flow of design §4.
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,10 @@ struct RenderJob {
   bool skip_existing = false;
   // Told each stage and, while rendering, the fraction done.
   std::function<void(JobStage, double)> progress;
+  // The images this batch has written so far, each with the scene that
+  // wrote it: a second scene with the same image name is refused before it
+  // renders rather than overwriting the first. Null: no check.
+  std::map<std::string, std::string>* written = nullptr;
 };
 
 struct RenderSummary {

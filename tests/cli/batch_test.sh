@@ -81,8 +81,10 @@ wait_for_handler() {
   done
 }
 long=("$src/scenes/fig09_point_load_hyperstreamsurface.toml" --set render.width=1400 --set render.height=1400)
-for signal in TERM INT; do
-  for delay in 0.6 2; do
+for signal in TERM INT QUIT USR1 XCPU; do
+  delays=(0.6 2)
+  [[ $signal == TERM || $signal == INT ]] || delays=(0.6)  # every catchable terminating signal, once
+  for delay in "${delays[@]}"; do
     rm -rf "$work/kill"; mkdir -p "$work/kill"
     echo "the previous image" > "$work/kill/fig09_point_load_hyperstreamsurface.png"
     "$hsb" render "${long[@]}" -o "$work/kill" > /dev/null 2> "$work/err" &
@@ -93,7 +95,7 @@ for signal in TERM INT; do
     start=$(date +%s%N)
     wait "$pid"; status=$?
     elapsed_ms=$(( ($(date +%s%N) - start) / 1000000 ))
-    expected=$([[ $signal == TERM ]] && echo 143 || echo 130)
+    expected=$((128 + $(kill -l "$signal")))
     [[ $status -eq $expected ]] || fail "SIG$signal after ${delay}s: exit $status, expected $expected: $(cat "$work/err")"
     (( elapsed_ms < 1000 )) || fail "SIG$signal took ${elapsed_ms} ms to stop"
     [[ $(ls -A "$work/kill") == "fig09_point_load_hyperstreamsurface.png" ]] || fail "left: $(ls -A "$work/kill")"

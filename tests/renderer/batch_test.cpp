@@ -57,19 +57,60 @@ TEST(Batch, ASceneSweepTableAddsItsKeys) {
 }
 
 TEST(Batch, ShardsHoldEveryItemExactlyOnce) {
-  std::vector<BatchItem> items;
-  for (int i = 0; i < 23; ++i) items.push_back({"s" + std::to_string(i) + ".toml", {}, ""});
-  for (int n : {1, 2, 3, 7, 23, 40}) {
+  std::vector<std::string> scenes;
+  for (int i = 0; i < 23; ++i) scenes.push_back("s" + std::to_string(i) + ".toml");
+  const Batch batch(scenes, {"render.samples=1,2"});
+  ASSERT_EQ(batch.size(), 46u);
+  for (int n : {1, 2, 3, 7, 23, 40, 60}) {
     std::map<std::string, int> seen;
-    for (int k = 1; k <= n; ++k)
-      for (const BatchItem& item : shard_items(items, {k, n})) ++seen[item.scene];
-    EXPECT_EQ(seen.size(), items.size()) << n << " shards";
-    for (const auto& [scene, count] : seen) EXPECT_EQ(count, 1) << scene << " in " << n << " shards";
+    std::size_t held = 0;
+    for (int k = 1; k <= n; ++k) {
+      const Shard shard{k, n};
+      held += batch.shard_size(shard);
+      for (std::size_t j = 0; j < batch.shard_size(shard); ++j) {
+        const BatchItem item = batch.item(Batch::shard_position(shard, j));
+        ++seen[item.scene + " " + item.variant];
+      }
+    }
+    EXPECT_EQ(held, batch.size()) << n << " shards";
+    EXPECT_EQ(seen.size(), batch.size()) << n << " shards";
+    for (const auto& [name, count] : seen) EXPECT_EQ(count, 1) << name << " in " << n << " shards";
   }
   EXPECT_EQ(parse_shard("3/8").index, 3);
   EXPECT_EQ(parse_shard("3/8").count, 8);
   for (const char* bad : {"0/3", "4/3", "3", "a/b", "1/0", "1/2x", "-1/2"})
     EXPECT_THROW(parse_shard(bad), std::invalid_argument) << bad;
+}
+
+// Four keys of a hundred values are 10⁸ items: counted and taken by
+// position at once, never listed (they once took 5 GB before --shard).
+TEST(Batch, LargeSweepsAreCountedNotListed) {
+  std::vector<std::string> overrides;
+  std::string hundred;
+  for (int v = 0; v < 100; ++v) hundred += (v ? "," : "") + std::to_string(v);
+  for (const char* key : {"a.w", "a.x", "a.y", "a.z"}) overrides.push_back(std::string(key) + "=" + hundred);
+  const Batch batch({"one.toml", "two.toml"}, overrides);
+  EXPECT_EQ(batch.size(), 200000000u);
+  const BatchItem item = batch.item(100000000u + 1234567u);  // the second scene's 1,234,567th
+  EXPECT_EQ(item.scene, "two.toml");
+  EXPECT_EQ(item.variant, "a.w=1,a.x=23,a.y=45,a.z=67");
+  EXPECT_EQ(batch.shard_size({3, 1000}), 200000u);
+  // More than a count can hold is refused, not wrapped around.
+  std::vector<std::string> too_many(10, "k=" + hundred);
+  for (std::size_t i = 0; i < too_many.size(); ++i) too_many[i][0] = char('a' + i);
+  EXPECT_THROW(Batch({"x.toml"}, too_many), std::invalid_argument);
+}
+
+// An empty [sweep] list once indexed past its end (a crash); it is the
+// scene's one item now, with an error at the list's line.
+TEST(Batch, AnEmptySweepListIsALocatedError) {
+  const auto dir = test_temp_dir("batch_test");
+  const std::string scene = (dir / "empty_sweep.toml").string();
+  std::ofstream(scene) << "[glyphs]\nscale = 0.2\n[sweep]\n\"glyphs.spacing\" = []\n";
+  const Batch batch({scene}, {"render.samples=1,2"});
+  ASSERT_EQ(batch.size(), 1u);
+  const BatchItem item = batch.item(0);
+  EXPECT_EQ(item.error, scene + ":4:20: sweep.glyphs.spacing lists no values; a sweep needs one or more");
 }
 
 TEST(Batch, FileNamesSayTheSweptValues) {
