@@ -33,6 +33,14 @@ RenderSummary run_render_job(const RenderJob& job) {
   SceneSpec loaded = load_scene_or_data_file(job.scene_path, job.overrides);
   const std::string file = file_for_variant(output_file_name(loaded), job.variant);
   const std::string image_path = (std::filesystem::path(job.output_dir) / file).string();
+  if (job.written) {
+    const std::string key = std::filesystem::weakly_canonical(image_path).string();
+    const auto [earlier, fresh] = job.written->emplace(key, job.scene_path);
+    if (!fresh)
+      throw SceneError(job.scene_path + ": its image " + image_path + " is the one " + earlier->second +
+                       " wrote earlier in this batch; give one of them another output.file or render them into "
+                       "separate folders");
+  }
   if (job.skip_existing && stored_scene_sha1(image_path) == scene_sha1(loaded)) {
     RenderSummary skipped;
     skipped.image_path = image_path;
@@ -76,6 +84,18 @@ RenderSummary run_render_job(const RenderJob& job) {
   RenderSummary summary;
   summary.image_path = image_path;
   summary.warnings = prepared->warnings;
+  // A picture without the glyphs it was asked for is no success.
+  if (prepared->context.glyphs && !prepared->field.sources.empty() && rendered.stats.glyph_hits == 0)
+    summary.warnings.push_back("none of the " + std::to_string(prepared->field.sources.size()) +
+                               " glyphs is in the picture: out of view, or smaller than a pixel; check "
+                               "camera.position, camera.look_at, camera.fov or camera.height, and glyphs.scale "
+                               "(or leave them out for automatic values)");
+  const std::uint64_t untraceable = rendered.stats.untraceable_rays + rendered.shadow_stats.untraceable_rays;
+  if (untraceable > 0)
+    summary.warnings.push_back(std::to_string(untraceable) +
+                               " rays were not traced: their coordinates are beyond the ray tracer's range "
+                               "(±1.8e18, single precision); bring camera.position, render.shadow_offset and "
+                               "the data's coordinates nearer the origin");
   summary.trajectories = prepared->glyphs.trajectories.size();
   summary.sources = prepared->field.sources.size();
   summary.build_seconds = build_seconds;

@@ -37,8 +37,15 @@ class OcclusionBatch {
     for (std::size_t first = 0; first < key_.size(); first += kMaxPacket) {
       const int count = int(std::min<std::size_t>(kMaxPacket, key_.size() - first));
       const Pending* batch = &key_[first];
+      unsigned traceable = 0;
+      for (int i = 0; i < count; ++i) {
+        if (embree_can_trace(batch[i].origin, batch[i].direction, 0.0, batch[i].tfar))
+          traceable |= 1u << i;
+        else
+          ++tracer.shadow_stats.untraceable_rays;  // unblocked, and said so
+      }
       occluded_rays(
-          scene.get(), &context.embree, scene.packet_width(), first_rays(count),
+          scene.get(), &context.embree, scene.packet_width(), traceable,
           [&](RTCRayN* packet, unsigned width, unsigned lane, int i) {
             const Pending& r = batch[i];
             set_embree_ray(packet, width, lane, unsigned(i), r.origin, r.direction, 0.0f, float(r.tfar),
@@ -125,6 +132,7 @@ void add_ambient_rays(const ShadingSpec& shading, const CameraRayJob& job, const
 void composite_shell(const RayScene& scene, const ShadingSpec& shading, const CameraRay& ray, CameraSample& sample) {
   constexpr std::size_t max_layers = 8;
   thread_local std::vector<ShellCrossing> layers;
+  if (!embree_can_trace(ray.origin, ray.direction, 0.0, INFINITY)) return;  // counted with the camera ray
   scene.shell()->crossings(ray.origin, ray.direction, std::isinf(sample.depth) ? INFINITY : double(sample.depth),
                            max_layers, layers);
   const Vec3 key = shading.light_from.normalized();
@@ -172,9 +180,17 @@ void trace_camera_samples(const RayScene& scene, const ShadingSpec& shading, dou
     float t;
     Vec3 normal;  // Embree's geometric normal, for the context geometry
   } primary[kMaxPacket];
+  unsigned traceable = 0;
+  for (int i = 0; i < count; ++i) {
+    primary[i] = {RTC_INVALID_GEOMETRY_ID, INFINITY, Vec3::Zero()};
+    if (embree_can_trace(jobs[i].ray.origin, jobs[i].ray.direction, 0.0, INFINITY))
+      traceable |= 1u << i;
+    else
+      ++tracer.stats.untraceable_rays;  // sees the background, and said so
+  }
   const auto primary_start = Clock::now();
   intersect_rays(
-      scene.get(), &context.embree, scene.packet_width(), first_rays(count),
+      scene.get(), &context.embree, scene.packet_width(), traceable,
       [&](RTCRayHitN* packet, unsigned width, unsigned lane, int i) {
         set_embree_ray(packet, width, lane, unsigned(i), jobs[i].ray.origin, jobs[i].ray.direction, 0.0f, INFINITY);
       },
@@ -220,6 +236,7 @@ void trace_camera_samples(const RayScene& scene, const ShadingSpec& shading, dou
       continue;
     }
     met[i] = Met::glyph;
+    ++tracer.stats.glyph_hits;
     const SurfaceSample& surface = context.surface[std::size_t(i)];
     const double t = context.t[std::size_t(i)];
     s.depth = float(t);

@@ -253,6 +253,10 @@ void BlobGeometry::first_crossings(const RayInterval* rays, int count, FieldRay*
   for (int i = 0; i < count; ++i) {
     ++stats.field_rays;
     hits[i] = -1.0;
+    if (!embree_can_trace(rays[i].origin, rays[i].direction, rays[i].tmin, rays[i].tmax)) {
+      ++stats.untraceable_rays;
+      continue;
+    }
     const auto [t, end] = ray_interval_in(bounds_, rays[i].origin, rays[i].direction, rays[i].tmin, rays[i].tmax);
     window[i] = {rays[i].origin, rays[i].direction, t, t};
     t_end[i] = end;
@@ -316,6 +320,7 @@ bool BlobGeometry::gather_nearby(const Box3& region, std::size_t limit, NearbySo
                                  std::vector<std::uint32_t>& scratch) const {
   nearby.clear();
   scratch.clear();
+  if (!region.lo.allFinite() || !region.hi.allFinite()) return false;  // the rays' own checks say why
   NearbyQuery q{&field_, region, limit, &scratch};
   const Vec3 centre = region.centre();
   RTCPointQuery query;
@@ -342,6 +347,10 @@ double BlobGeometry::first_crossing_of(const RayInterval& ray, FieldRay& tracer,
                                        CrossingQuery query, CollectSpans&& collect_spans) const {
   ++stats.field_rays;
   tracer.spans.clear();
+  if (!embree_can_trace(ray.origin, ray.direction, ray.tmin, ray.tmax)) {
+    ++stats.untraceable_rays;
+    return -1.0;
+  }
   const auto [t, end] = ray_interval_in(bounds_, ray.origin, ray.direction, ray.tmin, ray.tmax);
   if (!(t < end)) return -1.0;
   collect_spans(RayInterval{ray.origin, ray.direction, t, end});

@@ -7,6 +7,16 @@
 
 namespace hsb {
 
+// Whether Embree can be handed the ray. Its kernels assume every origin
+// and direction coordinate within ±1.844e18 and no NaN, and a build with
+// assertions (Debian's) aborts the whole process on any other ray. Such a
+// ray is not traced; the caller counts it (TraceStats::untraceable_rays),
+// and the render says so.
+inline bool embree_can_trace(const Vec3& o, const Vec3& d, double tnear, double tfar) {
+  constexpr double limit = 1.8e18;
+  return (o.array().abs() <= limit).all() && (d.array().abs() <= limit).all() && tnear >= 0.0 && tnear <= tfar;
+}
+
 // Lane i of an N-wide ray packet; a single RTCRay is the packet with N = 1.
 // `index` is the caller's number for the ray, which callbacks read back
 // (ray_packets.h). The ray meets the geometries whose mask shares a bit

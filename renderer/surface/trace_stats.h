@@ -15,6 +15,8 @@ struct TraceStats {
   std::uint64_t field_evaluations = 0;  // F(t) evaluations (steps + refinement)
   std::uint64_t kernel_evaluations = 0; // single-source K evaluations inside them
   std::uint64_t step_limit_hits = 0;    // rays that gave up (counted as misses)
+  std::uint64_t untraceable_rays = 0;   // beyond Embree's range (embree_can_trace): not traced
+  std::uint64_t glyph_hits = 0;         // camera rays whose first hit is the glyph surface
 
   TraceStats& operator+=(const TraceStats& o) {
     field_rays += o.field_rays;
@@ -26,6 +28,8 @@ struct TraceStats {
     field_evaluations += o.field_evaluations;
     kernel_evaluations += o.kernel_evaluations;
     step_limit_hits += o.step_limit_hits;
+    untraceable_rays += o.untraceable_rays;
+    glyph_hits += o.glyph_hits;
     return *this;
   }
 };
