@@ -3,6 +3,7 @@
 #include <OpenImageIO/hash.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -50,9 +51,20 @@ std::string data_file_of(const SceneSpec& spec) {
   return "";
 }
 
-// The scene hash from the data file's, so the file is read once.
+// The colour configuration the picture goes through: output.ocio_config,
+// else $OCIO, else the built-in one (the same in every build).
+std::string color_config_sha1(const SceneSpec& spec) {
+  const char* environment = std::getenv("OCIO");
+  const std::string file = !spec.output.ocio_config.empty() ? spec.output.ocio_config
+                                                            : (environment && *environment ? environment : "");
+  return file.empty() ? "built-in" : file_sha1(file);
+}
+
+// The scene hash from the data file's, so the file is read once. With the
+// colour configuration's: the same scene through another config is
+// another picture.
 std::string scene_sha1(const SceneSpec& spec, const std::string& data_sha1) {
-  return sha1_hex(scene_text(spec) + "\n" + data_sha1);
+  return sha1_hex(scene_text(spec) + "\n" + data_sha1 + "\nocio " + color_config_sha1(spec));
 }
 
 }  // namespace

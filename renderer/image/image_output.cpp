@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 namespace hsb {
 
@@ -28,8 +29,15 @@ bool is_vector_format(const std::string& path) {
 std::string stored_scene_sha1(const std::string& path) {
   if (!std::filesystem::is_regular_file(path)) return "";
   if (!is_vector_format(path)) {
+    // Decoded whole, not only its header: a file cut short (a disk that
+    // filled, a copy interrupted) holds the right hash and a broken
+    // picture, and must be rendered again.
     auto in = OIIO::ImageInput::open(path);
-    return in ? std::string(in->spec().get_string_attribute("hsb:scene_sha1")) : "";
+    if (!in) return "";
+    const std::string hash = in->spec().get_string_attribute("hsb:scene_sha1");
+    std::vector<float> pixels(in->spec().image_pixels() * std::size_t(in->spec().nchannels));
+    if (!in->read_image(0, 0, 0, in->spec().nchannels, OIIO::TypeDesc::FLOAT, pixels.data())) return "";
+    return hash;
   }
   // Both vector formats keep it in plain text: "hsb:scene_sha1=HEX" in a
   // PDF's uncompressed document information, key="hsb:scene_sha1">HEX in an SVG.
@@ -37,6 +45,10 @@ std::string stored_scene_sha1(const std::string& path) {
   std::ostringstream text;
   text << in.rdbuf();
   const std::string s = text.str();
+  // Complete only with its ending: a PDF's last %%EOF, an SVG's </svg>.
+  const std::string ending = lower_extension(path) == ".pdf" ? "%%EOF" : "</svg>";
+  const std::size_t end = s.rfind(ending);
+  if (end == std::string::npos || s.find_first_not_of(" \r\n", end + ending.size()) != std::string::npos) return "";
   for (const std::string marker : {"hsb:scene_sha1=", "key=\"hsb:scene_sha1\">"}) {
     const std::size_t at = s.find(marker);
     if (at != std::string::npos && at + marker.size() + 40 <= s.size()) return s.substr(at + marker.size(), 40);

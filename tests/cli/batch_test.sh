@@ -69,6 +69,19 @@ cp "$src/scenes/data/generated/thin_plate_shear.vtu" "$work/beam.vtu"
 "$hsb" render "$work/beam.vtu" -o "$work/skip" "${small[@]}" --set glyphs.mapping=linear --skip-existing > "$work/log" \
   || fail "changed data"
 grep -q "beam.png  sources=" "$work/log" || fail "changed data was skipped: $(cat "$work/log")"
+# A file cut short keeps its hash in the header but not its picture: rendered again.
+again=("$work/beam.vtu" -o "$work/skip" "${small[@]}" --set glyphs.mapping=linear --skip-existing)
+truncate -s -200 "$work/skip/beam.png"
+"$hsb" render "${again[@]}" > "$work/log" || fail "truncated image"
+grep -q "beam.png  sources=" "$work/log" || fail "a truncated image was skipped: $(cat "$work/log")"
+# Another colour configuration is another picture.
+"$hsb" info "$work/beam.vtu" > /dev/null || fail "info"
+cp "$src/renderer/image/hyperstreamball.ocio" "$work/other.ocio"
+echo "# changed" >> "$work/other.ocio"
+OCIO=$work/other.ocio "$hsb" render "${again[@]}" > "$work/log" || fail "changed OCIO config"
+grep -q "beam.png  sources=" "$work/log" || fail "a changed OCIO config was skipped: $(cat "$work/log")"
+OCIO=$work/other.ocio "$hsb" render "${again[@]}" > "$work/log" || fail "same OCIO config"
+grep -q "up to date, skipped" "$work/log" || fail "the same OCIO config was not skipped: $(cat "$work/log")"
 
 # --- Interrupted: stops at once, the old image intact, no temporary file.
 # A background job of a script starts with SIGINT ignored until hsb installs
