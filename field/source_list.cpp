@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -50,6 +51,8 @@ std::vector<GlyphSource> read_source_list(const std::string& path, double glyph_
   std::size_t width = 0;
   while (std::getline(in, line)) {
     ++number;
+    // Spreadsheets save UTF-8 with a byte-order mark: not part of the header.
+    if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
     const std::size_t first = line.find_first_not_of(" \t\r");
     if (first == std::string::npos || line[first] == '#') continue;
     const std::vector<Cell> cells = split(line);
@@ -67,6 +70,22 @@ std::vector<GlyphSource> read_source_list(const std::string& path, double glyph_
       };
       if (!has({"x", "y", "z"})) fail(number, 1, "a header with columns x, y and z (the centre)");
       if (!has({"r1", "r2", "r3"}) && !has({"r"})) fail(number, 1, "a header with columns r1, r2 and r3, or r");
+      // A group of columns comes whole or not at all.
+      const auto whole = [&](std::initializer_list<const char*> names, const char* what) {
+        std::string present, missing;
+        std::size_t at = cells.size();
+        for (const char* n : names) {
+          const auto it = columns.find(n);
+          (it == columns.end() ? missing : present) += std::string(n) + " ";
+          if (it != columns.end()) at = std::min(at, it->second);
+        }
+        if (!present.empty() && !missing.empty())
+          fail(number, cells[at].column,
+               std::string("all of the columns ") + what + ", found " + present + "without " + missing.substr(0, missing.size() - 1));
+      };
+      whole({"r1", "r2", "r3"}, "r1, r2, r3 (the radii)");
+      whole({"ax", "ay", "az", "bx", "by", "bz"}, "ax, ay, az, bx, by, bz (two axes)");
+      whole({"qw", "qx", "qy", "qz"}, "qw, qx, qy, qz (a quaternion)");
       continue;
     }
     if (cells.size() != width)
@@ -91,7 +110,7 @@ std::vector<GlyphSource> read_source_list(const std::string& path, double glyph_
     s.eigenvalues = columns.count("r1") ? Vec3(positive("r1"), positive("r2"), positive("r3"))
                                         : Vec3::Constant(positive("r"));
     s.radii = s.eigenvalues / glyph_extent;
-    if (columns.count("ax") && columns.count("bx")) {
+    if (columns.count("ax")) {
       const Vec3 a(value("ax"), value("ay"), value("az")), b(value("bx"), value("by"), value("bz"));
       const Vec3 c = a.cross(b);
       if (!(a.norm() > 0.0) || !(c.norm() > 1e-9 * a.norm() * b.norm()))

@@ -203,5 +203,23 @@ TEST_F(SourceList, ErrorsNameTheLineAndColumn) {
   EXPECT_NE(error_of("# only a comment\n").find("no header row"), std::string::npos);
 }
 
+// A group of columns comes whole: a quaternion without qx once said
+// "map::at"; axes without their second vector were silently ignored.
+TEST_F(SourceList, ColumnGroupsComeWhole) {
+  EXPECT_EQ(error_of("x,y,z,r,qw,qy,qz\n0,0,0,1,1,0,0\n"),
+            write("") + ":1:9: all of the columns qw, qx, qy, qz (a quaternion), found qw qy qz without qx");
+  EXPECT_EQ(error_of("x,y,z,r,ax,ay,az\n0,0,0,1,1,0,0\n"),
+            write("") + ":1:9: all of the columns ax, ay, az, bx, by, bz (two axes), found ax ay az without bx by bz");
+  EXPECT_EQ(error_of("x,y,z,r,r1,r2\n0,0,0,1,1,1\n"),
+            write("") + ":1:9: all of the columns r1, r2, r3 (the radii), found r1 r2 without r3");
+}
+
+// Spreadsheets write UTF-8 with a byte-order mark before the header.
+TEST_F(SourceList, AByteOrderMarkIsNoPartOfTheHeader) {
+  const auto s = read_source_list(write("\xEF\xBB\xBFx,y,z,r\n1,2,3,0.5\n"), 0.5);
+  ASSERT_EQ(s.size(), 1u);
+  EXPECT_TRUE(s[0].centre.isApprox(Vec3(1, 2, 3)));
+}
+
 }  // namespace
 }  // namespace hsb
