@@ -29,8 +29,15 @@ LoadedField make_field(const DataSpec& spec) {
     loaded.field = std::make_unique<PointLoadField>(spec.point_load);
   }
   const auto& dims = spec.sample_grid;
-  if (loaded.field && std::all_of(dims.begin(), dims.end(), [](int d) { return d >= 2; }))
+  if (loaded.field && std::all_of(dims.begin(), dims.end(), [](int d) { return d >= 2; })) {
+    // A tensor a node while sampling, and as much again while the grid is
+    // moved into place.
+    const double nodes = double(dims[0]) * double(dims[1]) * double(dims[2]);
+    std::ostringstream what;
+    what << "the sampled grid (" << dims[0] << " × " << dims[1] << " × " << dims[2] << " nodes)";
+    check_memory(2.0 * nodes * double(sizeof(Sym3)), what.str(), "use a coarser data.sample_grid");
     loaded.field = std::make_unique<UniformGridField>(UniformGridField::sampled_from(*loaded.field, dims));
+  }
   return loaded;
 }
 

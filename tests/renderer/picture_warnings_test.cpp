@@ -71,6 +71,10 @@ TEST(ResourceLimits, ScenesLargerThanTheMachineAreRefusedBeforeAllocating) {
                                        "[[seeds.grid]]\nn = 10000\nm = 10000\n[[seeds.grid]]\nn = 10000\nm = 10000\n"
                                        "[[seeds.grid]]\nn = 10000\nm = 10000\n");
   EXPECT_NE(at_seeds.find("one at each of 400000000 seeds"), std::string::npos) << at_seeds;
+  // A sampled grid of 10⁹ nodes was a bare std::bad_alloc.
+  const std::string grid = refusal("[data]\nsample_grid = [1000, 1000, 1000]\n");
+  EXPECT_NE(grid.find("the sampled grid (1000 × 1000 × 1000 nodes)"), std::string::npos) << grid;
+  EXPECT_NE(grid.find("use a coarser data.sample_grid"), std::string::npos) << grid;
   // What fits is not refused.
   EXPECT_EQ(refusal(seeds), "not refused");
 }
