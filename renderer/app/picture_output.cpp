@@ -81,6 +81,21 @@ std::string picture_description(const PreparedScene& prepared) {
   return description.str();
 }
 
+namespace {
+
+// Text kept whole in every image up to this size. A larger scene (a point
+// list of thousands of seeds, a 50 MB comment) would be copied into each
+// image of a batch; its size and SHA-1 name it instead, which is what
+// comparing two images' scenes needs.
+constexpr std::size_t kMetadataTextBytes = 64 * 1024;
+
+std::string metadata_text(const std::string& text) {
+  if (text.size() <= kMetadataTextBytes) return text;
+  return "(" + std::to_string(text.size()) + " bytes, more than an image keeps; SHA-1 " + sha1_hex(text) + ")";
+}
+
+}  // namespace
+
 std::map<std::string, std::string> picture_metadata(const SceneSpec& spec, const std::string& description,
                                                     const std::string& resolved, const ColorManagement& color) {
   const std::string data_file = data_file_of(spec);
@@ -90,11 +105,11 @@ std::map<std::string, std::string> picture_metadata(const SceneSpec& spec, const
       {"ImageDescription",
        "Hyperstreamball render of " + std::filesystem::path(spec.path).filename().string() + ": " + description},
       {"hsb:scene", spec.path},
-      {"hsb:scene_text", scene_text(spec)},
+      {"hsb:scene_text", metadata_text(scene_text(spec))},
       {"hsb:scene_sha1", scene_sha1(spec, data_sha1)},
       {"hsb:data_file", data_file},
       {"hsb:data_sha1", data_sha1},
-      {"hsb:resolved", resolved},
+      {"hsb:resolved", metadata_text(resolved)},
       {"hsb:kernel", kernel_name(spec.surface.kernel)},
       {"hsb:ocio", color.config_name() + " / " + color.display() + " / " + color.view()},
   };

@@ -112,6 +112,19 @@ TEST_F(FigureOutput, PngCarriesDpiSceneDataAndResolvedSettings) {
   EXPECT_NE(second->spec().get_string_attribute("hsb:scene_sha1"), first);
 }
 
+// A huge scene is named by its size and hash, not copied into each image.
+TEST_F(FigureOutput, AHugeSceneIsNotCopiedIntoTheImage) {
+  const std::string path = scene(std::string(kPlate) + "# " + std::string(200000, 'x') + "\n");
+  const RenderSummary summary = render(path, {"render.width=64", "render.height=48"});
+  auto in = open_image(summary.image_path);
+  ASSERT_TRUE(in);
+  const std::string text = in->spec().get_string_attribute("hsb:scene_text");
+  EXPECT_LT(text.size(), 200u) << text.substr(0, 200);
+  EXPECT_EQ(text.rfind("(200", 0), 0u) << text.substr(0, 200);
+  EXPECT_NE(text.find("more than an image keeps; SHA-1 "), std::string::npos);
+  EXPECT_LT(fs::file_size(summary.image_path), 100000u);
+}
+
 TEST_F(FigureOutput, ExrHasTheLayersAFigureIsComposedFrom) {
   const std::string path = scene(std::string(kPlate) + "[output]\nfile = \"x.exr\"\n");
   const RenderSummary summary = render(path);
