@@ -111,6 +111,16 @@ RenderSummary render_panel_figure(SceneSpec figure, const std::string& image_pat
   // only be said once their glyphs exist.
   std::vector<std::unique_ptr<PreparedScene>> panels;
   const auto prepare = [&](int panel_width, int panel_height, bool own_bar) {
+    // What the figure leaves each panel: too little is the figure's
+    // fault, not a --set the user never typed.
+    constexpr int smallest = 16;
+    if (panel_width < smallest || panel_height < smallest)
+      throw SceneError(figure.path + ": " + std::to_string(n) + " panels of a " + std::to_string(width) + "×" +
+                       std::to_string(height) + " picture" + (caption_height > 0.0 ? " with its caption" : "") +
+                       (own_bar ? "" : " and a shared colour bar") + " get " + std::to_string(panel_width) + "×" +
+                       std::to_string(panel_height) + " pixels each, less than " + std::to_string(smallest) +
+                       ": enlarge render.width and render.height (or output.print_size), use fewer panels or a "
+                       "shorter figure.caption");
     panels.clear();
     for (std::size_t i = 0; i < n; ++i) {
       SceneSpec spec = panel_scene(figure, figure.panels[i], i,

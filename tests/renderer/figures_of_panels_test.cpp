@@ -111,6 +111,25 @@ TEST(Panels, ABadPanelKeyNamesThePanel) {
   EXPECT_FALSE(fs::exists(dir / "out" / "figure.png"));
 }
 
+// A caption taller than the picture once left panels of 0 pixels, blamed
+// on "--set render.width=0".
+TEST(Panels, PanelsTooSmallForTheFigureAreTheFiguresError) {
+  const fs::path dir = temp_dir("small");
+  std::ofstream(dir / "figure.toml") << "[render]\nwidth = 120\nheight = 60\n[figure]\ncaption = \""
+                                     << std::string(3000, 'w') << "\"\n[[panel]]\n[[panel]]\n";
+  try {
+    run_render_job({(dir / "figure.toml").string(), {}, (dir / "out").string()});
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind((dir / "figure.toml").string() + ": 2 panels of a 120×60 picture with its caption get ", 0), 0u)
+        << m;
+    EXPECT_NE(m.find("less than 16: enlarge render.width and render.height"), std::string::npos) << m;
+    EXPECT_EQ(m.find("--set"), std::string::npos) << m;
+  }
+  EXPECT_FALSE(fs::exists(dir / "out" / "figure.png"));
+}
+
 std::unique_ptr<PreparedScene> prepared(const std::string& text) {
   const ColorManagement color("", "");
   return prepare_scene(load_scene_text(text, "flow.toml", ""), color);
