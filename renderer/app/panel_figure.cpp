@@ -113,7 +113,7 @@ RenderSummary render_panel_figure(SceneSpec figure, const std::string& image_pat
   const auto prepare = [&](int panel_width, int panel_height, bool own_bar) {
     // What the figure leaves each panel: too little is the figure's
     // fault, not a --set the user never typed.
-    constexpr int smallest = 16;
+    constexpr int smallest = 4;
     if (panel_width < smallest || panel_height < smallest)
       throw SceneError(figure.path + ": " + std::to_string(n) + " panels of a " + std::to_string(width) + "×" +
                        std::to_string(height) + " picture" + (caption_height > 0.0 ? " with its caption" : "") +

@@ -124,7 +124,7 @@ TEST(Panels, PanelsTooSmallForTheFigureAreTheFiguresError) {
     const std::string m = e.what();
     EXPECT_EQ(m.rfind((dir / "figure.toml").string() + ": 2 panels of a 120×60 picture with its caption get ", 0), 0u)
         << m;
-    EXPECT_NE(m.find("less than 16: enlarge render.width and render.height"), std::string::npos) << m;
+    EXPECT_NE(m.find("less than 4: enlarge render.width and render.height"), std::string::npos) << m;
     EXPECT_EQ(m.find("--set"), std::string::npos) << m;
   }
   EXPECT_FALSE(fs::exists(dir / "out" / "figure.png"));
