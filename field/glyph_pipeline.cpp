@@ -1,6 +1,7 @@
 #include "field/glyph_pipeline.h"
 
 #include <algorithm>
+#include <iomanip>
 #include <sstream>
 
 #include <tbb/parallel_for.h>
@@ -252,9 +253,9 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent)
                                    : trace_trajectory(*tensors, seeds[i], values.trajectory);
     });
     double count = 0.0;
-    for (const Trajectory& t : scene.trajectories) count += double(source_count(t, values.spacing));
+    for (const Trajectory& t : scene.trajectories) count += source_count(t, values.spacing);
     std::ostringstream what;
-    what << "the glyph sources (" << std::size_t(count) << " of them along " << seeds.size()
+    what << "the glyph sources (" << std::setprecision(count < 1e15 ? 15 : 3) << count << " of them along " << seeds.size()
          << " trajectories at glyphs.spacing " << values.spacing << ")";
     check_memory(count * kBytesPerSource, what.str(), "raise glyphs.spacing");
     std::vector<std::vector<GlyphSource>> per_seed(seeds.size());

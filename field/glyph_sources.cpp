@@ -29,11 +29,11 @@ void size_sources(std::vector<GlyphSource>& sources, const GlyphMapping& mapping
   for (GlyphSource& s : sources) s.radii = map_radii(s.eigenvalues, mapping);
 }
 
-std::size_t source_count(const Trajectory& trajectory, double spacing) {
-  if (trajectory.points.empty()) return 0;
+double source_count(const Trajectory& trajectory, double spacing) {
+  if (trajectory.points.empty()) return 0.0;
   // The epsilon keeps a length that is a whole number of spacings (up to
   // rounding) from losing its last source.
-  return static_cast<std::size_t>(std::floor(trajectory.length() / spacing + 1e-9)) + 1;
+  return std::floor(trajectory.length() / spacing + 1e-9) + 1.0;
 }
 
 std::vector<GlyphSource> place_sources(const TensorField& field, const Trajectory& trajectory,
@@ -75,7 +75,8 @@ std::vector<GlyphSource> place_sources(const Trajectory& trajectory, double spac
   // As many sources as fit at `spacing`, the run centred on the curve so
   // both ends look alike.
   const double total = trajectory.length();
-  const std::size_t count = source_count(trajectory, spacing);
+  // The caller has checked the count against memory, so it fits.
+  const std::size_t count = static_cast<std::size_t>(source_count(trajectory, spacing));
   const double first = 0.5 * (total - static_cast<double>(count - 1) * spacing);
   sources.reserve(count);
 

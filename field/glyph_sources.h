@@ -23,8 +23,10 @@ struct GlyphSource {
 };
 
 // How many sources place_sources() puts along `trajectory` at `spacing`
-// (some may then be skipped where the field cannot be sampled).
-std::size_t source_count(const Trajectory& trajectory, double spacing);
+// (some may then be skipped where the field cannot be sampled). A double:
+// a tiny spacing gives counts no integer type holds, and the memory check
+// must see them as they are.
+double source_count(const Trajectory& trajectory, double spacing);
 
 // The source a field makes at a point, radii not yet set; nothing where
 // the field cannot be sampled.

@@ -67,6 +67,11 @@ TEST(ResourceLimits, ScenesLargerThanTheMachineAreRefusedBeforeAllocating) {
   const std::string spacing = refusal(seeds + "[glyphs]\nspacing = 1e-9\n");
   EXPECT_NE(spacing.find("raise glyphs.spacing"), std::string::npos) << spacing;
   EXPECT_NE(spacing.find("would take about"), std::string::npos) << spacing;
+  // Counts beyond any integer type once wrapped to one glyph a trajectory.
+  for (const char* tiny : {"1e-20", "1e-300"}) {
+    const std::string message = refusal(seeds + "[glyphs]\nspacing = " + tiny + "\n");
+    EXPECT_NE(message.find("raise glyphs.spacing"), std::string::npos) << message;
+  }
   const std::string at_seeds = refusal("[glyphs]\nplacement = \"seeds\"\n[[seeds.grid]]\nn = 10000\nm = 10000\n"
                                        "[[seeds.grid]]\nn = 10000\nm = 10000\n[[seeds.grid]]\nn = 10000\nm = 10000\n"
                                        "[[seeds.grid]]\nn = 10000\nm = 10000\n");
