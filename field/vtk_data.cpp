@@ -291,7 +291,7 @@ ChosenArray choose_field_array(vtkDataSet* data, const VtkFileSpec& spec) {
   if (!spec.array.empty()) {
     chosen = named_array(data, spec.array, assoc);
     if (!chosen.array)
-      throw DataError(spec.path + ": no array named \"" + spec.array + "\"" + where_looked(assoc) + "; the file has " +
+      throw DataError(spec.path + ": no array named \"" + spec.array + "\" (data.array)" + where_looked(assoc) + "; the file has " +
                       list_arrays(data));
   } else {
     const auto pick = [&](bool vectors) {

@@ -22,6 +22,7 @@ packages=(
   libpango1.0-dev libcairo2-dev poppler-utils
   googletest libgtest-dev
   fonts-dejavu-core
+  python3
 )
 
 source scripts/lib/packages.sh

@@ -123,7 +123,7 @@ void read_seeds(TableReader& seeds, SeedSpec& spec) {
   spec.points = seeds.points("points");
   for (TableReader& grid : seeds.tables("grid")) {
     SeedGridSpec g;
-    g.corner = grid.vec3("corner", g.corner);
+    g.corner = grid.position("corner", g.corner);
     g.edge_u = grid.vec3("edge_u", g.edge_u);
     g.edge_v = grid.vec3("edge_v", g.edge_v);
     g.n = grid.integer("n", g.n, 1, 10000);
@@ -163,10 +163,10 @@ void read_curve(TableReader& c, CurveSpec& spec) {
   only_for({"centre", "radius", "axis"}, {CurveKind::circle, CurveKind::helix}, "\"circle\" or \"helix\"");
   only_for({"pitch", "turns"}, {CurveKind::helix}, "\"helix\"");
   only_for({"points"}, {CurveKind::polyline}, "\"polyline\"");
-  spec.from = c.vec3("from", spec.from);
-  spec.to = c.vec3("to", spec.to);
+  spec.from = c.position("from", spec.from);
+  spec.to = c.position("to", spec.to);
   if (spec.kind == CurveKind::line && spec.from == spec.to) c.fail_at("to", "must differ from glyphs.curve.from");
-  spec.centre = c.vec3("centre", spec.centre);
+  spec.centre = c.position("centre", spec.centre);
   spec.radius = c.number("radius", spec.radius, positive);
   spec.axis = c.vec3("axis", spec.axis);
   if (spec.axis.norm() == 0.0) c.fail_at("axis", "must not be zero");
@@ -258,8 +258,15 @@ void read_camera(TableReader& c, CameraRequest& spec) {
     }
     return c.vec3(key, Vec3::Zero());
   };
-  spec.position = optional_vec3("position");
-  spec.look_at = optional_vec3("look_at");
+  const auto optional_position = [&](const char* key) -> std::optional<Vec3> {
+    if (!c.has(key)) {
+      c.position(key, Vec3::Zero());  // a known key even when absent
+      return std::nullopt;
+    }
+    return c.position(key, Vec3::Zero());
+  };
+  spec.position = optional_position("position");
+  spec.look_at = optional_position("look_at");
   spec.up = optional_vec3("up");
   if (c.has("view")) {
     // A named view, or the direction from the scene towards the camera.
@@ -280,7 +287,9 @@ void read_camera(TableReader& c, CameraRequest& spec) {
   }
   spec.projection = c.choice("projection", Projection::perspective,
                              {{"perspective", Projection::perspective}, {"orthographic", Projection::orthographic}});
-  spec.fov_degrees = c.number("fov", spec.fov_degrees, {0.0, 179.0, true});
+  // Down to a ten-thousandth of a degree: narrower, the automatic camera
+  // would stand beyond the ray tracer's range.
+  spec.fov_degrees = c.number("fov", spec.fov_degrees, {1e-4, 179.0, false});
   spec.height = c.optional_number("height", positive);
   spec.frame = c.choice("frame", FrameTarget::drawn,
                         {{"drawn", FrameTarget::drawn}, {"glyphs", FrameTarget::glyphs}, {"data", FrameTarget::data}});
@@ -296,18 +305,21 @@ void read_camera(TableReader& c, CameraRequest& spec) {
 }
 
 void read_light(TableReader& l, ShadingSpec& spec, LightLengths& lengths) {
+  // Light levels are fractions of white; a hundred times it already
+  // washes every glyph out to one flat colour.
+  const NumberRange level{0.0, 100.0, false};
   spec.light_from = l.vec3("from", spec.light_from);
   if (spec.light_from.norm() == 0.0) l.fail_at("from", "must not be zero");
   spec.light_color = l.color("color", spec.light_color);
-  spec.light_intensity = l.number("intensity", spec.light_intensity, non_negative);
+  spec.light_intensity = l.number("intensity", spec.light_intensity, level);
   spec.light_size = l.number("size", spec.light_size, {0.0, 90.0, false});
   spec.light_samples = l.integer("samples", spec.light_samples, 1, 64);
   spec.shadows = l.boolean("shadows", spec.shadows);
   spec.fill_from = l.vec3("fill_from", spec.fill_from);
   if (spec.fill_from.norm() == 0.0) l.fail_at("fill_from", "must not be zero");
-  spec.fill_intensity = l.number("fill", spec.fill_intensity, non_negative);
-  spec.ambient = l.number("ambient", spec.ambient, non_negative);
-  spec.specular = l.number("specular", spec.specular, non_negative);
+  spec.fill_intensity = l.number("fill", spec.fill_intensity, level);
+  spec.ambient = l.number("ambient", spec.ambient, level);
+  spec.specular = l.number("specular", spec.specular, level);
   spec.shininess = l.number("shininess", spec.shininess, positive);
   if (auto ao = l.table("ambient_occlusion")) {
     spec.ao_samples = ao->integer("samples", spec.ao_samples, 0, 256);

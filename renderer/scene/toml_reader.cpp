@@ -4,6 +4,12 @@
 #include <sstream>
 
 namespace hsb {
+namespace {
+
+// The largest coordinate a point may have (TableReader::position).
+constexpr double kLargestCoordinate = 1e17;
+
+}  // namespace
 
 std::string source_location(const toml::source_region& where) {
   const std::string file = where.path ? *where.path : std::string("<scene>");
@@ -11,7 +17,28 @@ std::string source_location(const toml::source_region& where) {
   return file + ":" + std::to_string(where.begin.line) + ":" + std::to_string(where.begin.column);
 }
 
-std::string source_location(const toml::node& node) { return source_location(node.source()); }
+namespace {
+
+// The first node at or below `node` that came from a file or a --set: a
+// table that a --set created on its way to its value has no place of its
+// own, and its value's is where it came from.
+const toml::node* placed(const toml::node& node) {
+  if (node.source().path) return &node;
+  if (const toml::table* table = node.as_table())
+    for (const auto& [key, child] : *table)
+      if (const toml::node* found = placed(child)) return found;
+  if (const toml::array* array = node.as_array())
+    for (const toml::node& child : *array)
+      if (const toml::node* found = placed(child)) return found;
+  return nullptr;
+}
+
+}  // namespace
+
+std::string source_location(const toml::node& node) {
+  const toml::node* found = placed(node);
+  return source_location(found ? found->source() : node.source());
+}
 
 std::string describe(const toml::node& node) {
   std::ostringstream out;
@@ -157,6 +184,17 @@ std::vector<std::string> TableReader::strings(std::string_view key) {
   return out;
 }
 
+Vec3 TableReader::position(std::string_view key, const Vec3& fallback) {
+  const Vec3 p = vec3(key, fallback);
+  if (!(p.cwiseAbs().maxCoeff() <= kLargestCoordinate)) {
+    std::ostringstream got;
+    got << "must be within ±1e17 in every coordinate (the ray tracer's single-precision range), got [" << p.x()
+        << ", " << p.y() << ", " << p.z() << "]";
+    fail(*lookup(key), key, got.str());
+  }
+  return p;
+}
+
 Vec3 TableReader::vec3(std::string_view key, const Vec3& fallback) {
   if (!table_.contains(key)) {
     known_.emplace(key);
@@ -219,8 +257,9 @@ std::vector<Vec3> TableReader::points(std::string_view key) {
     Vec3 v;
     for (std::size_t k = 0; k < 3; ++k) {
       v[Eigen::Index(k)] = *(*p)[k].value<double>();
-      if (!std::isfinite(v[Eigen::Index(k)]))
-        fail((*p)[k], key, "must hold finite coordinates, got " + describe((*p)[k]));
+      if (!(std::fabs(v[Eigen::Index(k)]) <= kLargestCoordinate))
+        fail((*p)[k], key, "must hold coordinates within ±1e17 (the ray tracer's single-precision range), got " +
+                               describe((*p)[k]));
     }
     out.push_back(v);
   }

@@ -54,10 +54,17 @@ class TableReader {
   bool boolean(std::string_view key, bool fallback);
   std::string string(std::string_view key, const std::string& fallback);
   Vec3 vec3(std::string_view key, const Vec3& fallback);
+  // A point in space: [x, y, z] with every coordinate within ±1e17. The
+  // ray tracer keeps rays in single precision, so nothing farther can be
+  // traced, and points near the double range overflow every length
+  // computed from them.
+  Vec3 position(std::string_view key, const Vec3& fallback);
   // [r, g, b] with components in [0, 1] or "#rrggbb".
   Rgb color(std::string_view key, const Rgb& fallback);
   // Numbers, exactly `count` of them (any count when count is 0).
   std::vector<double> numbers(std::string_view key, std::size_t count);
+  // An array of points, each as position() requires (empty when absent).
+  std::vector<Vec3> points(std::string_view key);
   // An array of strings (empty when absent).
   std::vector<std::string> strings(std::string_view key);
 
@@ -71,8 +78,6 @@ class TableReader {
   // A sub-table (nullopt when absent) and an array of tables.
   std::optional<TableReader> table(std::string_view key);
   std::vector<TableReader> tables(std::string_view key);
-  // An array of [x, y, z] points.
-  std::vector<Vec3> points(std::string_view key);
 
   bool has(std::string_view key) const { return table_.contains(key); }
   bool holds_string(std::string_view key) const {

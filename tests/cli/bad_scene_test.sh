@@ -45,7 +45,7 @@ grep -q "10784 vtkTetra" "$work/info" || fail "info lacks the cell types: $(cat 
 grep -q "stress\" (9 components, point data)" "$work/info" || fail "info lacks the tensors: $(cat "$work/info")"
 "$hsb" info "$src/scenes/data/cylinder_stress_coarse.vtu" --array nope 2> "$work/err"
 [[ $? -ne 0 ]] || fail "info with a missing array exited 0"
-grep -q 'no array named "nope"; the file has point data: stress' "$work/err" || fail "unexpected: $(cat "$work/err")"
+grep -q 'no array named "nope" (data.array); the file has point data: stress' "$work/err" || fail "unexpected: $(cat "$work/err")"
 "$hsb" export "$src/scenes/fig10_cylinder_ellipsoids.toml" -o "$work/export" > "$work/log" 2>&1 || fail "export: $(cat "$work/log")"
 [[ -s "$work/export/fig10_cylinder_ellipsoids_sources.vtp" && -s "$work/export/fig10_cylinder_ellipsoids_trajectories.vtp" ]] \
   || fail "export wrote: $(ls "$work/export")"

@@ -419,7 +419,7 @@ TEST(VtkData, MissingArrayListsTheArraysThereAre) {
     FAIL() << "no error";
   } catch (const DataError& e) {
     EXPECT_EQ(std::string(e.what()),
-              path.string() + ": no array named \"strain\"; the file has point data: stress (9 components), "
+              path.string() + ": no array named \"strain\" (data.array); the file has point data: stress (9 components), "
                               "displacement (3 components); cell data: none");
   }
   // Three components name a vector field: a flow, for streamballs.

@@ -146,7 +146,7 @@ TEST_F(SceneFile, NonFiniteNumbersAreRefusedExceptAnInfiniteCeiling) {
             std::string::npos);
   EXPECT_EQ(error_of(std::string(minimal) + "[glyphs]\nceiling = inf\n"), "");
   const std::string seed = error_of("[seeds]\npoints = [[0, 0, 0.5], [0, nan, 0.5]]\n");
-  EXPECT_EQ(seed, path_ + ":2:28: seeds.points must hold finite coordinates, got nan");
+  EXPECT_EQ(seed, path_ + ":2:28: seeds.points must hold coordinates within ±1e17 (the ray tracer's single-precision range), got nan");
 }
 
 TEST_F(SceneFile, ADirectoryIsNoDataFile) {
