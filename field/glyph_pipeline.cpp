@@ -10,6 +10,7 @@
 #include "field/source_list.h"
 #include "field/data_error.h"
 #include "field/memory_budget.h"
+#include "field/process_memory.h"
 #include "field/seeding.h"
 #include "field/uniform_grid.h"
 
@@ -46,11 +47,14 @@ namespace {
 
 // Memory a trajectory point and a glyph source take, all copies included
 // (a point: its position, with the vector's growth; a source: the field's
-// and the renderer's copies and its share of the BVH), rounded up: the
-// estimates below guard against scenes a thousand times too large, not
-// against a few per cent.
+// and the renderer's copies, the span BVH's share, the per-trajectory
+// lists it passes through and the allocator's slack). A source's was
+// measured as the growth of the peak resident size between fig09 at
+// glyphs.spacing 0.004, 0.002 and 0.001 (27,516 to 110,004 sources):
+// 1,200 to 1,240 bytes; tests/cli/memory_test.sh holds the estimate to
+// within 25 % of the peak.
 constexpr double kBytesPerTrajectoryPoint = 48.0;
-constexpr double kBytesPerSource = 600.0;
+constexpr double kBytesPerSource = 1250.0;
 
 std::size_t seed_count(const SeedSpec& spec) {
   double n = double(spec.points.size());
@@ -193,6 +197,7 @@ GlyphScene given_sources(const GlyphPipelineSpec& spec, double glyph_extent) {
     box = {box.lo.cwiseMin(s.centre - reach), box.hi.cwiseMax(s.centre + reach)};
   }
   if (scene.sources.empty()) box = {Vec3::Zero(), Vec3::Zero()};
+  scene.memory_estimate = resident_bytes() + double(scene.sources.size()) * kBytesPerSource;
   scene.domain = box;
   scene.values.mapping.mapping = RadiusMapping::constant;
   scene.values.mapping.floor = 0.0;
@@ -242,6 +247,7 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent)
   };
 
   if (spec.placement == SourcePlacement::at_seeds) {
+    scene.memory_estimate = resident_bytes() + double(seeds.size()) * kBytesPerSource;
     for (const Vec3& seed : seeds)
       if (std::optional<GlyphSource> s = make(seed)) scene.sources.push_back(std::move(*s));
   } else {
@@ -257,7 +263,8 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent)
     std::ostringstream what;
     what << "the glyph sources (" << std::setprecision(count < 1e15 ? 15 : 3) << count << " of them along " << seeds.size()
          << " trajectories at glyphs.spacing " << values.spacing << ")";
-    check_memory(count * kBytesPerSource, what.str(), "raise glyphs.spacing");
+    scene.memory_estimate = resident_bytes() + count * kBytesPerSource;
+    check_memory(scene.memory_estimate, what.str(), "raise glyphs.spacing");
     std::vector<std::vector<GlyphSource>> per_seed(seeds.size());
     tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t i) {
       per_seed[i] = place_sources(scene.trajectories[i], values.spacing, make);

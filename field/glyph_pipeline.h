@@ -121,6 +121,10 @@ struct GlyphScene {
   std::optional<TriangleMesh> boundary;  // a mesh's outer surface (none for analytic data)
   GlyphValues values;
   std::vector<std::string> warnings;     // about the data, for the user
+  // The peak resident memory this scene will take once rendered, the
+  // picture aside: the process's size before its sources were made, and
+  // what each source costs through to the render.
+  double memory_estimate = 0.0;
 };
 
 struct LoadedField {

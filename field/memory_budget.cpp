@@ -1,5 +1,6 @@
 #include "field/memory_budget.h"
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -7,6 +8,8 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+
+#include "field/process_memory.h"
 
 namespace hsb {
 namespace {
@@ -25,14 +28,32 @@ double cgroup_limit() {
   return 0.0;
 }
 
-}  // namespace
+// The limit that binds, and its name for messages.
+struct Limit {
+  double bytes;
+  const char* what;
+};
 
-std::size_t memory_budget_bytes() {
+Limit binding_limit() {
   double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
   if (!(physical > 0.0)) physical = 8e9;  // unknown: assume a small machine
-  const double limit = cgroup_limit();
-  return std::size_t(0.75 * (limit > 0.0 ? std::min(physical, limit) : physical));
+  Limit limit{0.75 * physical, "this machine allows a scene (three quarters of its memory)"};
+  if (const double cgroup = cgroup_limit(); cgroup > 0.0 && 0.75 * cgroup < limit.bytes)
+    limit = {0.75 * cgroup, "this job's control group allows a scene (three quarters of its limit)"};
+  // ulimit -v caps the address space, which holds more than the resident
+  // memory (thread stacks, mapped libraries): what the process may still
+  // map, on top of what it holds now.
+  struct rlimit address_space {};
+  if (getrlimit(RLIMIT_AS, &address_space) == 0 && address_space.rlim_cur != RLIM_INFINITY) {
+    const double room = double(address_space.rlim_cur) - virtual_bytes() + resident_bytes();
+    if (room < limit.bytes) limit = {room, "the address-space limit (ulimit -v) leaves this process"};
+  }
+  return limit;
 }
+
+}  // namespace
+
+std::size_t memory_budget_bytes() { return std::size_t(std::max(0.0, binding_limit().bytes)); }
 
 std::string human_bytes(double bytes) {
   const char* units[] = {"bytes", "kB", "MB", "GB", "TB", "PB", "EB"};
@@ -44,11 +65,11 @@ std::string human_bytes(double bytes) {
 }
 
 void check_memory(double bytes, const std::string& what, const std::string& change) {
-  const double budget = double(memory_budget_bytes());
-  if (bytes <= budget) return;
+  const Limit limit = binding_limit();
+  if (bytes <= limit.bytes) return;
   std::ostringstream message;
-  message << what << " would take about " << human_bytes(bytes) << ", more than the " << human_bytes(budget)
-          << " this machine allows a scene (three quarters of its memory): " << change;
+  message << what << " would take about " << human_bytes(bytes) << ", more than the "
+          << human_bytes(std::max(0.0, limit.bytes)) << " " << limit.what << ": " << change;
   throw ResourceError(message.str());
 }
 

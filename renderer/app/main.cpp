@@ -23,7 +23,7 @@
 #include "renderer/app/export_job.h"
 #include "renderer/app/pinned_scene.h"
 #include "renderer/app/prepared_scene.h"
-#include "renderer/app/process_memory.h"
+#include "field/process_memory.h"
 #include "renderer/app/render_job.h"
 #include "renderer/render/ray_scene.h"
 #include "renderer/surface/instruction_set.h"
@@ -98,8 +98,8 @@ void print_summary(const hsb::RenderSummary& s, bool with_stats) {
     print_trace_stats("camera", s.stats);
     print_trace_stats("shadow", s.shadow_stats);
     const double peak = hsb::peak_resident_bytes();
-    std::printf("  peak memory %.0f MB (%.0f bytes per source, the film and program included)\n", peak * 1e-6,
-                peak / double(std::max<std::size_t>(1, s.sources)));
+    std::printf("  peak memory %.0f MB (%.0f bytes per source, the film and program included); estimated %.0f MB\n",
+                peak * 1e-6, peak / double(std::max<std::size_t>(1, s.sources)), s.memory_estimate * 1e-6);
     const std::uint64_t gave_up = s.stats.step_limit_hits + s.shadow_stats.step_limit_hits;
     if (gave_up) std::printf("  rays that hit the step limit: %llu\n", (unsigned long long)gave_up);
   }

@@ -287,8 +287,9 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   p.render.width = size[0];
   p.render.height = size[1];
   std::ostringstream picture;
-  picture << "the picture (" << p.render.width << " × " << p.render.height << " pixels)";
-  check_memory(kBytesPerPixel * p.render.width * p.render.height, picture.str(),
+  picture << "the scene with its picture (" << p.render.width << " × " << p.render.height << " pixels)";
+  p.memory_estimate = p.glyphs.memory_estimate + kBytesPerPixel * p.render.width * p.render.height;
+  check_memory(p.memory_estimate, picture.str(),
                "lower render.width and render.height (or output.print_size or output.dpi)");
   p.render.samples = s.render.samples;
   // Exact wherever it applies: it was the faster of the two over the

@@ -40,6 +40,9 @@ struct PreparedScene {
   std::vector<std::string> automatic;
   // About the data and the picture: the image is still made.
   std::vector<std::string> warnings;
+  // The peak resident memory the render will take, checked against the
+  // machine's limits before the render allocates it.
+  double memory_estimate = 0.0;
 
   PreparedScene() = default;
   PreparedScene(const PreparedScene&) = delete;  // context points into glyphs

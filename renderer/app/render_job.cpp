@@ -106,6 +106,7 @@ RenderSummary run_render_job(const RenderJob& job) {
   summary.shadow_rays = rendered.shadow_rays;
   summary.primary_mrays_per_second = rendered.primary_mrays_per_second();
   summary.shadow_mrays_per_second = rendered.shadow_mrays_per_second();
+  summary.memory_estimate = prepared->memory_estimate;
   summary.stats = rendered.stats;
   summary.shadow_stats = rendered.shadow_stats;
   return summary;

@@ -43,6 +43,7 @@ struct RenderSummary {
   double primary_mrays_per_second = 0.0, shadow_mrays_per_second = 0.0;
   TraceStats stats, shadow_stats;  // camera rays; shadow and occlusion rays
   std::vector<std::string> warnings;  // about the data; the image is still complete
+  double memory_estimate = 0.0;       // PreparedScene::memory_estimate
 };
 
 // Renders `job` and writes the image. Throws SceneError for bad scene input

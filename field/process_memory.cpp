@@ -1,4 +1,4 @@
-#include "renderer/app/process_memory.h"
+#include "field/process_memory.h"
 
 #include <fstream>
 #include <string>
@@ -24,6 +24,7 @@ double status_kib(const char* field) {
 
 double resident_bytes() { return status_kib("VmRSS:") * 1024.0; }
 double peak_resident_bytes() { return status_kib("VmHWM:") * 1024.0; }
+double virtual_bytes() { return status_kib("VmSize:") * 1024.0; }
 void reset_peak_resident() { std::ofstream("/proc/self/clear_refs") << "5"; }
 
 }  // namespace hsb
