@@ -107,6 +107,12 @@ std::vector<GlyphSource> read_source_list(const std::string& path, double glyph_
     };
     GlyphSource s;
     s.centre = Vec3(value("x"), value("y"), value("z"));
+    // The ray tracer keeps rays in single precision: nothing beyond ±1e17.
+    for (const char* axis : {"x", "y", "z"})
+      if (!(std::fabs(value(axis)) <= 1e17))
+        fail(number, cells[columns.at(axis)].column,
+             std::string(axis) + ": a coordinate within ±1e17 (the ray tracer's single-precision range), found " +
+                 cells[columns.at(axis)].text);
     s.eigenvalues = columns.count("r1") ? Vec3(positive("r1"), positive("r2"), positive("r3"))
                                         : Vec3::Constant(positive("r"));
     s.radii = s.eigenvalues / glyph_extent;

@@ -171,7 +171,9 @@ void read_curve(TableReader& c, CurveSpec& spec) {
   spec.axis = c.vec3("axis", spec.axis);
   if (spec.axis.norm() == 0.0) c.fail_at("axis", "must not be zero");
   spec.pitch = c.number("pitch", spec.pitch, non_negative);
-  spec.turns = c.number("turns", spec.turns, positive);
+  // A helix is drawn as 256 segments a turn; more than 10,000 turns are
+  // more than glyphs.curve.count (at most 100,000) could show anyway.
+  spec.turns = c.number("turns", spec.turns, {0.0, 10000.0, true});
   spec.points = c.points("points");
   if (spec.kind == CurveKind::polyline && spec.points.size() < 2)
     c.fail_at(c.has("points") ? "points" : "kind", "needs glyphs.curve.points: at least two [x, y, z]");

@@ -214,6 +214,12 @@ TEST_F(SourceList, ColumnGroupsComeWhole) {
             write("") + ":1:9: all of the columns r1, r2, r3 (the radii), found r1 r2 without r3");
 }
 
+// A row far away could never be traced (and once rendered blank).
+TEST_F(SourceList, CoordinatesBeyondTheTracersRangeAreRefused) {
+  EXPECT_EQ(error_of("x,y,z,r\n0,0,0,1\n0,2e30,0,1\n"),
+            write("") + ":3:3: y: a coordinate within ±1e17 (the ray tracer's single-precision range), found 2e30");
+}
+
 // Spreadsheets write UTF-8 with a byte-order mark before the header.
 TEST_F(SourceList, AByteOrderMarkIsNoPartOfTheHeader) {
   const auto s = read_source_list(write("\xEF\xBB\xBFx,y,z,r\n1,2,3,0.5\n"), 0.5);
