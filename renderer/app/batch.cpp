@@ -22,8 +22,13 @@ namespace {
 struct SceneSweep {
   std::string key;
   std::vector<std::string> values;
-  std::string where;  // file:line:column of the key's values
+  std::string where;                // file:line:column of the key's values
+  std::vector<std::string> places;  // of each value
 };
+
+std::string place(const std::string& scene, const toml::node& node) {
+  return scene + ":" + std::to_string(node.source().begin.line) + ":" + std::to_string(node.source().begin.column);
+}
 
 std::vector<SceneSweep> scene_sweeps(const std::string& scene) {
   std::vector<SceneSweep> out;
@@ -35,12 +40,16 @@ std::vector<SceneSweep> scene_sweeps(const std::string& scene) {
     // "glyphs.spacing" = [...] and [sweep.glyphs] spacing = [...] say the same.
     if (const toml::table* sweep = root["sweep"].as_table())
       for_each_leaf(*sweep, "", [&](const std::string& path, const toml::node& node) {
-        SceneSweep swept{path, {}, scene + ":" + std::to_string(node.source().begin.line) + ":" +
-                                       std::to_string(node.source().begin.column)};
-        if (const toml::array* values = node.as_array())
-          for (const toml::node& v : *values) swept.values.push_back(toml_text(v));
-        else
+        SceneSweep swept{path, {}, place(scene, node), {}};
+        if (const toml::array* values = node.as_array()) {
+          for (const toml::node& v : *values) {
+            swept.values.push_back(toml_text(v));
+            swept.places.push_back(place(scene, v));
+          }
+        } else {
           swept.values.push_back(toml_text(node));
+          swept.places.push_back(place(scene, node));
+        }
         out.push_back(std::move(swept));
       });
   } catch (const std::exception&) {
@@ -84,7 +93,7 @@ Batch::Batch(const std::vector<std::string>& scenes, const std::vector<std::stri
     const std::vector<std::string> values =
         eq == std::string::npos ? std::vector<std::string>{} : split_sweep(o.substr(eq + 1));
     if (values.size() > 1)
-      cli.push_back({o.substr(0, eq), values});
+      cli.push_back({o.substr(0, eq), values, {}});
     else
       fixed_.push_back(o);
   }
@@ -93,7 +102,7 @@ Batch::Batch(const std::vector<std::string>& scenes, const std::vector<std::stri
     for (SceneSweep& s : scene_sweeps(path)) {
       if (s.values.empty() && scene.error.empty())
         scene.error = s.where + ": sweep." + s.key + " lists no values; a sweep needs one or more";
-      scene.swept.push_back({std::move(s.key), std::move(s.values)});
+      scene.swept.push_back({std::move(s.key), std::move(s.values), std::move(s.places)});
     }
     if (scene.error.empty())
       for (const SweptKey& k : scene.swept) {
@@ -119,7 +128,9 @@ BatchItem Batch::item(std::size_t position) const {
   std::vector<std::string> assignments(scene.swept.size());
   for (std::size_t k = scene.swept.size(); k-- > 0;) {
     const SweptKey& swept = scene.swept[k];
-    assignments[k] = swept.key + "=" + swept.values[rest % swept.values.size()];
+    const std::size_t v = rest % swept.values.size();
+    assignments[k] = swept.key + "=" + swept.values[v];
+    if (!swept.where.empty()) item.sweep_origins.emplace_back(assignments[k], swept.where[v]);
     rest /= swept.values.size();
   }
   for (const std::string& a : assignments) {
@@ -127,6 +138,14 @@ BatchItem Batch::item(std::size_t position) const {
     item.variant += (item.variant.empty() ? "" : ",") + a;
   }
   return item;
+}
+
+std::string located_error(const BatchItem& item, const std::string& message) {
+  for (const auto& [text, where] : item.sweep_origins) {
+    const std::string prefix = "--set " + text + ": ";
+    if (message.rfind(prefix, 0) == 0) return where + ": in [sweep], " + message.substr(prefix.size());
+  }
+  return message;
 }
 
 std::size_t Batch::shard_size(Shard shard) const {

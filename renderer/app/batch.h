@@ -23,7 +23,15 @@ struct BatchItem {
   std::vector<std::string> overrides;  // --set key=value, then this item's swept values
   std::string variant;                 // its swept values, "glyphs.spacing=0.02"; "" without sweeps
   std::string error;                   // why it cannot render (file:line:column: ...), or ""
+  // The overrides that came from the scene's [sweep] table, each with the
+  // file:line:column of its value there: an error about one names that
+  // place, not a --set the user never typed (see located_error()).
+  std::vector<std::pair<std::string, std::string>> sweep_origins;
 };
+
+// `message` with a leading "--set KEY=VALUE: " that names one of the
+// item's sweep values replaced by where that value stands in the scene.
+std::string located_error(const BatchItem& item, const std::string& message);
 
 // The values of one --set value: several for a sweep, else the value itself.
 std::vector<std::string> split_sweep(const std::string& value);
@@ -61,6 +69,7 @@ class Batch {
   struct SweptKey {
     std::string key;
     std::vector<std::string> values;  // each as TOML text
+    std::vector<std::string> where;   // each value's file:line:column; empty for --set sweeps
   };
   struct Scene {
     std::string path;

@@ -334,6 +334,9 @@ int main(int argc, char** argv) {
     hsb::RenderSummary summary;
     try {
       summary = hsb::run_render_job(job);
+    } catch (const hsb::SceneError& e) {
+      progress.finish();
+      throw hsb::SceneError(hsb::located_error(item, e.what()));
     } catch (...) {
       progress.finish();
       throw;

@@ -113,6 +113,22 @@ TEST(Batch, AnEmptySweepListIsALocatedError) {
   EXPECT_EQ(item.error, scene + ":4:20: sweep.glyphs.spacing lists no values; a sweep needs one or more");
 }
 
+// A bad value from the scene's [sweep] table is the table's, not a --set
+// the user never typed.
+TEST(Batch, ASweptValuesErrorNamesItsPlaceInTheScene) {
+  const auto dir = test_temp_dir("batch_test");
+  const std::string scene = (dir / "bad_sweep.toml").string();
+  std::ofstream(scene) << "[sweep]\n\"glyphs.spacing\" = [0.1, -1]\n";
+  const Batch batch({scene}, {"render.samples=1,2"});
+  ASSERT_EQ(batch.size(), 4u);
+  const BatchItem item = batch.item(1);  // render.samples=1, glyphs.spacing=-1
+  EXPECT_EQ(item.variant, "render.samples=1,glyphs.spacing=-1");
+  EXPECT_EQ(located_error(item, "--set glyphs.spacing=-1: glyphs.spacing must be > 0, got -1"),
+            scene + ":2:26: in [sweep], glyphs.spacing must be > 0, got -1");
+  // A --set sweep's value is the user's own --set.
+  EXPECT_EQ(located_error(item, "--set render.samples=1: oops"), "--set render.samples=1: oops");
+}
+
 TEST(Batch, FileNamesSayTheSweptValues) {
   EXPECT_EQ(file_for_variant("fig09.png", ""), "fig09.png");
   EXPECT_EQ(file_for_variant("fig09.png", "glyphs.spacing=0.02"), "fig09_glyphs.spacing=0.02.png");
