@@ -25,8 +25,17 @@ void validate_dims(const std::array<int, 3>& dims) {
 }  // namespace
 
 UniformGridField::UniformGridField(const Vec3& origin, const Vec3& spacing,
-                                   const std::array<int, 3>& dims, std::vector<Sym3> values)
-    : origin_(origin), spacing_(spacing), dims_(dims), values_(std::move(values)) {
+                                   const std::array<int, 3>& dims, std::vector<Sym3> values,
+                                   const Mat3& direction)
+    : origin_(origin),
+      spacing_(spacing),
+      direction_(direction),
+      aligned_(direction == Mat3::Identity()),
+      dims_(dims),
+      values_(std::move(values)) {
+  if (!direction_.allFinite() || !(std::fabs(direction_.determinant()) > 1e-12))
+    throw std::invalid_argument("uniform grid: the direction matrix must be finite and invertible");
+  to_index_ = spacing_.cwiseInverse().asDiagonal() * direction_.inverse();
   validate_dims(dims_);
   if (!origin_.allFinite()) throw std::invalid_argument("uniform grid: origin must be finite");
   if (!spacing_.allFinite() || !(spacing_.array() > 0.0).all())
@@ -76,8 +85,15 @@ UniformGridField UniformGridField::sampled_from(const TensorField& field,
 }
 
 Box3 UniformGridField::bounds() const {
-  const Vec3 cells(dims_[0] - 1, dims_[1] - 1, dims_[2] - 1);
-  return {origin_, origin_ + spacing_.cwiseProduct(cells)};
+  const Vec3 extent = spacing_.cwiseProduct(Vec3(dims_[0] - 1, dims_[1] - 1, dims_[2] - 1));
+  if (aligned_) return {origin_, origin_ + extent};
+  Box3 box{origin_, origin_};
+  for (int corner = 1; corner < 8; ++corner) {
+    const Vec3 p = origin_ + direction_ * Vec3(corner & 1 ? extent.x() : 0.0, corner & 2 ? extent.y() : 0.0,
+                                               corner & 4 ? extent.z() : 0.0);
+    box.lo = box.lo.cwiseMin(p), box.hi = box.hi.cwiseMax(p);
+  }
+  return box;
 }
 
 const Sym3& UniformGridField::node(int i, int j, int k) const {
@@ -96,8 +112,9 @@ std::optional<Sym3> UniformGridField::sample(const Vec3& x) const {
   constexpr double kSlack = 1e-12;
   int cell[3];
   double t[3];
+  const Vec3 index = aligned_ ? Vec3((x - origin_).cwiseQuotient(spacing_)) : Vec3(to_index_ * (x - origin_));
   for (int a = 0; a < 3; ++a) {
-    const double u = (x(a) - origin_(a)) / spacing_(a);
+    const double u = index(a);
     const double last = dims_[a] - 1;
     if (!(u >= -kSlack * last && u <= last * (1.0 + kSlack))) return std::nullopt;  // NaN too
     // Clamping the cell to dims−2 puts the far face in the last cell (t = 1).

@@ -411,15 +411,13 @@ ChosenArray averaged_onto_points(vtkDataSet* data, const ChosenArray& cells, con
   return {keep_alive->GetPointData()->GetArray(cells.array->GetName()), true, cells.name};
 }
 
-bool is_axis_aligned_image(vtkDataSet* data) {
+// Image data a uniform grid can stand for: a volume (two nodes or more on
+// every axis) with an invertible direction matrix, turned or not.
+bool is_image_volume(vtkDataSet* data) {
   auto* image = vtkImageData::SafeDownCast(data);
   if (!image) return false;
-  vtkMatrix3x3* direction = image->GetDirectionMatrix();
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      if (direction->GetElement(i, j) != (i == j ? 1.0 : 0.0)) return false;
   const int* dims = image->GetDimensions();
-  return dims[0] >= 2 && dims[1] >= 2 && dims[2] >= 2;
+  return dims[0] >= 2 && dims[1] >= 2 && dims[2] >= 2 && std::fabs(image->GetDirectionMatrix()->Determinant()) > 1e-12;
 }
 
 // The data set's outer surface as triangles with vertex normals. Edges
@@ -514,17 +512,21 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
       std::vector<std::string> repeated;
       tensors = read_tensors(chosen, spec.path, repeated);
     }
-    if (chosen.on_points && is_axis_aligned_image(data)) {
+    if (chosen.on_points && is_image_volume(data)) {
       auto* image = vtkImageData::SafeDownCast(data);
       const int* extent = image->GetExtent();
       const double* origin = image->GetOrigin();
       const double* spacing = image->GetSpacing();
-      const Vec3 first(origin[0] + extent[0] * spacing[0], origin[1] + extent[2] * spacing[1],
-                       origin[2] + extent[4] * spacing[2]);
+      Mat3 direction;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) direction(i, j) = image->GetDirectionMatrix()->GetElement(i, j);
+      // The first node: the extent may start away from index 0.
+      const Vec3 first = Vec3(origin[0], origin[1], origin[2]) +
+                         direction * Vec3(extent[0] * spacing[0], extent[2] * spacing[1], extent[4] * spacing[2]);
       const int* dims = image->GetDimensions();
       out.field = std::make_unique<UniformGridField>(first, Vec3(spacing[0], spacing[1], spacing[2]),
                                                      std::array<int, 3>{dims[0], dims[1], dims[2]},
-                                                     std::move(tensors));
+                                                     std::move(tensors), direction);
     } else {
       out.field = std::make_unique<MeshField>(mesh_locator(), std::move(tensors),
                                               chosen.on_points ? ValueLocation::points : ValueLocation::cells);

@@ -322,6 +322,49 @@ TEST(VtkData, QuadraticCellsReproduceQuadraticFields) {
   }
 }
 
+// Image data turned by a Direction matrix: the grid is sampled in its own
+// frame (it once fell to a cell locator that found no cell in it, and a
+// scene showed the shell alone).
+TEST(VtkData, ATurnedImageIsSampledInItsOwnFrame) {
+  auto img = image(4);
+  const double turn = 30.0 * M_PI / 180.0;
+  const double d[9] = {std::cos(turn), -std::sin(turn), 0, std::sin(turn), std::cos(turn), 0, 0, 0, 1};
+  img->SetDirectionMatrix(d);
+  add_point_tensors(img, linear_tensor);
+  const fs::path path = temp_dir() / "turned.vti";
+  auto writer = vtkSmartPointer<vtkXMLImageDataWriter>::New();
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(img);
+  ASSERT_EQ(writer->Write(), 1);
+  const VtkData data = load(path);
+  ASSERT_TRUE(data.field);
+  // Inside the turned grid, at points given in its own frame: the affine
+  // field exactly.
+  Mat3 direction;
+  direction << std::cos(turn), -std::sin(turn), 0, std::sin(turn), std::cos(turn), 0, 0, 0, 1;
+  const Vec3 origin(-1, 0, 0.5), extent(0.5 * 3, 0.25 * 4, 0.5 * 5);
+  int inside = 0;
+  for (double a = 0.05; a < 1.0; a += 0.15)
+    for (double b = 0.05; b < 1.0; b += 0.2) {
+      const Vec3 x = origin + direction * Vec3(a * extent.x(), b * extent.y(), (1 - a) * extent.z());
+      const std::optional<Sym3> s = data.field->sample(x);
+      ASSERT_TRUE(s) << "no data at " << x.transpose();
+      EXPECT_LT((s->matrix() - linear_tensor(x).matrix()).norm(), 1e-9) << x.transpose();
+      ++inside;
+    }
+  EXPECT_GT(inside, 30);
+  // Inside the box around it but outside the grid: no data.
+  const Box3 box = data.field->bounds();
+  const Vec3 beside = origin + direction * Vec3(0.9 * extent.x(), -0.1, 0.5 * extent.z());
+  EXPECT_TRUE(box.contains(beside));
+  EXPECT_FALSE(data.field->sample(beside));
+  // The box holds the turned grid's corners.
+  for (int c = 0; c < 8; ++c) {
+    const Vec3 p = origin + direction * Vec3(c & 1 ? extent.x() : 0, c & 2 ? extent.y() : 0, c & 4 ? extent.z() : 0);
+    EXPECT_TRUE(box.contains(p) || (p - box.lo.cwiseMax(box.hi.cwiseMin(p))).norm() < 1e-12) << p.transpose();
+  }
+}
+
 TEST(VtkData, SixAndNineComponentsGiveTheSameEigensystem) {
   auto mesh = tet_mesh(2);
   auto six = tensor_array("six", 6, mesh->GetNumberOfPoints());
