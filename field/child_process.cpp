@@ -3,10 +3,14 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/prctl.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <string>
 #include <thread>
 
 #if defined(__has_feature)
@@ -17,8 +21,43 @@
 #endif
 
 namespace hsb {
+namespace {
+
+// Whether thread `tid` of this process is running, from its stat line
+// ("tid (name) S ..."; the state follows the last parenthesis).
+bool thread_running(const std::string& tid) {
+  std::ifstream stat("/proc/self/task/" + tid + "/stat");
+  std::string line;
+  std::getline(stat, line);
+  const std::size_t close = line.rfind(')');
+  return close != std::string::npos && close + 2 < line.size() && line[close + 2] == 'R';
+}
+
+// Waits, for a few tenths of a second at most, until every other thread of
+// this process sleeps. fork() copies only the calling thread: another one
+// stopped in the middle of the allocator leaves its lock held in the child
+// for ever. glibc's malloc guards against that with fork handlers; the
+// sanitizers' allocator of clang 14 does not, and a pool thread that had
+// just finished its work hung one trial read in ten there.
+void wait_for_quiet_threads() {
+  const std::string self = std::to_string(syscall(SYS_gettid));
+  for (int tries = 0; tries < 300; ++tries) {
+    bool quiet = true;
+    std::error_code error;
+    for (std::filesystem::directory_iterator it("/proc/self/task", error), end; quiet && !error && it != end;
+         it.increment(error)) {
+      const std::string tid = it->path().filename().string();
+      quiet = tid == self || !thread_running(tid);
+    }
+    if (quiet) return;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+}
+
+}  // namespace
 
 ChildResult run_in_child(const std::function<void()>& work, double seconds) {
+  wait_for_quiet_threads();
   const pid_t pid = fork();
   if (pid < 0) return {};  // no child to be had: run it only for real
   if (pid == 0) {
