@@ -179,6 +179,7 @@ ColorScalar resolve_color(const GlyphPipelineSpec& spec, const LoadedField& load
 // given, the domain what they cover.
 GlyphScene given_sources(const GlyphPipelineSpec& spec, double glyph_extent) {
   GlyphScene scene;
+  const double before_sources = resident_bytes();
   if (spec.placement == SourcePlacement::curve) {
     scene.sources = curve_sources(spec.curve, glyph_extent);
     scene.trajectories.push_back(curve_points(spec.curve));
@@ -197,7 +198,7 @@ GlyphScene given_sources(const GlyphPipelineSpec& spec, double glyph_extent) {
     box = {box.lo.cwiseMin(s.centre - reach), box.hi.cwiseMax(s.centre + reach)};
   }
   if (scene.sources.empty()) box = {Vec3::Zero(), Vec3::Zero()};
-  scene.memory_estimate = resident_bytes() + double(scene.sources.size()) * kBytesPerSource;
+  scene.memory_estimate = before_sources + double(scene.sources.size()) * kBytesPerSource;
   scene.domain = box;
   scene.values.mapping.mapping = RadiusMapping::constant;
   scene.values.mapping.floor = 0.0;

@@ -37,12 +37,15 @@ void unregister_path(int slot) {
   if (slot >= 0) registry_state[slot].store(0);
 }
 
-std::string host_name() {
-  char name[256] = {};
-  if (gethostname(name, sizeof name - 1) != 0 || !name[0]) return "host";
-  std::string host = name;
-  for (char& c : host)
-    if (c == '/' || c == '.') c = '_';  // one path component, no extension in it
+// This host's name, once, as one path component with no extension in it.
+const std::string& host_name() {
+  static const std::string host = [] {
+    char name[256] = {};
+    std::string h = gethostname(name, sizeof name - 1) == 0 && name[0] ? name : "host";
+    for (char& c : h)
+      if (c == '/' || c == '.') c = '_';
+    return h;
+  }();
   return host;
 }
 

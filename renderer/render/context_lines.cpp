@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "renderer/surface/embree_bounds.h"
+#include "renderer/surface/embree_ray.h"
 
 namespace hsb {
 namespace {
@@ -26,7 +27,7 @@ double ray_capsule(const Vec3& o, const Vec3& d, const Vec3& a, const Vec3& b, d
   // three (a ray entering the cylinder through an end disc is already in
   // that end's ball).
   double best = -1.0;
-  Vec3 centre;  // the normal points from here, or from the axis
+  Vec3 centre = Vec3::Zero();  // the normal points from here, or from the axis
   const auto consider = [&](double t, const Vec3& from) {
     if (t >= tmin && t <= tmax && (best < 0.0 || t < best)) best = t, centre = from;
   };
@@ -50,13 +51,12 @@ double ray_capsule(const Vec3& o, const Vec3& d, const Vec3& a, const Vec3& b, d
 }
 
 ContextLines::ContextLines(const std::vector<const std::vector<Vec3>*>& lines, double radius) : radius_(radius) {
-  Box3 all{Vec3::Constant(INFINITY), Vec3::Constant(-INFINITY)};
-  for (const std::vector<Vec3>* line : lines)
-    for (std::size_t k = 1; k < line->size(); ++k) {
-      segments_.push_back({(*line)[k - 1], (*line)[k]});
-      all.lo = all.lo.cwiseMin((*line)[k - 1]).cwiseMin((*line)[k]);
-      all.hi = all.hi.cwiseMax((*line)[k - 1]).cwiseMax((*line)[k]);
-    }
+  Box3 all = bounding_box({});
+  for (const std::vector<Vec3>* line : lines) {
+    if (line->size() < 2) continue;
+    for (std::size_t k = 1; k < line->size(); ++k) segments_.push_back({(*line)[k - 1], (*line)[k]});
+    all.extend(bounding_box(*line));
+  }
   margin_ = segments_.empty() ? 0.0 : bounds_margin(all.diagonal() + 2.0 * radius);
 }
 
@@ -89,10 +89,9 @@ void ContextLines::intersect(const RTCIntersectFunctionNArguments* args) {
   RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, n);
   for (unsigned i = 0; i < n; ++i) {
     if (!args->valid[i]) continue;
-    const Vec3 o(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i));
-    const Vec3 d(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i));
     Vec3 normal;
-    const double t = ray_capsule(o, d, s.a, s.b, self->radius_, RTCRayN_tnear(rays, n, i), RTCRayN_tfar(rays, n, i), normal);
+    const double t = ray_capsule(embree_ray_origin(rays, n, i), embree_ray_direction(rays, n, i), s.a, s.b,
+                                 self->radius_, RTCRayN_tnear(rays, n, i), RTCRayN_tfar(rays, n, i), normal);
     if (t < 0.0 || !(float(t) < RTCRayN_tfar(rays, n, i))) continue;
     RTCRayN_tfar(rays, n, i) = float(t);
     RTCHitN_Ng_x(hits, n, i) = float(normal.x());
@@ -111,10 +110,8 @@ void ContextLines::occluded(const RTCOccludedFunctionNArguments* args) {
   const unsigned n = args->N;
   for (unsigned i = 0; i < n; ++i) {
     if (!args->valid[i]) continue;
-    const Vec3 o(RTCRayN_org_x(args->ray, n, i), RTCRayN_org_y(args->ray, n, i), RTCRayN_org_z(args->ray, n, i));
-    const Vec3 d(RTCRayN_dir_x(args->ray, n, i), RTCRayN_dir_y(args->ray, n, i), RTCRayN_dir_z(args->ray, n, i));
     Vec3 normal;
-    if (ray_capsule(o, d, s.a, s.b, self->radius_, RTCRayN_tnear(args->ray, n, i), RTCRayN_tfar(args->ray, n, i),
+    if (ray_capsule(embree_ray_origin(args->ray, n, i), embree_ray_direction(args->ray, n, i), s.a, s.b, self->radius_, RTCRayN_tnear(args->ray, n, i), RTCRayN_tfar(args->ray, n, i),
                     normal) >= 0.0)
       RTCRayN_tfar(args->ray, n, i) = -std::numeric_limits<float>::infinity();
   }

@@ -57,9 +57,7 @@ double ray_triangle(const Vec3& o, const Vec3& d, const Vec3& a, const Vec3& b, 
 }
 
 ShellGeometry::ShellGeometry(RTCDevice device, const TriangleMesh& mesh) : mesh_(mesh) {
-  Box3 box{Vec3::Constant(std::numeric_limits<double>::infinity()),
-           Vec3::Constant(-std::numeric_limits<double>::infinity())};
-  for (const Vec3& v : mesh.vertices) box.lo = box.lo.cwiseMin(v), box.hi = box.hi.cwiseMax(v);
+  const Box3 box = bounding_box(mesh.vertices);
   // The triangles sharing an edge or a vertex a ray passes through give
   // that crossing's t to within rounding; distinct layers of a body are
   // never this close.

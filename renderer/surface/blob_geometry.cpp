@@ -66,8 +66,8 @@ ValidLanes gather_lanes(const int* valid, RTCRayN* rays, unsigned n) {
     lanes.index[j] = checked_ray_index(rays, n, i);
     lanes.lane[j] = i;
     RayInterval& ray = lanes.rays[j];
-    ray.origin = Vec3(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i));
-    ray.direction = Vec3(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i));
+    ray.origin = embree_ray_origin(rays, n, i);
+    ray.direction = embree_ray_direction(rays, n, i);
     ray.tmin = RTCRayN_tnear(rays, n, i);
     ray.tmax = RTCRayN_tfar(rays, n, i);
   }
@@ -150,7 +150,7 @@ void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
     ++query->candidates;
     const unsigned k = checked_ray_index(embree_rays, 1, 0);
     RaySpan span;
-    if (ray_span(source, args->primID, query->rank[args->primID], Vec3(r.ox[k], r.oy[k], r.oz[k]), Vec3(r.dx[k], r.dy[k], r.dz[k]), r.tmin[k],
+    if (ray_span(source, args->primID, query->rank[args->primID], r.origin(int(k)), r.direction(int(k)), r.tmin[k],
                  r.tmax[k], span))
       query->tracers[k].spans.push_back(span);
     return;
@@ -180,21 +180,19 @@ void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
     const unsigned entered = (ray_spans(source, r, first, int(n), spans) >> first) & valid;
     for (unsigned rest = entered; rest; rest &= rest - 1) {
       const unsigned i = unsigned(__builtin_ctz(rest)), k = unsigned(first) + i;
-      query->tracers[k].spans.push_back(RaySpan{spans.t0[k], spans.t1[k], spans.a[k], spans.t_c[k], spans.g_min[k], args->primID,
-                                                        query->rank[args->primID]});
+      query->tracers[k].spans.push_back(spans.span(int(k), args->primID, query->rank[args->primID]));
     }
     return;
   }
   RayLanes gathered;
   for (unsigned i = 0; i < n; ++i) {
     const unsigned k = valid & (1u << i) ? index[i] : index[lowest];  // idle lanes repeat a real ray
-    gathered.set(int(i), Vec3(r.ox[k], r.oy[k], r.oz[k]), Vec3(r.dx[k], r.dy[k], r.dz[k]), r.tmin[k], r.tmax[k]);
+    gathered.set(int(i), r.origin(int(k)), r.direction(int(k)), r.tmin[k], r.tmax[k]);
   }
   const unsigned entered = ray_spans(source, gathered, 0, int(n), spans) & valid;
   for (unsigned rest = entered; rest; rest &= rest - 1) {
     const unsigned i = unsigned(__builtin_ctz(rest));
-    query->tracers[index[i]].spans.push_back(RaySpan{spans.t0[i], spans.t1[i], spans.a[i], spans.t_c[i], spans.g_min[i], args->primID,
-                                                              query->rank[args->primID]});
+    query->tracers[index[i]].spans.push_back(spans.span(int(i), args->primID, query->rank[args->primID]));
   }
   // No hit is reported: traversal goes on and visits every crossed box.
 }
@@ -253,10 +251,6 @@ void BlobGeometry::first_crossings(const RayInterval* rays, int count, FieldRay*
   for (int i = 0; i < count; ++i) {
     ++stats.field_rays;
     hits[i] = -1.0;
-    if (!embree_can_trace(rays[i].origin, rays[i].direction, rays[i].tmin, rays[i].tmax)) {
-      ++stats.untraceable_rays;
-      continue;
-    }
     const auto [t, end] = ray_interval_in(bounds_, rays[i].origin, rays[i].direction, rays[i].tmin, rays[i].tmax);
     window[i] = {rays[i].origin, rays[i].direction, t, t};
     t_end[i] = end;

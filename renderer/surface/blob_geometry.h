@@ -75,6 +75,8 @@ class BlobGeometry {
   // never collects the sources behind it: the work per ray follows what is
   // in front of the first hit, not the depth of the scene.
   // With CrossingQuery::any (shadow rays) a ray stops at any crossing.
+  // The rays are ones Embree has traced (the field geometry's callbacks):
+  // within its range (embree_can_trace) by then.
   void first_crossings(const RayInterval* rays, int count, FieldRay* tracers, TraceStats& stats,
                        double* hits, CrossingQuery query = CrossingQuery::first) const;
 

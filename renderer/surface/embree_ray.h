@@ -46,6 +46,14 @@ inline void set_embree_ray(RTCRayHitN* rayhit, unsigned n, unsigned i, unsigned 
   RTCHitN_instID(hit, n, i, 0) = RTC_INVALID_GEOMETRY_ID;
 }
 
+// Lane i of an N-wide packet a callback is handed, as double vectors.
+inline Vec3 embree_ray_origin(RTCRayN* ray, unsigned n, unsigned i) {
+  return {RTCRayN_org_x(ray, n, i), RTCRayN_org_y(ray, n, i), RTCRayN_org_z(ray, n, i)};
+}
+inline Vec3 embree_ray_direction(RTCRayN* ray, unsigned n, unsigned i) {
+  return {RTCRayN_dir_x(ray, n, i), RTCRayN_dir_y(ray, n, i), RTCRayN_dir_z(ray, n, i)};
+}
+
 inline RTCRayHit make_embree_ray(const Vec3& o, const Vec3& d, float tnear, float tfar) {
   RTCRayHit rh{};
   set_embree_ray(reinterpret_cast<RTCRayHitN*>(&rh), 1, 0, 0, o, d, tnear, tfar);

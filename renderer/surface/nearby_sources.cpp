@@ -37,8 +37,7 @@ void NearbySources::collect_spans(const Vec3& o, const Vec3& d, double tmin, dou
     const SourceLanes& chunk = chunks_[c];
     for (unsigned entered = source_spans(chunk, o, d, tmin, tmax, lanes); entered; entered &= entered - 1) {
       const int i = __builtin_ctz(entered);
-      spans.push_back(RaySpan{lanes.t0[i], lanes.t1[i], lanes.a[i], lanes.t_c[i], lanes.g_min[i], chunk.index[i],
-                              chunk.rank[i]});
+      spans.push_back(lanes.span(i, chunk.index[i], chunk.rank[i]));
     }
   }
 }

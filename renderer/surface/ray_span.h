@@ -43,6 +43,8 @@ struct RayLanes {
     dx[lane] = d.x(), dy[lane] = d.y(), dz[lane] = d.z();
     tmin[lane] = t_min, tmax[lane] = t_max;
   }
+  Vec3 origin(int lane) const { return {ox[lane], oy[lane], oz[lane]}; }
+  Vec3 direction(int lane) const { return {dx[lane], dy[lane], dz[lane]}; }
 };
 
 // The spans of one source on lanes [first, first + count) of `rays`, in the
@@ -51,6 +53,11 @@ struct RayLanes {
 // source's support.
 struct SpanLanes {
   alignas(64) double t0[kMaxPacket], t1[kMaxPacket], a[kMaxPacket], t_c[kMaxPacket], g_min[kMaxPacket];
+
+  // Lane i as the span of source number `source`, of spatial rank `rank`.
+  RaySpan span(int i, std::uint32_t source, std::uint32_t rank) const {
+    return RaySpan{t0[i], t1[i], a[i], t_c[i], g_min[i], source, rank};
+  }
 };
 unsigned ray_spans(const BlobSource& s, const RayLanes& rays, int first, int count, SpanLanes& spans);
 

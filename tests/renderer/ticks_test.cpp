@@ -17,7 +17,9 @@ void expect_inside_and_increasing(const TickSet& set, double lo, double hi) {
     EXPECT_GE(set.ticks[i].value, lo - 1e-9 * std::fabs(lo)) << i;
     EXPECT_LE(set.ticks[i].value, hi + 1e-9 * std::fabs(hi)) << i;
     EXPECT_FALSE(set.ticks[i].label.empty());
-    if (i > 0) EXPECT_GT(set.ticks[i].value, set.ticks[i - 1].value);
+    if (i > 0) {
+      EXPECT_GT(set.ticks[i].value, set.ticks[i - 1].value);
+    }
   }
 }
 
