@@ -207,9 +207,13 @@ GlyphScene given_sources(const GlyphPipelineSpec& spec, double glyph_extent) {
 
 }  // namespace
 
-GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent) {
-  if (spec.placement == SourcePlacement::curve || spec.placement == SourcePlacement::list)
-    return given_sources(spec, glyph_extent);
+GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
+                             const std::function<void(const Box3& domain)>& with_domain) {
+  if (spec.placement == SourcePlacement::curve || spec.placement == SourcePlacement::list) {
+    GlyphScene given = given_sources(spec, glyph_extent);
+    if (with_domain) with_domain(given.domain);
+    return given;
+  }
   DataSpec data = spec.data;
   if (data.kind == DataKind::point_load && !data.point_load.singular_radius)
     data.point_load.singular_radius = default_singular_radius(data.point_load.bounds);
@@ -220,6 +224,7 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent)
   scene.flow = flow != nullptr;
   scene.color = resolve_color(spec, loaded);
   scene.domain = flow ? flow->bounds() : tensors->bounds();
+  if (with_domain) with_domain(scene.domain);
   scene.boundary = std::move(loaded.boundary);
   scene.warnings = std::move(loaded.warnings);
   scene.values = resolve_lengths(spec, scene.domain, loaded);

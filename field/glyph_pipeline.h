@@ -10,6 +10,7 @@
 // (GlyphValues), so they can be shown and pinned.
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -145,7 +146,10 @@ LoadedField make_field(const DataSpec& spec);
 // times its kernel's level radius): the automatic glyph size is a length in
 // the data's units, so it must know how radii turn into lengths.
 // Trajectories are traced in parallel and the result does not depend on the
-// thread count.
-GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent);
+// thread count. `with_domain`, when given, is called with the data's
+// bounds as soon as they are known, before any trajectory is traced (the
+// renderer checks the scene's lengths against them there).
+GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
+                             const std::function<void(const Box3& domain)>& with_domain = {});
 
 }  // namespace hsb

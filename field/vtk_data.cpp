@@ -44,6 +44,8 @@
 namespace hsb {
 namespace {
 
+double trial_base_seconds = 30.0;
+
 // VTK's readers trust the counts a file declares, and its filters the
 // cells they are given: a corrupt file can make them read past their
 // buffers (the data fuzzer found several). Each runs on the file in a
@@ -51,7 +53,7 @@ namespace {
 // A generous time: a few seconds more than a read should take, however
 // large the file.
 void update_safely(vtkAlgorithm* algorithm, const std::string& path, const char* what) {
-  const double seconds = 30.0 + double(std::filesystem::file_size(path)) * 1e-6;
+  const double seconds = trial_base_seconds + double(std::filesystem::file_size(path)) * 1e-6;
   const ChildResult trial = run_in_child([&] { algorithm->Update(); }, seconds);
   if (trial.outcome == ChildOutcome::crashed)
     throw DataError(path + ": the file is corrupt: VTK's " + what + " crashed on it" +
@@ -487,6 +489,8 @@ std::unique_ptr<ScalarField> color_field(vtkDataSet* data, const VtkFileSpec& sp
 }
 
 }  // namespace
+
+void set_trial_read_seconds(double seconds) { trial_base_seconds = seconds; }
 
 VtkData load_vtk_data(const VtkFileSpec& spec) {
   const VtkSession vtk;

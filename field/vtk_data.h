@@ -62,6 +62,12 @@ struct VtkData {
 // interpolation functions.
 VtkData load_vtk_data(const VtkFileSpec& spec);
 
+// Each VTK step first runs in a child process (a corrupt file crashes or
+// hangs VTK's readers); a child that takes longer than `seconds` plus a
+// second per megabyte of file calls the file corrupt. 30 s unless set: the
+// data fuzzer sets a few, so that a file that hangs VTK costs it little.
+void set_trial_read_seconds(double seconds);
+
 // What `hsb info` prints for a data file: kind, bounds, cell types and
 // counts, arrays, and the range of each eigenvalue of the chosen tensors.
 std::string describe_vtk_file(const VtkFileSpec& spec);

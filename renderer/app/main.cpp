@@ -27,6 +27,7 @@
 #include "renderer/app/render_job.h"
 #include "renderer/render/ray_scene.h"
 #include "renderer/surface/instruction_set.h"
+#include "renderer/scene/scene_keys.h"
 #include "renderer/scene/scene_spec.h"
 #include "renderer/scene/scene_error.h"
 
@@ -133,7 +134,7 @@ int main(int argc, char** argv) {
                ": ray-traced hyperstreamballs (anisotropic metaballs along stress\n"
                "trajectories) for symmetric tensor fields."};
   app.footer(
-      "Scene files are TOML; every key and its default is documented in scenes/README.md.\n"
+      "Scene files are TOML; every key and its default is documented in scenes/README.md (hsb keys lists them).\n"
       "Example: hsb render scenes/fig05_point_load_linear.toml -o out --set render.width=400");
   app.set_version_flag("--version", version_text,
                        "Print the version and the instruction set in use (Embree's and the renderer's), then exit");
@@ -194,6 +195,12 @@ int main(int argc, char** argv) {
       "Everything printed is TOML: the description as comments, then the scene with every automatic\n"
       "value written out (hsb info x.vtu > x.toml gives a scene to edit). A data file stands for the\n"
       "scene that names only it.");
+
+  CLI::App* keys = app.add_subcommand(
+      "keys", "List every scene key: its type, allowed values, default, unit and meaning (tab-separated).");
+  keys->footer(
+      "One line per key, in the order of scenes/README.md, which says more about each. \"D\" is the\n"
+      "data's diagonal: lengths in the data's units must lie within the range printed for them.");
 
   CLI::App* exporter = app.add_subcommand(
       "export", "Write each scene's trajectories and sources as VTK PolyData (.vtp) for ParaView.");
@@ -283,6 +290,17 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "hsb: cannot write to standard output: %s\n", why.c_str());
     return 1;
   };
+  if (*keys) {
+    std::printf("key\ttype\tvalues\tdefault\tunit\tmeaning\n");
+    for (const hsb::KeySchema& k : hsb::scene_keys()) {
+      const std::string fallback = k.default_kind == hsb::KeyDefault::value       ? k.fallback
+                                   : k.default_kind == hsb::KeyDefault::automatic ? "automatic: " + k.rule
+                                                                                  : k.rule;
+      std::printf("%s\t%s\t%s\t%s\t%s\t%s\n", k.path.c_str(), hsb::type_text(k).c_str(), hsb::values_text(k).c_str(),
+                  fallback.c_str(), k.unit.c_str(), k.doc.c_str());
+    }
+    return printed(0);
+  }
   if (*info) {
     return printed(for_each(info_inputs.size(), [&](std::size_t i) { return info_inputs[i]; }, "inputs", [&](std::size_t i) {
       const std::string& input = info_inputs[i];

@@ -4,10 +4,15 @@
 // changing others.
 
 #include <string>
+#include <vector>
 
 #include "renderer/app/prepared_scene.h"
 
 namespace hsb {
+
+// The automatic keys (scene_keys.h) the scene leaves out that apply to it,
+// in the schema's order.
+std::vector<std::string> automatic_keys(const PreparedScene& prepared);
 
 // TOML: the scene's own keys as it gives them, plus each automatic key with
 // the value prepare_scene() resolved, and a comment naming the automatic

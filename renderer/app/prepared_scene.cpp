@@ -105,45 +105,34 @@ std::vector<Vec3> framed_points(FrameTarget target, const PreparedScene& p, doub
   return points;
 }
 
-// Says which keys were left automatic, in the order of the reference.
-std::vector<std::string> automatic_keys(const SceneSpec& s) {
-  std::vector<std::string> keys;
-  const auto note = [&](bool automatic, const char* key) {
-    if (automatic) keys.emplace_back(key);
-  };
-  const GlyphPipelineSpec& p = s.pipeline;
-  note(p.data.kind == DataKind::point_load && !p.data.point_load.singular_radius, "data.singular_radius");
-  const bool from_data = p.data.kind != DataKind::none;
-  note(from_data && p.seeds.automatic(), "seeds");
-  note(from_data && !p.trajectory.step, "trajectories.step");
-  note(from_data && !p.trajectory.max_length, "trajectories.max_length");
-  note(from_data && !p.trajectory.min_magnitude, "trajectories.min_magnitude");
-  note(from_data && !p.spacing, "glyphs.spacing");
-  note(from_data && !p.size.scale, "glyphs.scale");
-  note(from_data && !p.size.floor, "glyphs.floor");
-  note(from_data && !p.size.ceiling, "glyphs.ceiling");
-  note(from_data && !p.color, "glyphs.color_by");
-  note(!s.color.range, "color.range");
-  note(!s.camera.position, "camera.position");
-  note(!s.camera.look_at, "camera.look_at");
-  note(!s.camera.up, "camera.up");
-  note(!s.camera.view && !(s.camera.position && s.camera.look_at), "camera.view");
-  note(s.camera.projection == Projection::orthographic && !s.camera.height, "camera.height");
-  note(!s.context.box, "render.box");
-  note(!s.context.box_radius, "render.box_radius");
-  note(!s.context.shell, "render.shell");
-  note(s.context.trajectories && !s.context.trajectory_radius, "render.trajectory_radius");
-  note(s.context.ground && !s.context.ground_height, "render.ground_height");
-  note(s.shading.ao_samples > 0 && !s.light.ao_distance, "light.ambient_occlusion.distance");
-  note(!s.render.shadow_offset, "render.shadow_offset");
-  note(!s.render.intersector, "render.intersector");
-  note(!s.render.min_step, "render.min_step");
-  note(!s.output.file, "output.file");
-  note(!s.output.colorbar_title, "output.colorbar_title");
-  note(!s.output.bit_depth, "output.bit_depth");
-  note(!s.render.width, "render.width");
-  note(!s.render.height, "render.height");
-  return keys;
+toml::array toml_vec3(const Vec3& v) { return toml::array{v.x(), v.y(), v.z()}; }
+
+// Records what the field side chose for the keys it resolves
+// (field/automatic_values.h), for `hsb info` to pin.
+void record_field_values(PreparedScene& p) {
+  const GlyphPipelineSpec& s = p.spec.pipeline;
+  const GlyphValues& v = p.glyphs.values;
+  if (v.singular_radius) p.resolve("data.singular_radius", *v.singular_radius);
+  // Sources the scene gives itself (a curve, a list) have no seeds,
+  // trajectories or sizes.
+  if (s.data.kind == DataKind::none) return;
+  if (s.seeds.automatic()) {
+    toml::array grids;
+    for (const SeedGridSpec& g : v.seeds.grids)
+      grids.push_back(toml::table{{"corner", toml_vec3(g.corner)}, {"edge_u", toml_vec3(g.edge_u)},
+                                  {"edge_v", toml_vec3(g.edge_v)}, {"n", g.n}, {"m", g.m}});
+    p.resolve("seeds.grid", std::move(grids));
+    // The automatic grid is in the frame it was made in.
+    p.resolve("seeds.frame", v.seeds.frame == SeedFrame::bounds ? "bounds" : "world");
+  }
+  p.resolve("trajectories.step", v.trajectory.step);
+  p.resolve("trajectories.max_length", v.trajectory.max_length);
+  p.resolve("trajectories.min_magnitude", v.trajectory.min_magnitude);
+  p.resolve("glyphs.spacing", v.spacing);
+  p.resolve("glyphs.scale", v.mapping.scale);
+  p.resolve("glyphs.floor", v.mapping.floor);
+  p.resolve("glyphs.ceiling", v.mapping.ceiling);
+  p.resolve("glyphs.color_by", color_scalar_name(p.glyphs.color));
 }
 
 void warn_about_the_picture(PreparedScene& p, double extent) {
@@ -243,17 +232,19 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   PreparedScene& p = *prepared;
   p.spec = std::move(spec);
   const SceneSpec& s = p.spec;
-  p.automatic = automatic_keys(s);
 
   // The field side resolves its own automatic values from the data and
-  // the trajectories (field/automatic_values.h).
+  // the trajectories (field/automatic_values.h). The scene's lengths are
+  // checked against the data's size as soon as it is known.
   const double extent = glyph_extent(s.surface);
-  p.glyphs = build_glyph_scene(s.pipeline, extent);
+  p.glyphs = build_glyph_scene(s.pipeline, extent, [&](const Box3& domain) { check_data_lengths(s, domain.diagonal()); });
   p.warnings = p.glyphs.warnings;
+  record_field_values(p);
   const Box3& domain = p.glyphs.domain;
   const double diagonal = domain.diagonal();
 
   p.scale = color_scale(s.color, p.glyphs.sources);
+  p.resolve("color.range", toml::array{p.scale.lo, p.scale.hi});
   std::vector<std::array<float, 3>> colors;
   colors.reserve(p.glyphs.sources.size());
   for (const GlyphSource& g : p.glyphs.sources) colors.push_back(color.to_scene_linear(p.scale.srgb(g.scalar)));
@@ -263,16 +254,16 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   // A box frames an analytic domain, a shell shows a mesh's boundary;
   // sources the scene gives itself have neither.
   const bool has_boundary = p.glyphs.boundary.has_value();
-  if (s.context.box.value_or(s.pipeline.data.kind == DataKind::point_load)) p.context.box = domain;
-  p.context.box_radius = s.context.box_radius.value_or(kBoxRadiusPerDiagonal * diagonal);
-  if (s.context.shell.value_or(has_boundary) && has_boundary) p.context.shell = &*p.glyphs.boundary;
+  if (p.resolve("render.box", s.context.box.value_or(s.pipeline.data.kind == DataKind::point_load))) p.context.box = domain;
+  p.context.box_radius = p.resolve("render.box_radius", s.context.box_radius.value_or(kBoxRadiusPerDiagonal * diagonal));
+  if (p.resolve("render.shell", s.context.shell.value_or(has_boundary) && has_boundary)) p.context.shell = &*p.glyphs.boundary;
 
   // Lengths that follow the glyphs: a median glyph's size.
   const double glyph = median_glyph_size(p.glyphs.sources, extent, diagonal);
   p.context.glyphs = s.context.glyphs;
   if (s.context.trajectories) {
     for (const Trajectory& t : p.glyphs.trajectories) p.context.trajectories.push_back(&t.points);
-    p.context.trajectory_radius = s.context.trajectory_radius.value_or(kTubePerGlyph * glyph);
+    p.context.trajectory_radius = p.resolve("render.trajectory_radius", s.context.trajectory_radius.value_or(kTubePerGlyph * glyph));
   }
 
   p.shading = s.shading;
@@ -282,10 +273,11 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   p.shading.shell_color = color.to_scene_linear(p.shading.shell_color);
   p.shading.trajectory_color = color.to_scene_linear(p.shading.trajectory_color);
   p.shading.ao_distance = s.light.ao_distance.value_or(kOcclusionPerGlyph * glyph);
+  if (s.shading.ao_samples > 0) p.resolve("light.ambient_occlusion.distance", p.shading.ao_distance);
 
   const std::array<int, 2> size = picture_size(s);
-  p.render.width = size[0];
-  p.render.height = size[1];
+  p.render.width = p.resolve("render.width", s.render.width.value_or(size[0]));
+  p.render.height = p.resolve("render.height", s.render.height.value_or(size[1]));
   std::ostringstream picture;
   picture << "the scene with its picture (" << p.render.width << " × " << p.render.height << " pixels)";
   p.memory_estimate = p.glyphs.memory_estimate + kBytesPerPixel * p.render.width * p.render.height;
@@ -296,17 +288,19 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   // figure scenes, and exact; blinn summed has no polynomial form.
   p.trace.intersector = s.render.intersector.value_or(
       exact_crossing_supported(s.surface.kernel, s.surface.blend) ? Intersector::exact : Intersector::sphere);
-  p.trace.min_step = s.render.min_step.value_or(kMinStepPerDiagonal * diagonal);
+  p.resolve("render.intersector", p.trace.intersector == Intersector::exact ? "exact" : "sphere");
+  p.trace.min_step = p.resolve("render.min_step", s.render.min_step.value_or(kMinStepPerDiagonal * diagonal));
   p.trace.max_steps = s.render.max_steps;
 
-  p.output.file = output_file_name(s);
+  p.output.file = p.resolve("output.file", output_file_name(s));
   const bool exr = is_scene_linear_format(p.output.file);
-  p.output.bit_depth = s.output.bit_depth.value_or(exr ? 32 : 8);
+  p.output.bit_depth = p.resolve("output.bit_depth", s.output.bit_depth.value_or(exr ? 32 : 8));
   p.output.dpi = s.output.dpi;
   if (exr) p.render.planes = s.output.layers;
   PictureReserve reserve;
   if (s.output.colorbar && !p.field.sources.empty() && !exr) {
     p.output.legend = legend_for(p, p.render.width, p.render.height);
+    p.resolve("output.colorbar_title", p.output.legend->title);
     (p.output.legend->style.placement == LegendPlacement::right ? reserve.right : reserve.bottom) =
         p.output.legend->reserved;
   }
@@ -315,15 +309,22 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   if (!camera.view) camera.view = automatic_view(domain);
   const std::vector<Vec3> framed = framed_points(s.camera.frame, p, extent);
   p.camera = frame_camera(camera, framed, p.render.width, p.render.height, reserve);
+  p.resolve("camera.position", toml_vec3(p.camera.position));
+  p.resolve("camera.look_at", toml_vec3(p.camera.look_at));
+  p.resolve("camera.up", toml_vec3(p.camera.up));
+  if (p.camera.projection == Projection::orthographic) p.resolve("camera.height", p.camera.height);
   Box3 drawn = bounding_box(framed);
   if (!drawn.lo.allFinite() || !drawn.hi.allFinite()) drawn = domain;  // nothing drawn
-  p.render.shadow_offset =
+  p.render.shadow_offset = p.resolve(
+      "render.shadow_offset",
       s.render.shadow_offset.value_or(kShadowOffsetPerPixel * Camera(p.camera, p.render.width, p.render.height)
-                                                                    .pixel_size_at(drawn.centre()));
+                                                                   .pixel_size_at(drawn.centre())));
   p.shading.ground = s.context.ground;
   double lowest = INFINITY;
   for (const Vec3& point : framed) lowest = std::min(lowest, point.z());
-  p.shading.ground_height = s.context.ground_height.value_or(std::isfinite(lowest) ? lowest : domain.lo.z());
+  const double ground = std::isfinite(lowest) ? lowest : domain.lo.z();
+  p.shading.ground_height = s.context.ground_height.value_or(ground);
+  if (s.context.ground) p.resolve("render.ground_height", p.shading.ground_height);
 
   warn_about_the_picture(p, extent);
   return prepared;

@@ -12,6 +12,7 @@
 #include "renderer/image/legend.h"
 #include "renderer/render/ray_scene.h"
 #include "renderer/scene/scene_spec.h"
+#include "renderer/scene/toml_text.h"
 #include "renderer/surface/blob_field.h"
 
 namespace hsb {
@@ -35,14 +36,22 @@ struct PreparedScene {
   RenderSettings render;
   TraceSettings trace;
   OutputSettings output;
-  // The keys the scene left automatic ("glyphs.scale", "camera.position",
-  // …), in the order of the scene reference.
-  std::vector<std::string> automatic;
+  // What prepare_scene() chose for each automatic key that applies, by
+  // key path (the keys the scene gives are here too, as given): `hsb info`
+  // pins those the scene left out.
+  toml::table resolved;
   // About the data and the picture: the image is still made.
   std::vector<std::string> warnings;
   // The peak resident memory the render will take, checked against the
   // machine's limits before the render allocates it.
   double memory_estimate = 0.0;
+
+  // Records `value` as what automatic `key` resolved to; returns it.
+  template <class V>
+  V resolve(std::string_view key, V value) {
+    assign_at_path(resolved, key, value);
+    return value;
+  }
 
   PreparedScene() = default;
   PreparedScene(const PreparedScene&) = delete;  // context points into glyphs

@@ -8,6 +8,7 @@
 #include "field/input_file.h"
 #include "renderer/image/colormap.h"
 #include "renderer/image/image_output.h"
+#include "renderer/scene/scene_keys.h"
 #include "renderer/scene/scene_spec.h"
 #include "renderer/scene/toml_text.h"
 #include "renderer/scene/toml_reader.h"
@@ -22,6 +23,9 @@ void apply_override(toml::table& root, const std::string& text) {
     throw SceneError("--set " + text + ": expected key.path=value");
   const std::string key = text.substr(0, eq), value = text.substr(eq + 1);
   const std::string where = "--set " + text;
+  if (!find_scene_key(key) && !is_scene_table(key))
+    throw SceneError(where + ": " + key + " is not a scene key" + nearest_key_hint(key) +
+                     " (hsb keys lists them all)");
 
   toml::table parsed;
   try {
@@ -32,19 +36,10 @@ void apply_override(toml::table& root, const std::string& text) {
     quoted << toml::value<std::string>(value);  // toml++ prints it as a TOML string
     parsed = toml::parse("v = " + quoted.str(), where);
   }
-  toml::table* table = &root;
-  std::size_t start = 0;
-  for (std::size_t dot; (dot = key.find('.', start)) != std::string::npos; start = dot + 1) {
-    const std::string part = key.substr(start, dot - start);
-    if (!table->contains(part)) table->insert(part, toml::table{});
-    table = (*table)[part].as_table();
-    if (!table) throw SceneError(where + ": " + key.substr(0, dot) + " is not a table");
-  }
-  const std::string leaf = key.substr(start);
-  if (leaf.empty()) throw SceneError(where + ": expected key.path=value");
-  // Moved, not copied: toml++ keeps a node's source region only on moves, and
-  // that region is what error messages point at.
-  parsed.get("v")->visit([&](auto&& node) { table->insert_or_assign(leaf, std::move(node)); });
+  const std::size_t dot = key.rfind('.');
+  if (dot != std::string::npos && !table_at_path(root, key.substr(0, dot)))
+    throw SceneError(where + ": " + key.substr(0, dot) + " is not a table");
+  parsed.get("v")->visit([&](auto&& node) { assign_at_path(root, key, std::move(node)); });
 }
 
 bool has_data_extension(const std::string& path) {
@@ -83,51 +78,45 @@ void read_data(TableReader& data, DataSpec& spec, const std::string& base_dir) {
       data.fail_at("file", "must be a .vtk, .vti, .vtu, .vts or .vtr file, got \"" + *file + "\"");
     // Relative to the scene file, so scenes can be run from anywhere.
     spec.file.path = existing_file(data, "file", *file, base_dir);
-    spec.file.array = data.string("array", "");
-    spec.file.kind = data.choice("field", FieldKind::automatic,
-                                 {{"auto", FieldKind::automatic}, {"tensor", FieldKind::tensor},
-                                  {"vector", FieldKind::vector}});
-    spec.file.association = data.choice("association", TensorAssociation::automatic,
-                                        {{"auto", TensorAssociation::automatic},
-                                         {"point", TensorAssociation::point},
-                                         {"cell", TensorAssociation::cell}});
-    spec.file.cell_tensors = data.choice("cell_tensors", CellTensors::constant,
-                                         {{"constant", CellTensors::constant},
-                                          {"averaged", CellTensors::averaged}});
+    spec.file.array = data.string("array");
+    spec.file.kind = data.choice<FieldKind>("field", {{"auto", FieldKind::automatic}, {"tensor", FieldKind::tensor},
+                                           {"vector", FieldKind::vector}});
+    spec.file.association = data.choice<TensorAssociation>("association", {{"auto", TensorAssociation::automatic},
+                                                        {"point", TensorAssociation::point},
+                                                        {"cell", TensorAssociation::cell}});
+    spec.file.cell_tensors =
+        data.choice<CellTensors>("cell_tensors", {{"constant", CellTensors::constant}, {"averaged", CellTensors::averaged}});
     refuse_keys(data, {"bounds", "load", "poisson_ratio", "singular_radius"}, "point_load");
   } else {
     if (file) data.fail_at("file", "applies only to data.kind = \"vtk\"");
     refuse_keys(data, {"array", "association", "cell_tensors", "field"}, "vtk");
     PointLoadSpec& load = spec.point_load;
-    if (const std::vector<double> b = data.numbers("bounds", 6); !b.empty()) {
-      load.bounds = Box3{Vec3(b[0], b[2], b[4]), Vec3(b[1], b[3], b[5])};
-      if (!(load.bounds.size().array() > 0.0).all())
-        data.fail_at("bounds", "must be [xmin, xmax, ymin, ymax, zmin, zmax] with min < max");
-    }
-    load.load = data.number("load", load.load);
-    load.poisson_ratio = data.number("poisson_ratio", load.poisson_ratio, {-1.0, 0.5, false});
-    load.singular_radius = data.optional_number("singular_radius", positive);
+    const std::vector<double> b = data.numbers("bounds");
+    load.bounds = Box3{Vec3(b[0], b[2], b[4]), Vec3(b[1], b[3], b[5])};
+    if (!(load.bounds.size().array() > 0.0).all())
+      data.fail_at("bounds", "must be [xmin, xmax, ymin, ymax, zmin, zmax] with min < max");
+    load.load = data.number("load");
+    load.poisson_ratio = data.number("poisson_ratio");
+    load.singular_radius = data.optional_number("singular_radius");
   }
-  if (const std::vector<double> g = data.numbers("sample_grid", 3); !g.empty()) {
-    for (int k = 0; k < 3; ++k) spec.sample_grid[k] = int(g[k]);
-    const bool off = spec.sample_grid == std::array<int, 3>{0, 0, 0};
-    const bool valid = std::all_of(g.begin(), g.end(), [](double v) { return v >= 2 && v <= 1000 && v == std::floor(v); });
-    if (!off && !valid)
-      data.fail_at("sample_grid", "must be three integers in [2, 1000] (or [0, 0, 0] for none)");
-  }
+  const std::vector<double> g = data.numbers("sample_grid");
+  for (int k = 0; k < 3; ++k) spec.sample_grid[std::size_t(k)] = int(g[std::size_t(k)]);
+  const bool off = spec.sample_grid == std::array<int, 3>{0, 0, 0};
+  const bool valid = std::all_of(g.begin(), g.end(), [](double v) { return v >= 2 && v == std::floor(v); });
+  if (!off && !valid) data.fail_at("sample_grid", "must be three integers in [2, 1000] (or [0, 0, 0] for none)");
   data.finish();
 }
 
 void read_seeds(TableReader& seeds, SeedSpec& spec) {
-  spec.frame = seeds.choice("frame", SeedFrame::world, {{"world", SeedFrame::world}, {"bounds", SeedFrame::bounds}});
+  spec.frame = seeds.choice<SeedFrame>("frame", {{"world", SeedFrame::world}, {"bounds", SeedFrame::bounds}});
   spec.points = seeds.points("points");
   for (TableReader& grid : seeds.tables("grid")) {
     SeedGridSpec g;
-    g.corner = grid.position("corner", g.corner);
-    g.edge_u = grid.vec3("edge_u", g.edge_u);
-    g.edge_v = grid.vec3("edge_v", g.edge_v);
-    g.n = grid.integer("n", g.n, 1, 10000);
-    g.m = grid.integer("m", g.m, 1, 10000);
+    g.corner = grid.vector("corner");
+    g.edge_u = grid.vector("edge_u");
+    g.edge_v = grid.vector("edge_v");
+    g.n = grid.integer("n");
+    g.m = grid.integer("m");
     grid.finish();
     spec.grids.push_back(g);
   }
@@ -135,24 +124,21 @@ void read_seeds(TableReader& seeds, SeedSpec& spec) {
 }
 
 void read_trajectories(TableReader& t, TrajectorySpec& spec) {
-  spec.family = t.choice("family", EigenFamily::major,
-                         {{"major", EigenFamily::major}, {"medium", EigenFamily::medium},
-                          {"minor", EigenFamily::minor}});
-  spec.step = t.optional_number("step", positive);
-  spec.max_length = t.optional_number("max_length", positive);
-  spec.degeneracy_tolerance = t.number("degeneracy", spec.degeneracy_tolerance, non_negative);
-  spec.min_magnitude = t.optional_number("min_magnitude", non_negative);
-  spec.max_steps = t.integer("max_steps", spec.max_steps, 1);
-  spec.direction = t.choice("direction", TraceDirection::both,
-                            {{"both", TraceDirection::both}, {"forward", TraceDirection::forward},
-                             {"backward", TraceDirection::backward}});
+  spec.family = t.choice<EigenFamily>("family", {{"major", EigenFamily::major}, {"medium", EigenFamily::medium},
+                                    {"minor", EigenFamily::minor}});
+  spec.step = t.optional_number("step");
+  spec.max_length = t.optional_number("max_length");
+  spec.degeneracy_tolerance = t.number("degeneracy");
+  spec.min_magnitude = t.optional_number("min_magnitude");
+  spec.max_steps = t.integer("max_steps");
+  spec.direction = t.choice<TraceDirection>("direction", {{"both", TraceDirection::both}, {"forward", TraceDirection::forward},
+                                          {"backward", TraceDirection::backward}});
   t.finish();
 }
 
 void read_curve(TableReader& c, CurveSpec& spec) {
-  spec.kind = c.choice("kind", spec.kind,
-                       {{"line", CurveKind::line}, {"circle", CurveKind::circle}, {"helix", CurveKind::helix},
-                        {"polyline", CurveKind::polyline}});
+  spec.kind = c.choice<CurveKind>("kind", {{"line", CurveKind::line}, {"circle", CurveKind::circle}, {"helix", CurveKind::helix},
+                                {"polyline", CurveKind::polyline}});
   const auto only_for = [&](std::initializer_list<const char*> keys, std::initializer_list<CurveKind> kinds,
                             const char* which) {
     if (std::find(kinds.begin(), kinds.end(), spec.kind) != kinds.end()) return;
@@ -163,56 +149,51 @@ void read_curve(TableReader& c, CurveSpec& spec) {
   only_for({"centre", "radius", "axis"}, {CurveKind::circle, CurveKind::helix}, "\"circle\" or \"helix\"");
   only_for({"pitch", "turns"}, {CurveKind::helix}, "\"helix\"");
   only_for({"points"}, {CurveKind::polyline}, "\"polyline\"");
-  spec.from = c.position("from", spec.from);
-  spec.to = c.position("to", spec.to);
+  spec.from = c.vector("from");
+  spec.to = c.vector("to");
   if (spec.kind == CurveKind::line && spec.from == spec.to) c.fail_at("to", "must differ from glyphs.curve.from");
-  spec.centre = c.position("centre", spec.centre);
-  spec.radius = c.number("radius", spec.radius, positive);
-  spec.axis = c.vec3("axis", spec.axis);
-  if (spec.axis.norm() == 0.0) c.fail_at("axis", "must not be zero");
-  spec.pitch = c.number("pitch", spec.pitch, non_negative);
-  // A helix is drawn as 256 segments a turn; more than 10,000 turns are
-  // more than glyphs.curve.count (at most 100,000) could show anyway.
-  spec.turns = c.number("turns", spec.turns, {0.0, 10000.0, true});
+  spec.centre = c.vector("centre");
+  spec.radius = c.number("radius");
+  spec.axis = c.vector("axis");
+  spec.pitch = c.number("pitch");
+  spec.turns = c.number("turns");
   spec.points = c.points("points");
   if (spec.kind == CurveKind::polyline && spec.points.size() < 2)
     c.fail_at(c.has("points") ? "points" : "kind", "needs glyphs.curve.points: at least two [x, y, z]");
-  spec.count = c.integer("count", spec.count, 1, 100000);
-  spec.semi_axes = c.vec3("semi_axes", spec.semi_axes);
-  if (!(spec.semi_axes.minCoeff() > 0.0)) c.fail_at("semi_axes", "must be three sizes > 0");
+  spec.count = c.integer("count");
+  const std::vector<double> semi_axes = c.numbers("semi_axes");
+  spec.semi_axes = Vec3(semi_axes[0], semi_axes[1], semi_axes[2]);
   c.finish();
 }
 
 void read_glyphs(TableReader& g, GlyphPipelineSpec& spec, const std::string& base_dir) {
-  spec.placement = g.choice("placement", SourcePlacement::along_trajectories,
-                            {{"trajectories", SourcePlacement::along_trajectories},
-                             {"seeds", SourcePlacement::at_seeds},
-                             {"curve", SourcePlacement::curve},
-                             {"list", SourcePlacement::list}});
-  if (auto curve = g.table("curve")) {
-    if (spec.placement != SourcePlacement::curve) curve->fail_at("kind", "[glyphs.curve] needs glyphs.placement = \"curve\"");
-    read_curve(*curve, spec.curve);
-  }
+  spec.placement = g.choice<SourcePlacement>("placement", {{"trajectories", SourcePlacement::along_trajectories},
+                                          {"seeds", SourcePlacement::at_seeds},
+                                          {"curve", SourcePlacement::curve},
+                                          {"list", SourcePlacement::list}});
+  TableReader curve = g.table("curve");
+  if (g.has("curve") && spec.placement != SourcePlacement::curve)
+    curve.fail_at("kind", "[glyphs.curve] needs glyphs.placement = \"curve\"");
+  read_curve(curve, spec.curve);
   if (const std::optional<std::string> file = g.optional_string("file")) {
     if (spec.placement != SourcePlacement::list) g.fail_at("file", "applies only to glyphs.placement = \"list\"");
     spec.list_file = existing_file(g, "file", *file, base_dir);
   } else if (spec.placement == SourcePlacement::list) {
     g.fail_at("placement", "= \"list\" needs glyphs.file, a CSV file of sources");
   }
-  spec.stretch = g.number("stretch", spec.stretch, {1.0, 100.0, false});
-  spec.spacing = g.optional_number("spacing", positive);
+  spec.stretch = g.number("stretch");
+  spec.spacing = g.optional_number("spacing");
   GlyphSizeSpec& size = spec.size;
-  size.mapping = g.choice("mapping", size.mapping,
-                          {{"linear", RadiusMapping::linear}, {"sqrt", RadiusMapping::sqrt},
-                           {"normalized", RadiusMapping::normalized},
-                           {"constant", RadiusMapping::constant}});
-  size.scale = g.optional_number("scale", positive);
-  size.floor = g.optional_number("floor", positive);
-  size.ceiling = g.optional_number("ceiling", positive_or_infinite);
+  size.mapping = g.choice<RadiusMapping>("mapping", {{"linear", RadiusMapping::linear}, {"sqrt", RadiusMapping::sqrt},
+                                      {"normalized", RadiusMapping::normalized},
+                                      {"constant", RadiusMapping::constant}});
+  size.scale = g.optional_number("scale");
+  size.floor = g.optional_number("floor");
+  size.ceiling = g.optional_number("ceiling");
   // "array:NAME": a scalar array of the data file.
   const std::string array_prefix = "array:";
-  if (g.holds_string("color_by") && g.string("color_by", "").rfind(array_prefix, 0) == 0) {
-    const std::string name = g.string("color_by", "").substr(array_prefix.size());
+  if (g.holds_string("color_by") && g.string("color_by").rfind(array_prefix, 0) == 0) {
+    const std::string name = g.string("color_by").substr(array_prefix.size());
     if (name.empty()) g.fail_at("color_by", "= \"array:NAME\" needs the array's name after the colon");
     spec.color = ColorScalar::array;
     spec.data.file.color_array = name;
@@ -221,7 +202,7 @@ void read_glyphs(TableReader& g, GlyphPipelineSpec& spec, const std::string& bas
     for (ColorScalar c : {ColorScalar::lambda1, ColorScalar::lambda2, ColorScalar::lambda3, ColorScalar::mean,
                           ColorScalar::von_mises, ColorScalar::speed, ColorScalar::arc_length})
       names.emplace_back(color_scalar_name(c), c);
-    spec.color = g.choice("color_by", ColorScalar::lambda3, names);
+    spec.color = g.choice("color_by", names);
   }
   g.finish();
   if (size.floor && size.ceiling && *size.ceiling < *size.floor) g.fail_at("ceiling", "must be >= glyphs.floor");
@@ -230,21 +211,21 @@ void read_glyphs(TableReader& g, GlyphPipelineSpec& spec, const std::string& bas
 void read_surface(TableReader& s, SurfaceSpec& spec) {
   std::vector<std::pair<std::string, KernelKind>> kernels;
   for (const KernelTraits& k : all_kernel_traits()) kernels.emplace_back(k.name, k.kind);
-  spec.kernel = s.choice("kernel", KernelKind::wyvill, kernels);
-  spec.blend = s.choice("blend", Blend::sum, {{"sum", Blend::sum}, {"max", Blend::max}});
-  spec.influence_radius = s.number("influence_radius", spec.influence_radius, positive);
-  spec.isovalue = s.number("isovalue", spec.isovalue, {0.0, 1.0, true});
+  spec.kernel = s.choice("kernel", kernels);
+  spec.blend = s.choice<Blend>("blend", {{"sum", Blend::sum}, {"max", Blend::max}});
+  spec.influence_radius = s.number("influence_radius");
+  spec.isovalue = s.number("isovalue");
   s.finish();
 }
 
 void read_color(TableReader& c, ColorSpec& spec) {
   std::vector<std::pair<std::string, std::string>> maps;
   for (const std::string& name : colormap_names()) maps.emplace_back(name, name);
-  spec.map = c.choice<std::string>("map", "viridis", maps);
-  spec.log = c.choice("scale", false, {{"linear", false}, {"log", true}});
+  spec.map = c.choice<std::string>("map", maps);
+  spec.log = c.choice<bool>("scale", {{"linear", false}, {"log", true}});
   spec.symmetric = c.optional_boolean("symmetric");
   if (spec.log && spec.symmetric.value_or(false)) c.fail_at("symmetric", "cannot be true with color.scale = \"log\"");
-  if (const std::vector<double> r = c.numbers("range", 2); !r.empty()) {
+  if (const std::vector<double> r = c.numbers("range"); !r.empty()) {
     if (!(r[1] > r[0])) c.fail_at("range", "must be [low, high] with low < high");
     if (spec.log && !(r[0] > 0.0)) c.fail_at("range", "must be above zero with color.scale = \"log\"");
     spec.range = std::array<double, 2>{r[0], r[1]};
@@ -253,53 +234,32 @@ void read_color(TableReader& c, ColorSpec& spec) {
 }
 
 void read_camera(TableReader& c, CameraRequest& spec) {
-  const auto optional_vec3 = [&](const char* key) -> std::optional<Vec3> {
-    if (!c.has(key)) {
-      c.vec3(key, Vec3::Zero());  // a known key even when absent
-      return std::nullopt;
+  spec.position = c.optional_vector("position");
+  spec.look_at = c.optional_vector("look_at");
+  spec.up = c.optional_vector("up");
+  // A named view, or the direction from the scene towards the camera.
+  if (c.holds_string("view")) {
+    const std::string name = c.string("view");
+    const std::optional<Vec3> v = named_view(name);
+    if (!v) {
+      std::string names;
+      for (const std::string& n : scene_key("camera.view").choices) names += (names.empty() ? "\"" : ", \"") + n + "\"";
+      c.fail_at("view", "must be one of " + names + " or a direction [x, y, z], got string \"" + name + "\"");
     }
-    return c.vec3(key, Vec3::Zero());
-  };
-  const auto optional_position = [&](const char* key) -> std::optional<Vec3> {
-    if (!c.has(key)) {
-      c.position(key, Vec3::Zero());  // a known key even when absent
-      return std::nullopt;
-    }
-    return c.position(key, Vec3::Zero());
-  };
-  spec.position = optional_position("position");
-  spec.look_at = optional_position("look_at");
-  spec.up = optional_vec3("up");
-  if (c.has("view")) {
-    // A named view, or the direction from the scene towards the camera.
-    std::string names;
-    for (const char* const* n = view_names(); *n; ++n) names += std::string(names.empty() ? "\"" : ", \"") + *n + "\"";
-    if (c.holds_string("view")) {
-      const std::string name = c.string("view", "");
-      const std::optional<Vec3> v = named_view(name);
-      if (!v) c.fail_at("view", "must be one of " + names + " or a direction [x, y, z], got string \"" + name + "\"");
-      spec.view = *v;
-    } else {
-      const Vec3 v = c.vec3("view", Vec3::Zero());
-      if (v.norm() == 0.0) c.fail_at("view", "must not be zero");
-      spec.view = v.normalized();
-    }
-  } else {
-    c.vec3("view", Vec3::Zero());  // a known key even when absent
+    spec.view = *v;
+  } else if (const std::optional<Vec3> v = c.optional_vector("view")) {
+    if (v->norm() == 0.0) c.fail_at("view", "must not be zero");
+    spec.view = v->normalized();
   }
-  spec.projection = c.choice("projection", Projection::perspective,
-                             {{"perspective", Projection::perspective}, {"orthographic", Projection::orthographic}});
-  // Down to a ten-thousandth of a degree: narrower, the automatic camera
-  // would stand beyond the ray tracer's range.
-  spec.fov_degrees = c.number("fov", spec.fov_degrees, {1e-4, 179.0, false});
-  spec.height = c.optional_number("height", positive);
-  spec.frame = c.choice("frame", FrameTarget::drawn,
-                        {{"drawn", FrameTarget::drawn}, {"glyphs", FrameTarget::glyphs}, {"data", FrameTarget::data}});
-  spec.margin = c.number("margin", spec.margin, {0.0, 0.45, false});
+  spec.projection =
+      c.choice<Projection>("projection", {{"perspective", Projection::perspective}, {"orthographic", Projection::orthographic}});
+  spec.fov_degrees = c.number("fov");
+  spec.height = c.optional_number("height");
+  spec.frame = c.choice<FrameTarget>("frame", {{"drawn", FrameTarget::drawn}, {"glyphs", FrameTarget::glyphs}, {"data", FrameTarget::data}});
+  spec.margin = c.number("margin");
   c.finish();
   if (spec.position && spec.look_at && (*spec.position - *spec.look_at).norm() == 0.0)
     c.fail_at("position", "must differ from camera.look_at");
-  if (spec.up && spec.up->norm() == 0.0) c.fail_at("up", "must not be zero");
   const std::optional<Vec3> view =
       spec.position && spec.look_at ? std::optional<Vec3>(*spec.position - *spec.look_at) : spec.view;
   if (spec.up && view && view->cross(*spec.up).norm() < 1e-9 * view->norm() * spec.up->norm())
@@ -307,87 +267,80 @@ void read_camera(TableReader& c, CameraRequest& spec) {
 }
 
 void read_light(TableReader& l, ShadingSpec& spec, LightLengths& lengths) {
-  // Light levels are fractions of white; a hundred times it already
-  // washes every glyph out to one flat colour.
-  const NumberRange level{0.0, 100.0, false};
-  spec.light_from = l.vec3("from", spec.light_from);
-  if (spec.light_from.norm() == 0.0) l.fail_at("from", "must not be zero");
-  spec.light_color = l.color("color", spec.light_color);
-  spec.light_intensity = l.number("intensity", spec.light_intensity, level);
-  spec.light_size = l.number("size", spec.light_size, {0.0, 90.0, false});
-  spec.light_samples = l.integer("samples", spec.light_samples, 1, 64);
-  spec.shadows = l.boolean("shadows", spec.shadows);
-  spec.fill_from = l.vec3("fill_from", spec.fill_from);
-  if (spec.fill_from.norm() == 0.0) l.fail_at("fill_from", "must not be zero");
-  spec.fill_intensity = l.number("fill", spec.fill_intensity, level);
-  spec.ambient = l.number("ambient", spec.ambient, level);
-  spec.specular = l.number("specular", spec.specular, level);
-  spec.shininess = l.number("shininess", spec.shininess, positive);
-  if (auto ao = l.table("ambient_occlusion")) {
-    spec.ao_samples = ao->integer("samples", spec.ao_samples, 0, 256);
-    lengths.ao_distance = ao->optional_number("distance", positive);
-    ao->finish();
-  }
+  spec.light_from = l.vector("from");
+  spec.light_color = l.color("color");
+  spec.light_intensity = l.number("intensity");
+  spec.light_size = l.number("size");
+  spec.light_samples = l.integer("samples");
+  spec.shadows = l.boolean("shadows");
+  spec.fill_from = l.vector("fill_from");
+  spec.fill_intensity = l.number("fill");
+  spec.ambient = l.number("ambient");
+  spec.specular = l.number("specular");
+  spec.shininess = l.number("shininess");
+  TableReader ao = l.table("ambient_occlusion");
+  spec.ao_samples = ao.integer("samples");
+  lengths.ao_distance = ao.optional_number("distance");
+  ao.finish();
   l.finish();
 }
 
 // A colour, or "transparent".
 void read_background(TableReader& r, ShadingSpec& spec) {
-  if (r.holds_string("background") && r.string("background", "") == "transparent") {
+  if (r.holds_string("background") && r.string("background") == "transparent") {
     spec.background_kind = BackgroundKind::transparent;
   } else {
-    spec.background = r.color("background", spec.background);
+    spec.background = r.color("background");
   }
   if (r.has("background_bottom")) {
     if (spec.background_kind == BackgroundKind::transparent)
       r.fail_at("background_bottom", "needs a background colour to fade from, not \"transparent\"");
     spec.background_kind = BackgroundKind::gradient;
+    spec.background_bottom = r.color("background_bottom");
+  } else {
+    r.allow("background_bottom");
+    spec.background_bottom = spec.background;
   }
-  spec.background_bottom = r.color("background_bottom", spec.background);
 }
 
 void read_render(TableReader& r, SceneSpec& spec) {
   RenderSpec& render = spec.render;
-  if (r.has("width")) render.width = r.integer("width", 0, 1, 16384);
-  if (r.has("height")) render.height = r.integer("height", 0, 1, 16384);
-  r.integer("width", 0), r.integer("height", 0);  // known keys even when absent
-  render.samples = r.integer("samples", render.samples, 1, 16);
-  render.shadow_offset = r.optional_number("shadow_offset", positive);
+  render.width = r.optional_integer("width");
+  render.height = r.optional_integer("height");
+  render.samples = r.integer("samples");
+  render.shadow_offset = r.optional_number("shadow_offset");
   read_background(r, spec.shading);
   ContextSpec& context = spec.context;
-  context.glyphs = r.boolean("glyphs", context.glyphs);
-  context.trajectories = r.boolean("trajectories", context.trajectories);
-  context.trajectory_radius = r.optional_number("trajectory_radius", positive);
-  spec.shading.trajectory_color = r.color("trajectory_color", spec.shading.trajectory_color);
+  context.glyphs = r.boolean("glyphs");
+  context.trajectories = r.boolean("trajectories");
+  context.trajectory_radius = r.optional_number("trajectory_radius");
+  spec.shading.trajectory_color = r.color("trajectory_color");
   if (!context.glyphs && !context.trajectories)
     r.fail_at("glyphs", "= false needs render.trajectories = true: otherwise nothing is drawn");
-  context.ground = r.boolean("ground", context.ground);
-  context.ground_height = r.optional_number("ground_height", any_number);
-  spec.shading.ground_shadow = r.number("ground_shadow", spec.shading.ground_shadow, {0.0, 1.0, false});
-  spec.context.box = r.optional_boolean("box");
-  spec.shading.box_color = r.color("box_color", spec.shading.box_color);
-  spec.context.box_radius = r.optional_number("box_radius", positive);
-  spec.context.shell = r.optional_boolean("shell");
-  spec.shading.shell_color = r.color("shell_color", spec.shading.shell_color);
-  spec.shading.shell_opacity = r.number("shell_opacity", spec.shading.shell_opacity, {0.0, 1.0, false});
-  spec.shading.shell_edge_opacity =
-      r.number("shell_edge_opacity", spec.shading.shell_edge_opacity, {0.0, 1.0, false});
-  const Intersector intersector = r.choice("intersector", Intersector::exact,
-                                           {{"sphere", Intersector::sphere}, {"exact", Intersector::exact}});
-  if (r.has("intersector")) render.intersector = intersector;
+  context.ground = r.boolean("ground");
+  context.ground_height = r.optional_number("ground_height");
+  spec.shading.ground_shadow = r.number("ground_shadow");
+  context.box = r.optional_boolean("box");
+  spec.shading.box_color = r.color("box_color");
+  context.box_radius = r.optional_number("box_radius");
+  context.shell = r.optional_boolean("shell");
+  spec.shading.shell_color = r.color("shell_color");
+  spec.shading.shell_opacity = r.number("shell_opacity");
+  spec.shading.shell_edge_opacity = r.number("shell_edge_opacity");
+  if (r.has("intersector")) render.intersector = r.choice<Intersector>("intersector", {{"sphere", Intersector::sphere}, {"exact", Intersector::exact}});
+  else r.allow("intersector");
   if (render.intersector == Intersector::exact && !exact_crossing_supported(spec.surface.kernel, spec.surface.blend))
     r.fail_at("intersector", "= \"exact\" needs surface.kernel \"wyvill\" or \"quartic\" (or surface.blend = \"max\"): "
                              "blinn's exponential is not a polynomial along a ray");
-  render.min_step = r.optional_number("min_step", positive);
-  render.max_steps = r.integer("max_steps", render.max_steps, 1);
+  render.min_step = r.optional_number("min_step");
+  render.max_steps = r.integer("max_steps");
   r.finish();
 }
 
 void read_figure(TableReader& f, FigureSpec& spec) {
-  if (f.has("columns")) spec.columns = f.integer("columns", 1, 1, 16);
-  f.integer("columns", 1);  // a known key even when absent
-  spec.labels = f.boolean("labels", spec.labels);
-  spec.caption = f.string("caption", spec.caption);
+  spec.columns = f.optional_integer("columns");
+  spec.labels = f.boolean("labels");
+  spec.caption = f.string("caption");
   f.finish();
 }
 
@@ -409,6 +362,9 @@ void read_panels(TableReader& top, const toml::table& root, std::vector<PanelSpe
         if (!value.is_string()) top.fail_at("panel", "label must be a string");
         panel.label = value.as_string()->get();
       } else {
+        if (!find_scene_key(path) && !is_scene_table(path))
+          throw SceneError(source_location(value) + ": [[panel]] key " + path + " is not a scene key" +
+                           nearest_key_hint(path));
         panel.overrides.push_back(path + "=" + toml_text(value));
       }
     });
@@ -421,39 +377,26 @@ void read_output(TableReader& o, OutputSpec& spec, const std::string& base_dir) 
   if (spec.file && !is_supported_image_path(*spec.file))
     o.fail_at("file", "must end in .png, .tif, .tiff, .exr, .pdf or .svg, got \"" + *spec.file + "\"");
   const bool exr = spec.file && is_scene_linear_format(*spec.file);
-  if (o.has("bit_depth")) {
-    spec.bit_depth = o.integer("bit_depth", 8, 8, 32);
-    if (exr ? *spec.bit_depth != 16 && *spec.bit_depth != 32 : *spec.bit_depth != 8 && *spec.bit_depth != 16)
-      o.fail_at("bit_depth", exr ? "must be 16 (half) or 32 (float) for an EXR" : "must be 8 or 16");
-  } else {
-    o.integer("bit_depth", 8);  // a known key even when absent
+  spec.bit_depth = o.optional_integer("bit_depth");
+  if (spec.bit_depth && (exr ? *spec.bit_depth != 16 && *spec.bit_depth != 32 : *spec.bit_depth != 8 && *spec.bit_depth != 16))
+    o.fail_at("bit_depth", exr ? "must be 16 (half) or 32 (float) for an EXR" : "must be 8 or 16");
+  spec.layers.clear();
+  for (const std::string& name : o.strings("layers")) {
+    for (Plane p : {Plane::depth, Plane::normal, Plane::scalar, Plane::id})
+      if (name == plane_info(p).name) spec.layers.push_back(p);
   }
-  if (o.has("layers")) {
-    spec.layers.clear();
-    std::vector<std::pair<std::string, Plane>> names;
-    for (Plane p : {Plane::depth, Plane::normal, Plane::scalar, Plane::id}) names.emplace_back(plane_info(p).name, p);
-    for (const std::string& name : o.strings("layers")) {
-      const auto it = std::find_if(names.begin(), names.end(), [&](const auto& n) { return n.first == name; });
-      if (it == names.end()) o.fail_at("layers", "must name layers among \"depth\", \"normal\", \"scalar\", \"id\", got \"" + name + "\"");
-      spec.layers.push_back(it->second);
-    }
-  } else {
-    o.strings("layers");  // a known key even when absent
-  }
-  spec.dpi = o.number("dpi", spec.dpi, {1.0, 10000.0, false});
-  if (const std::vector<double> size = o.numbers("print_size", 2); !size.empty()) {
-    if (!(size[0] > 0.0 && size[1] > 0.0)) o.fail_at("print_size", "must be [width, height] in millimetres, both > 0");
+  spec.dpi = o.number("dpi");
+  if (const std::vector<double> size = o.numbers("print_size"); !size.empty())
     spec.print_size = std::array<double, 2>{size[0], size[1]};
-  }
   if (const std::optional<std::string> config = o.optional_string("ocio_config"))
     spec.ocio_config = existing_file(o, "ocio_config", *config, base_dir);
   spec.display = o.optional_string("display");
   spec.view = o.optional_string("view");
-  spec.colorbar = o.boolean("colorbar", spec.colorbar);
-  spec.colorbar_position = o.choice("colorbar_position", spec.colorbar_position,
-                                    {{"right", LegendPlacement::right}, {"bottom", LegendPlacement::bottom}});
-  spec.colorbar_length = o.number("colorbar_length", spec.colorbar_length, {0.1, 1.0, false});
-  spec.font_size = o.number("font_size", spec.font_size, {1.0, 72.0, false});
+  spec.colorbar = o.boolean("colorbar");
+  spec.colorbar_position =
+      o.choice<LegendPlacement>("colorbar_position", {{"right", LegendPlacement::right}, {"bottom", LegendPlacement::bottom}});
+  spec.colorbar_length = o.number("colorbar_length");
+  spec.font_size = o.number("font_size");
   spec.colorbar_title = o.optional_string("colorbar_title");
   o.finish();
 }
@@ -485,27 +428,34 @@ SceneSpec load_scene_text(const std::string& text, const std::string& path, cons
   spec.overrides = overrides;
   const toml::table root = scene_table(spec);
   TableReader top(root, "", path);
-  if (auto data = top.table("data")) read_data(*data, spec.pipeline.data, base_dir);
-  if (auto seeds = top.table("seeds")) read_seeds(*seeds, spec.pipeline.seeds);
-  if (auto t = top.table("trajectories")) read_trajectories(*t, spec.pipeline.trajectory);
-  if (auto g = top.table("glyphs")) read_glyphs(*g, spec.pipeline, base_dir);
+  // Every table is read, present or not, so every key takes the schema's default.
+  TableReader data = top.table("data"), seeds = top.table("seeds"), trajectories = top.table("trajectories"),
+              glyphs = top.table("glyphs");
+  read_glyphs(glyphs, spec.pipeline, base_dir);
   if (spec.pipeline.placement == SourcePlacement::curve || spec.pipeline.placement == SourcePlacement::list) {
     // The sources come from the scene: no data set to read.
     if (top.has("data")) top.fail_at("data", "is not read with glyphs.placement = \"curve\" or \"list\"");
     if (top.has("seeds")) top.fail_at("seeds", "has no use with glyphs.placement = \"curve\" or \"list\"");
     spec.pipeline.data.kind = DataKind::none;
+  } else {
+    read_data(data, spec.pipeline.data, base_dir);
+    read_seeds(seeds, spec.pipeline.seeds);
   }
+  read_trajectories(trajectories, spec.pipeline.trajectory);
   if (spec.pipeline.data.kind == DataKind::point_load && spec.pipeline.color == ColorScalar::array)
     throw SceneError(path + ": glyphs.color_by = \"array:" + spec.pipeline.data.file.color_array +
                      "\" needs data.file: the point load has no arrays");
-  if (auto s = top.table("surface")) read_surface(*s, spec.surface);
-  if (auto c = top.table("color")) read_color(*c, spec.color);
-  if (auto c = top.table("camera")) read_camera(*c, spec.camera);
-  if (auto l = top.table("light")) read_light(*l, spec.shading, spec.light);
-  if (auto r = top.table("render")) read_render(*r, spec);
-  if (auto o = top.table("output")) read_output(*o, spec.output, base_dir);
+  TableReader surface = top.table("surface"), color = top.table("color"), camera = top.table("camera"),
+              light = top.table("light"), render = top.table("render"), output = top.table("output"),
+              figure = top.table("figure");
+  read_surface(surface, spec.surface);
+  read_color(color, spec.color);
+  read_camera(camera, spec.camera);
+  read_light(light, spec.shading, spec.light);
+  read_render(render, spec);
+  read_output(output, spec.output, base_dir);
   top.allow("sweep");  // read by the batch (renderer/app/batch.h), not here
-  if (auto f = top.table("figure")) read_figure(*f, spec.figure);
+  read_figure(figure, spec.figure);
   read_panels(top, root, spec.panels);
   top.finish();
   return spec;
@@ -520,6 +470,23 @@ SceneSpec load_scene(const std::string& path, const std::vector<std::string>& ov
   return load_scene_text(text.str(), path, std::filesystem::path(path).parent_path().string(), overrides);
 }
 
+void check_data_lengths(const SceneSpec& spec, double diagonal) {
+  const toml::table root = scene_table(spec);
+  for (const KeySchema& key : scene_keys()) {
+    if (!key.data_length()) continue;
+    const toml::node* node = root.at_path(key.path).node();
+    const std::optional<double> value = node ? node->value<double>() : std::nullopt;
+    if (!value || std::isinf(*value)) continue;
+    const double lo = kSmallestLengthPerDiagonal * diagonal, hi = kLargestLengthPerDiagonal * diagonal;
+    if (*value >= lo && *value <= hi) continue;
+    std::ostringstream what;
+    what << source_location(*node) << ": " << key.path << " must be a length between " << lo << " and " << hi
+         << " (" << kSmallestLengthPerDiagonal << " to " << kLargestLengthPerDiagonal
+         << " times the data's diagonal D = " << diagonal << "), got " << *value;
+    throw SceneError(what.str());
+  }
+}
+
 bool is_data_file(const std::string& path) { return has_data_extension(path); }
 
 SceneSpec load_scene_or_data_file(const std::string& path, const std::vector<std::string>& overrides) {
@@ -527,6 +494,9 @@ SceneSpec load_scene_or_data_file(const std::string& path, const std::vector<std
 }
 
 SceneSpec scene_for_data_file(const std::string& path, const std::vector<std::string>& overrides) {
+  // The file is the user's own argument: said as such, not as a line of
+  // the scene made for it.
+  if (const std::string why = unreadable_input(path); !why.empty()) throw SceneError(path + ": " + why);
   // The path as given, relative to where hsb runs: printed back by
   // `hsb info`, the scene works from there.
   std::ostringstream text;

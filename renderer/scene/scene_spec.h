@@ -1,10 +1,10 @@
 #pragma once
 // Everything a scene file says, validated. A key the file leaves out that
-// has a fixed default gets it here; a key whose value depends on the data
-// (a length, a colour range, the camera) is std::nullopt, "automatic", and
-// is resolved with every other automatic value in prepare_scene(), once
-// the data is read. scenes/README.md documents each key; keep the two in
-// step.
+// has a fixed default gets the schema's (scene_keys.h; the initializers
+// below are the defaults of the C++ structs alone); a key whose value
+// depends on the data (a length, a colour range, the camera) is
+// std::nullopt, "automatic", and is resolved with every other automatic
+// value in prepare_scene(), once the data is read.
 
 #include <array>
 #include <optional>
@@ -129,6 +129,12 @@ SceneSpec load_scene_text(const std::string& text, const std::string& path, cons
 // The scene's TOML as read, with its overrides applied (for printing it
 // back with automatic values filled in).
 toml::table scene_table(const SceneSpec& spec);
+
+// Refuses a length in the data's units (a key whose schema unit is "data
+// length") that the scene gives outside kSmallestLengthPerDiagonal to
+// kLargestLengthPerDiagonal times the data's diagonal: a SceneError at the
+// key's line, the allowed range in the data's own units.
+void check_data_lengths(const SceneSpec& spec, double diagonal);
 
 // True for a data file's extension (.vtk, .vti, .vtu, .vts, .vtr): such a
 // path names a data set, and `hsb` makes it a scene naming only that file.

@@ -1,10 +1,12 @@
 #pragma once
-// Typed, validated access to one TOML table of a scene file. Every read
-// names the key, so when a value has the wrong type or range the error
+// Typed, validated access to one TOML table of a scene file. Each key's
+// type, range and default come from the schema (scene_keys.h): a read
+// names only the key. When a value has the wrong type or range the error
 // names the file, line, column and full key path; keys nobody read are
 // reported by finish() as unknown (they are usually typos).
 
 #include <initializer_list>
+#include <stdexcept>
 #include <limits>
 #include <optional>
 #include <set>
@@ -17,6 +19,7 @@
 #include "field/sym3.h"
 #include "renderer/render/shading.h"
 #include "renderer/scene/scene_error.h"
+#include "renderer/scene/scene_keys.h"
 
 namespace hsb {
 
@@ -24,59 +27,53 @@ namespace hsb {
 std::string source_location(const toml::node& node);
 std::string source_location(const toml::source_region& where);
 
-// Allowed range of a number; lo_open makes the lower bound exclusive.
-// Infinite values (TOML's inf) are refused unless allow_infinite is set;
-// NaN is always refused.
-struct NumberRange {
-  double lo = -std::numeric_limits<double>::infinity();
-  double hi = std::numeric_limits<double>::infinity();
-  bool lo_open = false;
-  bool allow_infinite = false;
-};
-inline constexpr NumberRange any_number{};
-inline constexpr NumberRange positive{0.0, std::numeric_limits<double>::infinity(), true};
-inline constexpr NumberRange non_negative{0.0, std::numeric_limits<double>::infinity(), false};
-inline constexpr NumberRange positive_or_infinite{0.0, std::numeric_limits<double>::infinity(), true, true};
-
 class TableReader {
  public:
-  // `prefix` is the key path of this table, e.g. "glyphs" ("" for the root);
-  // `where` is the location to blame for a missing required key.
+  // `prefix` is the key path of this table, e.g. "glyphs" ("" for the root;
+  // "seeds.grid[2]" for an element of an array of tables); `where` is the
+  // location to blame for a missing required key.
   TableReader(const toml::table& table, std::string prefix, std::string where);
 
-  double number(std::string_view key, double fallback, NumberRange range = any_number);
-  // The same, nullopt when absent: an automatic value.
-  std::optional<double> optional_number(std::string_view key, NumberRange range = any_number);
+  // The key's value, else its schema default. Keys whose schema default
+  // is automatic, derived or none are read as optionals: nullopt when
+  // absent.
+  double number(std::string_view key);
+  std::optional<double> optional_number(std::string_view key);
+  int integer(std::string_view key);
+  std::optional<int> optional_integer(std::string_view key);
+  bool boolean(std::string_view key);
   std::optional<bool> optional_boolean(std::string_view key);
+  std::string string(std::string_view key);  // "" when absent without a default
   std::optional<std::string> optional_string(std::string_view key);
-  int integer(std::string_view key, int fallback, int lo = std::numeric_limits<int>::min(),
-              int hi = std::numeric_limits<int>::max());
-  bool boolean(std::string_view key, bool fallback);
-  std::string string(std::string_view key, const std::string& fallback);
-  Vec3 vec3(std::string_view key, const Vec3& fallback);
-  // A point in space: [x, y, z] with every coordinate within ±1e17. The
-  // ray tracer keeps rays in single precision, so nothing farther can be
-  // traced, and points near the double range overflow every length
-  // computed from them.
-  Vec3 position(std::string_view key, const Vec3& fallback);
+  // [x, y, z] with every coordinate within ±1e17 (not zero for a
+  // direction). The ray tracer keeps rays in single precision, so nothing
+  // farther can be traced, and points near the double range overflow
+  // every length computed from them.
+  Vec3 vector(std::string_view key);
+  std::optional<Vec3> optional_vector(std::string_view key);
   // [r, g, b] with components in [0, 1] or "#rrggbb".
-  Rgb color(std::string_view key, const Rgb& fallback);
-  // Numbers, exactly `count` of them (any count when count is 0).
-  std::vector<double> numbers(std::string_view key, std::size_t count);
-  // An array of points, each as position() requires (empty when absent).
+  Rgb color(std::string_view key);
+  // Numbers, as many as the schema says, each in its range (empty when
+  // absent without a default).
+  std::vector<double> numbers(std::string_view key);
+  // An array of points, each as vector() requires (empty when absent).
   std::vector<Vec3> points(std::string_view key);
-  // An array of strings (empty when absent).
+  // An array of strings, each one of the schema's choices when it has any.
   std::vector<std::string> strings(std::string_view key);
 
-  // One of a fixed set of names, mapped to a value.
+  // One of the schema's names, mapped to a value: `options` maps every
+  // name the schema lists. The default is the schema's, or `fallback` for
+  // a key whose default follows another key.
   template <class T>
-  T choice(std::string_view key, T fallback,
-           std::initializer_list<std::pair<const char*, T>> options);
+  T choice(std::string_view key, std::initializer_list<std::pair<const char*, T>> options);
   template <class T>
-  T choice(std::string_view key, T fallback, const std::vector<std::pair<std::string, T>>& options);
+  T choice(std::string_view key, const std::vector<std::pair<std::string, T>>& options);
+  template <class T>
+  T choice(std::string_view key, T fallback, std::initializer_list<std::pair<const char*, T>> options);
 
-  // A sub-table (nullopt when absent) and an array of tables.
-  std::optional<TableReader> table(std::string_view key);
+  // A sub-table (empty when absent, so its keys take their defaults) and
+  // an array of tables.
+  TableReader table(std::string_view key);
   std::vector<TableReader> tables(std::string_view key);
 
   bool has(std::string_view key) const { return table_.contains(key); }
@@ -96,10 +93,18 @@ class TableReader {
 
  private:
   const toml::node* lookup(std::string_view key);
+  // The key's schema entry (its path without array indices).
+  const KeySchema& schema(std::string_view key) const;
+  // The value in the file, else the schema default, else nullptr.
+  const toml::node* value_or_default(std::string_view key);
+  std::optional<Vec3> read_vector(std::string_view key, const toml::node& node);
   std::string choice_error(const std::vector<std::string>& names) const;
+  // The option named by the value, else by the schema default.
+  template <class T>
+  T chosen(std::string_view key, std::optional<T> fallback, const std::vector<std::pair<std::string, T>>& options);
 
   const toml::table& table_;
-  std::string prefix_, where_;
+  std::string prefix_, schema_prefix_, where_;
   std::set<std::string, std::less<>> known_;
 };
 
@@ -107,19 +112,35 @@ class TableReader {
 std::string describe(const toml::node& node);
 
 template <class T>
-T TableReader::choice(std::string_view key, T fallback,
-                      std::initializer_list<std::pair<const char*, T>> options) {
+T TableReader::choice(std::string_view key, std::initializer_list<std::pair<const char*, T>> options) {
   std::vector<std::pair<std::string, T>> named;
   for (const auto& option : options) named.emplace_back(option.first, option.second);
-  return choice(key, fallback, named);
+  return chosen<T>(key, std::nullopt, named);
 }
 
 template <class T>
-T TableReader::choice(std::string_view key, T fallback, const std::vector<std::pair<std::string, T>>& options) {
-  const toml::node* node = lookup(key);
-  if (!node) return fallback;
+T TableReader::choice(std::string_view key, const std::vector<std::pair<std::string, T>>& options) {
+  return chosen<T>(key, std::nullopt, options);
+}
+
+template <class T>
+T TableReader::choice(std::string_view key, T fallback, std::initializer_list<std::pair<const char*, T>> options) {
+  std::vector<std::pair<std::string, T>> named;
+  for (const auto& option : options) named.emplace_back(option.first, option.second);
+  return chosen<T>(key, fallback, named);
+}
+
+template <class T>
+T TableReader::chosen(std::string_view key, std::optional<T> fallback,
+                      const std::vector<std::pair<std::string, T>>& options) {
+  const KeySchema& k = schema(key);
   std::vector<std::string> names;
   for (const auto& option : options) names.push_back(option.first);
+  if (names != k.choices) throw std::logic_error("the reader's names for " + k.path + " differ from the schema's");
+  const toml::node* node = lookup(key);
+  if (!node && fallback) return *fallback;
+  if (!node) node = default_node(k);
+  if (!node) throw std::logic_error("the schema has no default for " + k.path);
   if (const auto* s = node->as_string()) {
     for (const auto& option : options)
       if (s->get() == option.first) return option.second;

@@ -47,4 +47,16 @@ void for_each_leaf(const toml::table& table, const std::string& prefix,
   for (const Leaf& l : leaves) leaf(l.path, *l.node);
 }
 
+toml::table* table_at_path(toml::table& root, std::string_view path) {
+  toml::table* table = &root;
+  for (std::size_t start = 0; table && start < path.size();) {
+    const std::size_t dot = std::min(path.find('.', start), path.size());
+    const std::string part(path.substr(start, dot - start));
+    if (!table->contains(part)) table->insert(part, toml::table{});
+    table = (*table)[part].as_table();
+    start = dot + 1;
+  }
+  return table;
+}
+
 }  // namespace hsb

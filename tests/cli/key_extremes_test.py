@@ -1,15 +1,19 @@
 #!/usr/bin/env python3
-"""Every scene key at its extremes.
+"""Every scene key, and every column of a CSV list of sources, at its extremes.
 
-Each key documented in scenes/README.md is set in turn (with --set, on a
-small scene) to 0, -1, 1e-300, 1e300, the largest doubles, NaN and +-inf
-(numbers, and every element of a list of numbers), or to an unknown word
-and an empty string (strings). Every render must:
+The keys come from the scene schema (`hsb keys`). Each is set in turn (with
+--set, or in a scene file for the keys of [[seeds.grid]] and [[panel]]), on
+a small scene, to what its type can be pushed to: numbers to 0, -1, 1e-300,
+1e300, the largest doubles, NaN and +-inf (every element of a list of
+numbers alike); integers also to the limits of 32- and 64-bit integers;
+names and text to an unknown word and an empty string; every key also to a
+value of the wrong type. Each column of a CSV list of sources gets the
+same numbers, a word and an empty cell. Every render must:
 
 - end by itself within a few seconds with exit status 0 or 1 (never a
   signal: Embree's assertions once aborted on lengths of 1e20);
-- on status 1, say where: the key (or its --set argument) or the scene's
-  file:line:column;
+- on status 1, say where: the key (or its --set argument), the scene's or
+  CSV file's file:line:column;
 - on status 0, leave an image that is not blank, or say why in a warning;
 - leave no temporary file behind.
 
@@ -17,14 +21,12 @@ and an empty string (strings). Every render must:
 """
 
 import concurrent.futures
-import math
 import os
 import re
 import shutil
 import subprocess
 import sys
 import tempfile
-import tomllib
 
 HSB, SOURCE = sys.argv[1], sys.argv[2]
 ONLY = sys.argv[3:]
@@ -36,6 +38,8 @@ with open(CURVE, "w", encoding="utf-8") as f:
 PANELS = os.path.join(SOURCE, "scenes", "fig02_blending_along_a_curve.toml")
 DATA = os.path.join(SOURCE, "scenes", "data", "generated", "beam_bending.vtu")
 VTK_KEYS = ("data.file", "data.array", "data.field", "data.association", "data.cell_tensors")
+# Keys of arrays of tables: written into a scene file, not --set.
+IN_FILE = {"seeds.grid.": "[[seeds.grid]]\n", "panel.": "[[panel]]\n"}
 
 
 def scene_for(key):
@@ -53,70 +57,89 @@ SMALL = ["--set", "render.width=40", "--set", "render.height=40", "--set", "rend
 TIMEOUT = 30  # seconds; a render of this scene takes well under one
 
 NUMBERS = ["0", "-1", "1e-300", "1e300", "1.7976931348623157e308", "-1.7976931348623157e308", "nan", "inf", "-inf"]
+INTEGER_LIMITS = ["2147483647", "2147483648", "-2147483649", "9223372036854775807", "-9223372036854775808"]
 WORDS = ['"nosuchword"', '""']
 
-# Keys whose values are files or colours with rules of their own, tried
-# with words only, and keys that name a table rather than a value.
-NOT_VALUES = {"seeds.grid", "sweep", "panel"}
 
-
-def documented_keys():
-    """(key, default text) for every row of scenes/README.md's key tables."""
-    keys, section = [], None
-    with open(os.path.join(SOURCE, "scenes", "README.md"), encoding="utf-8") as readme:
-        for line in readme:
-            heading = re.match(r"^#+ `\[+([a-z_.]+)\]+`", line)
-            if heading:
-                section = heading.group(1)
-                continue
-            row = re.match(r"^\| (`[^|]+`) \| ([^|]*) \|", line)
-            if not row or section is None:
-                continue
-            for name in re.findall(r"`([a-z_.0-9]+)`", row.group(1)):
-                full = name if name.startswith(section + ".") else f"{section}.{name}"
-                if section == "seeds" and name.startswith("grid."):
-                    continue  # a [[seeds.grid]] table's keys: not --set-able one by one
-                keys.append((full, row.group(2).strip()))
+def schema():
+    """(key, type, count) for every key `hsb keys` lists."""
+    out = subprocess.run([HSB, "keys"], capture_output=True, text=True, check=True).stdout.splitlines()
+    keys = []
+    for line in out[1:]:
+        key, kind = line.split("\t")[:2]
+        count = re.match(r"(\d+) numbers", kind)
+        keys.append((key, kind, int(count.group(1)) if count else 0))
     return keys
 
 
-def pinned_values():
-    out = subprocess.run([HSB, "info", SCENE], capture_output=True, text=True, check=True).stdout
-    flat = {}
-
-    def walk(prefix, node):
-        for k, v in node.items():
-            path = f"{prefix}.{k}" if prefix else k
-            if isinstance(v, dict):
-                walk(path, v)
-            else:
-                flat[path] = v
-    walk("", tomllib.loads(out))
-    return flat
+def vectors(width):
+    return ["[" + ", ".join([n] * width) + "]" for n in NUMBERS] + ["[]"]
 
 
-def trials(key, default, pinned):
-    value = pinned.get(key)
-    text = default
-    if isinstance(value, bool) or text.startswith("`true`") or text.startswith("`false`"):
-        return []
-    if isinstance(value, str) or text.startswith('`"'):
-        return WORDS
-    if isinstance(value, list) or text.startswith("`["):
-        sample = value if isinstance(value, list) else None
-        if sample is None:
-            inner = re.match(r"`(\[.*?\])`", text)
-            try:
-                sample = tomllib.loads("v = " + inner.group(1))["v"] if inner else [0.0, 0.0, 0.0]
-            except tomllib.TOMLDecodeError:
-                sample = [0.0, 0.0, 0.0]
-        if sample and isinstance(sample[0], list):
-            return ["[[" + ", ".join([n] * len(sample[0])) + "]]" for n in NUMBERS]
-        if sample and isinstance(sample[0], str):
-            return ['["nosuchword"]', "[]"]
-        width = max(1, len(sample))
-        return ["[" + ", ".join([n] * width) + "]" for n in NUMBERS] + ["[]"]
-    return NUMBERS + WORDS[:1]
+def trials(kind, count):
+    """The values to try for a key of this type (as `hsb keys` words it)."""
+    if kind == "true or false":
+        return ["0", '"yes"']
+    if kind in ("string", "name"):
+        return WORDS + ["1"]
+    if kind == "integer":
+        return NUMBERS + INTEGER_LIMITS + WORDS[:1]
+    if kind == "number":
+        return NUMBERS + WORDS[:1]
+    if kind.startswith("[x, y, z]"):
+        return vectors(3) + WORDS[:1]
+    if kind == "name or [x, y, z]":
+        return WORDS + vectors(3)
+    if kind.startswith("[r, g, b]"):
+        return vectors(3) + WORDS
+    if kind.endswith("numbers"):
+        return vectors(count or 3) + WORDS[:1]
+    if kind == "[[x, y, z], ...]":
+        return ["[" + v + "]" for v in vectors(3)[:-1]] + ["[]", "1"]
+    if kind == "[strings]":
+        return ['["nosuchword"]', "[]", "[1]"]
+    return []  # [[tables]]: their keys are tried one by one
+
+
+def scene_with(key, value):
+    """A scene file holding `key = value` in its array of tables."""
+    for prefix, header in IN_FILE.items():
+        if key.startswith(prefix):
+            path = os.path.join(SCRATCH, f"{abs(hash((key, value)))}.toml")
+            with open(scene_for(key), encoding="utf-8") as base, open(path, "w", encoding="utf-8") as f:
+                f.write(base.read() + "\n" + header + f"{key[len(prefix):]} = {value}\n")
+            return path
+    return None
+
+
+# A list of sources: every column of the CSV format, with rotation as two
+# axes or as a quaternion.
+CSV_HEADERS = {
+    "axes": ("x,y,z,r1,r2,r3,ax,ay,az,bx,by,bz,scalar", "0,0,0,0.3,0.2,0.1,1,0,0,0,1,0,1", "1,0,0,0.3,0.2,0.1,1,0,0,0,1,0,2"),
+    "quaternion": ("x,y,z,r,qw,qx,qy,qz,scalar", "0,0,0,0.3,1,0,0,0,1", "1,0,0,0.3,1,0,0,0,2"),
+}
+
+
+def csv_cases():
+    cases = []
+    for name, (header, row, other) in CSV_HEADERS.items():
+        columns = header.split(",")
+        for i, column in enumerate(columns):
+            for value in NUMBERS + ["abc", ""]:
+                cells = row.split(",")
+                cells[i] = value
+                cases.append((f"csv {name} column {column}", value, header + "\n" + ",".join(cells) + "\n" + other + "\n"))
+    return cases
+
+
+def csv_scene(label, text):
+    folder = tempfile.mkdtemp(dir=SCRATCH)
+    with open(os.path.join(folder, "sources.csv"), "w", encoding="utf-8") as f:
+        f.write(text)
+    path = os.path.join(folder, "list.toml")
+    with open(path, "w", encoding="utf-8") as f:
+        f.write('[glyphs]\nplacement = "list"\nfile = "sources.csv"\n')
+    return path
 
 
 def blank(image):
@@ -128,10 +151,15 @@ def blank(image):
 
 
 def run(case):
-    key, value = case
+    key, value, csv = case
+    if csv is not None:
+        scene, setting = csv_scene(key, csv), []
+    else:
+        scene = scene_with(key, value)
+        scene, setting = (scene, []) if scene else (scene_for(key), ["--set", f"{key}={value}"])
     with tempfile.TemporaryDirectory(prefix="hsb_extremes_") as out:
         try:
-            done = subprocess.run([HSB, "render", scene_for(key), *SMALL, "--set", f"{key}={value}", "-o", out],
+            done = subprocess.run([HSB, "render", scene, *SMALL, *setting, "-o", out],
                                   capture_output=True, text=True, timeout=TIMEOUT)
         except subprocess.TimeoutExpired:
             return f"{key}={value}: still running after {TIMEOUT} s"
@@ -142,7 +170,8 @@ def run(case):
         if done.returncode not in (0, 1):
             return f"{key}={value}: exit {done.returncode}: {said[-300:]}"
         if done.returncode == 1:
-            located = key in said or re.search(r"\.(toml|vtu):\d+:\d+: ", said) or "--set" in said
+            where = key.split()[-1] if csv is not None else key
+            located = (where in said or re.search(r"\.(toml|vtu|csv):\d+:\d+: ", said) or "--set" in said)
             return None if located else f"{key}={value}: an error that does not say where: {said[-300:]}"
         images = [os.path.join(out, f) for f in os.listdir(out) if f.endswith((".png", ".tif", ".exr"))]
         if images and all(blank(i) for i in images) and "warning" not in said:
@@ -151,12 +180,13 @@ def run(case):
 
 
 def main():
-    pinned = pinned_values()
     cases = []
-    for key, default in documented_keys():
-        if key.split(".")[0] in NOT_VALUES or (ONLY and not any(key.startswith(p) for p in ONLY)):
+    for key, kind, count in schema():
+        if ONLY and not any(key.startswith(p) for p in ONLY):
             continue
-        cases += [(key, v) for v in trials(key, default, pinned)]
+        cases += [(key, v, None) for v in trials(kind, count)]
+    if not ONLY or "csv" in ONLY:
+        cases += csv_cases()
     with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
         failures = [f for f in pool.map(run, cases) if f]
     shutil.rmtree(SCRATCH, ignore_errors=True)

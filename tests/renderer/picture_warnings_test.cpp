@@ -47,11 +47,13 @@ TEST(PictureWarnings, RaysThroughHundredsOfGlyphs) {
   EXPECT_FALSE(mentions(warnings_for(seeds), "a ray crosses about"));
 }
 
-// The message of the ResourceError that preparing `scene` throws.
+// The message of the ResourceError (or SceneError) that preparing `scene` throws.
 std::string refusal(const std::string& scene) {
   try {
     warnings_for(scene);
   } catch (const ResourceError& e) {
+    return e.what();
+  } catch (const SceneError& e) {
     return e.what();
   }
   return "not refused";
@@ -62,16 +64,22 @@ TEST(ResourceLimits, ScenesLargerThanTheMachineAreRefusedBeforeAllocating) {
   const std::string seeds_grid = refusal("[[seeds.grid]]\nn = 10000\nm = 10000\n");
   EXPECT_NE(seeds_grid.find("the trajectories (100000000 seeds"), std::string::npos) << seeds_grid;
   EXPECT_NE(seeds_grid.find("seeds.grid n and m"), std::string::npos) << seeds_grid;
-  const std::string step = refusal(seeds + "[trajectories]\nstep = 1e-9\nmax_steps = 1000000000\n");
+  const std::string step = refusal(seeds + "[trajectories]\nstep = 4e-9\nmax_steps = 1000000000\n");
   EXPECT_NE(step.find("trajectories.step"), std::string::npos) << step;
-  const std::string spacing = refusal(seeds + "[glyphs]\nspacing = 1e-9\n");
+  const std::string spacing = refusal(seeds + "[glyphs]\nspacing = 4e-9\n");
   EXPECT_NE(spacing.find("raise glyphs.spacing"), std::string::npos) << spacing;
   EXPECT_NE(spacing.find("would take about"), std::string::npos) << spacing;
-  // Counts beyond any integer type once wrapped to one glyph a trajectory.
+  // Lengths no data set of this size can mean are refused against the
+  // data's diagonal (D = 2√3 here), in its units, before any trajectory.
   for (const char* tiny : {"1e-20", "1e-300"}) {
     const std::string message = refusal(seeds + "[glyphs]\nspacing = " + tiny + "\n");
-    EXPECT_NE(message.find("raise glyphs.spacing"), std::string::npos) << message;
+    EXPECT_NE(message.find("warned.toml:4:11: glyphs.spacing must be a length between 3.4641e-09 and 3.4641e+06 (1e-09 to "
+                           "1e+06 times the data's diagonal D = 3.4641), got "),
+              std::string::npos)
+        << message;
   }
+  const std::string huge = refusal(seeds + "[render]\nbox_radius = 1e15\n");
+  EXPECT_NE(huge.find("render.box_radius must be a length between"), std::string::npos) << huge;
   const std::string at_seeds = refusal("[glyphs]\nplacement = \"seeds\"\n[[seeds.grid]]\nn = 10000\nm = 10000\n"
                                        "[[seeds.grid]]\nn = 10000\nm = 10000\n[[seeds.grid]]\nn = 10000\nm = 10000\n"
                                        "[[seeds.grid]]\nn = 10000\nm = 10000\n");
