@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Files and streams a careless or unlucky user hands hsb: a FIFO as the
 # scene, two scenes that would write one image, a report piped into head,
-# a full disk under standard output, what a killed run left behind, and a
-# sweep with no values. Each ends in one clear error or a right result,
+# a full disk under standard output, what a killed run left behind, a
+# sweep with no values, and a killed run's trial-read child. Each ends in one clear error or a right result,
 # never a hang, a silent overwrite or a death by SIGPIPE.
 source "$(dirname "$0")/common.sh"
 small=(--set render.width=96 --set render.height=96 --set render.samples=1)
@@ -58,4 +58,26 @@ printf '[glyphs]\nscale = 0.2\n[sweep]\n"glyphs.spacing" = []\n' > "$work/empty_
 out=$("$hsb" render "$work/empty_sweep.toml" -o "$work/sweep" 2>&1); status=$?
 [[ $status == 1 ]] || fail "empty sweep: exit $status: $out"
 grep -q "empty_sweep.toml:4:20: sweep.glyphs.spacing lists no values" <<<"$out" || fail "empty sweep: $out"
+# The child that trial-reads a data file (VTK's readers crash or hang on
+# some corrupt files) dies with its parent: killed with SIGKILL mid-read,
+# nothing of hsb is left running. This file hangs VTK's legacy reader.
+tail -c +2 "$src/tests/fuzz/corpus/data/legacy-metadata-hangs-vtk-reader" > "$work/hangs.vtk"
+"$hsb" info "$work/hangs.vtk" > /dev/null 2>&1 &
+parent=$!
+child=
+for _ in $(seq 100); do
+  child=$(pgrep -P "$parent" | head -1)
+  [[ -n $child ]] && break
+  sleep 0.1
+done
+[[ -n $child ]] || fail "no trial-read child of hsb info on a file that hangs VTK"
+kill -KILL "$parent"
+wait "$parent" 2> /dev/null
+# Dead, or a zombie waiting for an init that reaps it (some containers' never does).
+running() { local state; state=$(ps -o stat= -p "$1" 2> /dev/null) && [[ $state != Z* ]]; }
+for _ in $(seq 20); do
+  running "$child" || break
+  sleep 0.05
+done
+running "$child" && { kill -KILL "$child"; fail "the trial-read child outlived its killed parent"; }
 echo "files and streams: ok"
