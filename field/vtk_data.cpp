@@ -33,7 +33,7 @@
 #include "field/child_process.h"
 #include "field/data_error.h"
 #include "field/eigenvalue_range.h"
-#include "field/file_extension.h"
+#include "field/data_formats.h"
 #include "field/input_file.h"
 #include "field/mesh_field.h"
 #include "field/mesh_locator.h"
@@ -66,13 +66,17 @@ void update_safely(vtkAlgorithm* algorithm, const std::string& path, const char*
 
 // A file of random bytes, or of another format, gets a clear message
 // before VTK sees it: legacy files start with their version line, XML
-// files with "<?xml" or "<VTKFile".
-void check_header(const std::string& path, const std::string& ext) {
+// files with "<?xml" or "<VTKFile"; a file of another known format under a
+// VTK name is said as what it is.
+void check_header(const std::string& path, const DataFormat& format) {
+  if (const DataFormat* content = format_by_content(path); content && content != &format &&
+                                                             content->reader != format.reader)
+    throw DataError(unreadable_format_message(path));
   std::ifstream in(path, std::ios::binary);
   std::string head(256, '\0');
   in.read(head.data(), std::streamsize(head.size()));
   head.resize(std::size_t(in.gcount()));
-  if (ext == ".vtk") {
+  if (format.reader == VtkReaderKind::legacy) {
     if (head.rfind("# vtk DataFile Version", 0) != 0)
       throw DataError(path + ": not a legacy VTK file: its first line is not \"# vtk DataFile Version x.y\"");
     return;
@@ -194,9 +198,10 @@ void check_dataset(vtkDataSet* data, const std::string& path) {
 vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSession& vtk) {
   if (const std::string why = unreadable_input(path); !why.empty()) throw DataError(path + ": " + why);
 
-  const std::string ext = lower_extension(path);
+  const DataFormat* format = format_by_extension(path);
+  if (!format || !format->readable()) throw DataError(unreadable_format_message(path));
   vtkSmartPointer<vtkAlgorithm> reader;
-  if (ext == ".vtk") {
+  if (format->reader == VtkReaderKind::legacy) {
     auto legacy = vtkSmartPointer<vtkDataSetReader>::New();
     legacy->SetFileName(path.c_str());
     legacy->ReadAllTensorsOn();
@@ -204,15 +209,12 @@ vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSessi
     legacy->ReadAllVectorsOn();
     legacy->ReadAllFieldsOn();
     reader = legacy;
-  } else if (ext == ".vti" || ext == ".vtu" || ext == ".vts" || ext == ".vtr") {
+  } else {
     auto xml = vtkSmartPointer<vtkXMLGenericDataObjectReader>::New();
     xml->SetFileName(path.c_str());
     reader = xml;
-  } else {
-    throw DataError(path + ": unsupported data file type \"" + ext +
-                    "\" (expected .vtk, .vti, .vtu, .vts or .vtr)");
   }
-  check_header(path, ext);
+  check_header(path, *format);
   update_safely(reader, path, "reader");
   vtkSmartPointer<vtkDataSet> data = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
   // A reader's warning is a file it could not read as declared (a

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "field/data_formats.h"
 #include "field/data_info.h"
 #include "field/partial_file.h"
 #include "renderer/app/batch.h"
@@ -146,8 +147,8 @@ int main(int argc, char** argv) {
   std::vector<std::string> overrides;
   bool stats = false;
   render->add_option("scenes", scenes,
-                     "Scene files (.toml) to render; a data file (.vtk .vti .vtu .vts .vtr) renders as a scene\n"
-                     "naming only that file, every other value automatic")
+                     "Scene files (.toml) to render; a data file (" + hsb::readable_extensions_text() +
+                         ") renders as a\nscene naming only that file, every other value automatic")
       ->required();
   render->add_option("-o,--output", output_dir,
                      "Folder for the images (created if missing); output.file is relative to it")
@@ -185,8 +186,10 @@ int main(int argc, char** argv) {
       "the scene with every automatic value resolved, as TOML to save and edit.");
   std::vector<std::string> info_inputs;
   std::string info_array;
-  info->add_option("inputs", info_inputs, "Scene files (.toml) or data files (.vtk .vti .vtu .vts .vtr)")
-      ->required();
+  bool list_formats = false;
+  info->add_option("inputs", info_inputs, "Scene files (.toml) or data files (" + hsb::readable_extensions_text() + ")");
+  info->add_flag("--formats", list_formats,
+                 "List the data formats hsb knows: those it reads, and those it names and says how to convert");
   info->add_option("--array", info_array, "Tensor array of a data file (default: its active tensors)");
   std::vector<std::string> info_overrides;
   info->add_option("--set", info_overrides, "Override a scene key, as for render (the values shown follow it)")
@@ -300,6 +303,19 @@ int main(int argc, char** argv) {
                   fallback.c_str(), k.unit.c_str(), k.doc.c_str());
     }
     return printed(0);
+  }
+  if (*info && list_formats) {
+    std::printf("format\textensions\thsb reads it\n");
+    for (const hsb::DataFormat& f : hsb::data_formats()) {
+      std::string extensions;
+      for (const std::string& e : f.extensions) extensions += (extensions.empty() ? "" : " ") + e;
+      std::printf("%s\t%s\t%s\n", f.name.c_str(), extensions.c_str(), f.readable() ? "yes" : ("no: " + f.advice).c_str());
+    }
+    return printed(0);
+  }
+  if (*info && info_inputs.empty()) {
+    std::fprintf(stderr, "hsb info: give scene or data files (or --formats)\n");
+    return 106;
   }
   if (*info) {
     return printed(for_each(info_inputs.size(), [&](std::size_t i) { return info_inputs[i]; }, "inputs", [&](std::size_t i) {

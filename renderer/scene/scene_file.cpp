@@ -4,7 +4,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "field/file_extension.h"
+#include "field/data_formats.h"
 #include "field/input_file.h"
 #include "renderer/image/colormap.h"
 #include "renderer/image/image_output.h"
@@ -42,11 +42,6 @@ void apply_override(toml::table& root, const std::string& text) {
   parsed.get("v")->visit([&](auto&& node) { assign_at_path(root, key, std::move(node)); });
 }
 
-bool has_data_extension(const std::string& path) {
-  const std::string ext = lower_extension(path);
-  return ext == ".vtk" || ext == ".vti" || ext == ".vtu" || ext == ".vts" || ext == ".vtr";
-}
-
 // Keys of one data kind, refused in a table of the other: a scene that
 // gives a point load's bounds for a mesh has a mistake in it.
 void refuse_keys(TableReader& data, std::initializer_list<const char*> keys, const char* kind) {
@@ -73,11 +68,11 @@ void read_data(TableReader& data, DataSpec& spec, const std::string& base_dir) {
                           {{"point_load", DataKind::point_load}, {"vtk", DataKind::vtk_file}});
   if (spec.kind == DataKind::vtk_file) {
     if (!file || file->empty())
-      data.fail_at("file", "is required when data.kind = \"vtk\" (a .vtk, .vti, .vtu, .vts or .vtr file)");
-    if (!has_data_extension(*file))
-      data.fail_at("file", "must be a .vtk, .vti, .vtu, .vts or .vtr file, got \"" + *file + "\"");
+      data.fail_at("file", "is required when data.kind = \"vtk\" (a file of " + readable_formats_text() + ")");
     // Relative to the scene file, so scenes can be run from anywhere.
     spec.file.path = existing_file(data, "file", *file, base_dir);
+    if (const std::string why = unreadable_format_message(spec.file.path); !why.empty())
+      data.fail_at("file", "names " + why);
     spec.file.array = data.string("array");
     spec.file.kind = data.choice<FieldKind>("field", {{"auto", FieldKind::automatic}, {"tensor", FieldKind::tensor},
                                            {"vector", FieldKind::vector}});
@@ -487,7 +482,7 @@ void check_data_lengths(const SceneSpec& spec, double diagonal) {
   }
 }
 
-bool is_data_file(const std::string& path) { return has_data_extension(path); }
+bool is_data_file(const std::string& path) { return is_known_data_file(path); }
 
 SceneSpec load_scene_or_data_file(const std::string& path, const std::vector<std::string>& overrides) {
   return is_data_file(path) ? scene_for_data_file(path, overrides) : load_scene(path, overrides);
@@ -497,6 +492,7 @@ SceneSpec scene_for_data_file(const std::string& path, const std::vector<std::st
   // The file is the user's own argument: said as such, not as a line of
   // the scene made for it.
   if (const std::string why = unreadable_input(path); !why.empty()) throw SceneError(path + ": " + why);
+  if (const std::string why = unreadable_format_message(path); !why.empty()) throw SceneError(why);
   // The path as given, relative to where hsb runs: printed back by
   // `hsb info`, the scene works from there.
   std::ostringstream text;

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "field/data_formats.h"
 #include "field/glyph_mapping.h"
 #include "renderer/image/colormap.h"
 #include "renderer/render/camera_framing.h"
@@ -118,7 +119,7 @@ std::vector<KeySchema> build_keys() {
       Key("data.poisson_ratio", T::number, "Poisson's ratio ν of the half-space").range(-1.0, 0.5).fallback("0.3"),
       Key("data.singular_radius", T::number, "within this distance of the load the field is held constant")
           .length().automatic("D/1000"),
-      Key("data.file", T::string, "the data file (.vtk .vti .vtu .vts .vtr), relative to the scene").none("required for \"vtk\""),
+      Key("data.file", T::string, "the data file (" + readable_extensions_text() + "), relative to the scene").none("required for \"vtk\""),
       Key("data.array", T::string, "the field's array").derived("the active tensors, else the only one of 6 or 9 components"),
       Key("data.field", T::choice, "read only tensors or only vectors").choices({"auto", "tensor", "vector"}).fallback("\"auto\""),
       Key("data.association", T::choice, "point or cell data").choices({"auto", "point", "cell"}).fallback("\"auto\""),

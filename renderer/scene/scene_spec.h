@@ -136,8 +136,9 @@ toml::table scene_table(const SceneSpec& spec);
 // key's line, the allowed range in the data's own units.
 void check_data_lengths(const SceneSpec& spec, double diagonal);
 
-// True for a data file's extension (.vtk, .vti, .vtu, .vts, .vtr): such a
-// path names a data set, and `hsb` makes it a scene naming only that file.
+// True for a path that names data of a format hsb knows (by extension, else
+// by content; field/data_formats.h), read or not: `hsb` makes it a scene
+// naming only that file, which says so when hsb does not read the format.
 bool is_data_file(const std::string& path);
 // That scene: its one key is data.file.
 SceneSpec scene_for_data_file(const std::string& path, const std::vector<std::string>& overrides = {});

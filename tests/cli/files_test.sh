@@ -2,7 +2,8 @@
 # Files and streams a careless or unlucky user hands hsb: a FIFO as the
 # scene, two scenes that would write one image, a report piped into head,
 # a full disk under standard output, what a killed run left behind, a
-# sweep with no values, and a killed run's trial-read child. Each ends in one clear error or a right result,
+# sweep with no values, a killed run's trial-read child, and data of a
+# format hsb does not read. Each ends in one clear error or a right result,
 # never a hang, a silent overwrite or a death by SIGPIPE.
 source "$(dirname "$0")/common.sh"
 small=(--set render.width=96 --set render.height=96 --set render.samples=1)
@@ -58,6 +59,22 @@ printf '[glyphs]\nscale = 0.2\n[sweep]\n"glyphs.spacing" = []\n' > "$work/empty_
 out=$("$hsb" render "$work/empty_sweep.toml" -o "$work/sweep" 2>&1); status=$?
 [[ $status == 1 ]] || fail "empty sweep: exit $status: $out"
 grep -q "empty_sweep.toml:4:20: sweep.glyphs.spacing lists no values" <<<"$out" || fail "empty sweep: $out"
+# A data file of a format hsb does not read, on the command line or in a
+# scene: one line naming the format, never a TOML error; info and export alike.
+printf 'NRRD0004\ntype: float\n' > "$work/helix.nrrd"
+for command in render info export; do
+  args=("$work/helix.nrrd")
+  [[ $command == info ]] || args+=(-o "$work/formats")
+  out=$("$hsb" $command "${args[@]}" 2>&1); status=$?
+  [[ $status == 1 ]] || fail "$command of a NRRD file: exit $status: $out"
+  grep -q "helix.nrrd: a NRRD file (by its name and content), which hsb does not read: .*hsb reads legacy VTK" <<<"$out" ||
+    fail "$command of a NRRD file: $out"
+done
+printf '[data]\nfile = "helix.nrrd"\n' > "$work/nrrd_scene.toml"
+out=$("$hsb" render "$work/nrrd_scene.toml" -o "$work/formats" 2>&1)
+grep -q "nrrd_scene.toml:2:8: data.file names .*helix.nrrd: a NRRD file" <<<"$out" || fail "a scene naming NRRD: $out"
+"$hsb" info --formats | grep -q "^NIfTI	.nii .nii.gz .hdr	no: " || fail "hsb info --formats lists no NIfTI"
+
 # The child that trial-reads a data file (VTK's readers crash or hang on
 # some corrupt files) dies with its parent: killed with SIGKILL mid-read,
 # nothing of hsb is left running. This file hangs VTK's legacy reader.

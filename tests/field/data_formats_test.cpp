@@ -1,0 +1,70 @@
+// The registry of data formats: names and first bytes tell the formats
+// apart, and a file hsb does not read is said as what it is.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "field/data_formats.h"
+#include "tests/temp_dir.h"
+
+namespace hsb {
+namespace {
+
+std::string write(const std::string& name, const std::string& bytes) {
+  const std::string path = (test_temp_dir("formats") / name).string();
+  std::ofstream(path, std::ios::binary) << bytes;
+  return path;
+}
+
+std::string nifti_header() {
+  std::string header(352, '\0');
+  header[0] = char(348);  // sizeof_hdr, little-endian
+  header[1] = char(1);
+  header.replace(344, 4, std::string("n+1\0", 4));
+  return header;
+}
+
+TEST(DataFormats, TheLongestExtensionNamesTheFormat) {
+  ASSERT_NE(format_by_extension("brain.nii.gz"), nullptr);
+  EXPECT_EQ(format_by_extension("brain.nii.gz")->name, "NIfTI");
+  EXPECT_EQ(format_by_extension("BEAM.VTU")->name, "VTK XML unstructured grid");
+  EXPECT_EQ(format_by_extension("notes.gz"), nullptr);
+  EXPECT_EQ(format_by_extension("scene.toml"), nullptr);
+  EXPECT_TRUE(is_readable_data_file("a/b/c.vtk"));
+  EXPECT_FALSE(is_readable_data_file("c.pvtu"));
+}
+
+TEST(DataFormats, TheFirstBytesNameTheFormat) {
+  EXPECT_EQ(format_by_content(write("a", "NRRD0004\ntype: float\n"))->name, "NRRD");
+  EXPECT_EQ(format_by_content(write("b", "<?xml version=\"1.0\"?>\n<VTKFile type=\"vtkMultiBlockDataSet\">"))->name,
+            "VTK XML multiblock data set");
+  EXPECT_EQ(format_by_content(write("c", "<VTKFile type='PUnstructuredGrid' version='1.0'>"))->name,
+            "parallel VTK XML unstructured grid");
+  EXPECT_EQ(format_by_content(write("d", nifti_header()))->name, "NIfTI");
+  EXPECT_EQ(format_by_content(write("e", "$MeshFormat\n4.1 0 8\n"))->name, "Gmsh mesh");
+  EXPECT_EQ(format_by_content(write("f", "# vtk DataFile Version 5.1\n"))->name, "legacy VTK");
+  EXPECT_EQ(format_by_content(write("g", "[data]\nfile = \"x.vtu\"\n")), nullptr);
+  EXPECT_EQ(format_by_content(write("h", "")), nullptr);
+}
+
+TEST(DataFormats, AFileHsbDoesNotReadIsSaidAsWhatItIs) {
+  const std::string nrrd = write("helix.nrrd", "NRRD0004\n");
+  const std::string message = unreadable_format_message(nrrd);
+  EXPECT_EQ(message.rfind(nrrd + ": a NRRD file (by its name and content), which hsb does not read: ", 0), 0u) << message;
+  EXPECT_NE(message.find("hsb reads legacy VTK (.vtk), VTK XML image data (.vti)"), std::string::npos) << message;
+  // Under a name hsb reads, the content is what it is.
+  const std::string disguised = write("brain.vtu", nifti_header());
+  EXPECT_NE(unreadable_format_message(disguised).find("a NIfTI file (by its content)"), std::string::npos);
+  const std::string legacy = write("beam.vtu", "# vtk DataFile Version 4.2\n");
+  EXPECT_NE(unreadable_format_message(legacy).find("give it its format's extension (.vtk)"), std::string::npos);
+  // What it reads says nothing; nor does a readable name over unknown bytes
+  // (the reader's own checks speak for those).
+  EXPECT_EQ(unreadable_format_message(write("beam2.vtu", "<?xml version=\"1.0\"?><VTKFile type=\"UnstructuredGrid\">")), "");
+  EXPECT_EQ(unreadable_format_message(write("noise.vtu", "\x01\x02garbage")), "");
+  EXPECT_TRUE(is_known_data_file(write("nameless", "NRRD0005\n")));
+  EXPECT_FALSE(is_known_data_file(write("scene.toml", "NRRD0005\n")));
+}
+
+}  // namespace
+}  // namespace hsb
