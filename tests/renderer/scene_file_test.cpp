@@ -220,8 +220,13 @@ TEST_F(SceneFile, DataKindFollowsTheFile) {
   EXPECT_NE(error_of("[data]\nkind = \"point_load\"\nfile = \"" + data + "\"\n")
                 .find("data.file applies only to data.kind = \"vtk\""),
             std::string::npos);
-  EXPECT_NE(error_of("[data]\nfile = \"results.csv\"\n").find("must be a .vtk, .vti, .vtu, .vts or .vtr file"),
-            std::string::npos);
+  // A file that is no data format hsb knows: said so, with what it reads.
+  std::ofstream(test_temp_dir("scene_test") / "results.csv") << "x,y,z\n1,2,3\n";
+  const std::string csv = error_of("[data]\nfile = \"results.csv\"\n");
+  EXPECT_NE(csv.find(":2:8: data.file names "), std::string::npos) << csv;
+  EXPECT_NE(csv.find("results.csv: not a data file hsb knows by its name or its first bytes. hsb reads legacy VTK (.vtk)"),
+            std::string::npos)
+      << csv;
 }
 
 TEST_F(SceneFile, ADataFileIsASceneNamingOnlyIt) {
