@@ -14,7 +14,9 @@ namespace hsb {
 enum class VtkReaderKind {
   none,      // not read (yet): named in messages only
   legacy,    // vtkDataSetReader
-  xml,       // vtkXMLGenericDataObjectReader: one serial data set
+  xml,         // vtkXMLGenericDataObjectReader: one serial data set
+  xml_pieces,  // the same, for pieces or blocks merged into one grid
+  series,      // a list of data files by time step (.pvd)
 };
 
 struct DataFormat {

@@ -33,7 +33,7 @@
 #include "field/child_process.h"
 #include "field/data_error.h"
 #include "field/eigenvalue_range.h"
-#include "field/data_formats.h"
+#include "field/dataset_reading.h"
 #include "field/input_file.h"
 #include "field/mesh_field.h"
 #include "field/mesh_locator.h"
@@ -44,188 +44,6 @@
 namespace hsb {
 namespace {
 
-double trial_base_seconds = 30.0;
-
-// VTK's readers trust the counts a file declares, and its filters the
-// cells they are given: a corrupt file can make them read past their
-// buffers (the data fuzzer found several). Each runs on the file in a
-// child process first, so such a file is a clear error and never a crash.
-// A generous time: a few seconds more than a read should take, however
-// large the file.
-void update_safely(vtkAlgorithm* algorithm, const std::string& path, const char* what) {
-  const double seconds = trial_base_seconds + double(std::filesystem::file_size(path)) * 1e-6;
-  const ChildResult trial = run_in_child([&] { algorithm->Update(); }, seconds);
-  if (trial.outcome == ChildOutcome::crashed)
-    throw DataError(path + ": the file is corrupt: VTK's " + what + " crashed on it" +
-                    (trial.signal ? " (signal " + std::to_string(trial.signal) + ")" : std::string()));
-  if (trial.outcome == ChildOutcome::timed_out)
-    throw DataError(path + ": the file is corrupt: VTK's " + what + " did not finish it in " +
-                    std::to_string(int(seconds)) + " s");
-  algorithm->Update();
-}
-
-// A file of random bytes, or of another format, gets a clear message
-// before VTK sees it: legacy files start with their version line, XML
-// files with "<?xml" or "<VTKFile"; a file of another known format under a
-// VTK name is said as what it is.
-void check_header(const std::string& path, const DataFormat& format) {
-  if (const DataFormat* content = format_by_content(path); content && content != &format &&
-                                                             content->reader != format.reader)
-    throw DataError(unreadable_format_message(path));
-  std::ifstream in(path, std::ios::binary);
-  std::string head(256, '\0');
-  in.read(head.data(), std::streamsize(head.size()));
-  head.resize(std::size_t(in.gcount()));
-  if (format.reader == VtkReaderKind::legacy) {
-    if (head.rfind("# vtk DataFile Version", 0) != 0)
-      throw DataError(path + ": not a legacy VTK file: its first line is not \"# vtk DataFile Version x.y\"");
-    return;
-  }
-  std::size_t start = head.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;  // a UTF-8 byte-order mark
-  start = head.find_first_not_of(" \t\r\n", start);
-  if (start == std::string::npos || (head.compare(start, 5, "<?xml") != 0 && head.compare(start, 8, "<VTKFile") != 0))
-    throw DataError(path + ": not a VTK XML file: it does not start with \"<?xml\" or \"<VTKFile\"");
-}
-
-// VTK's cells index their points by their type's count: a hexahedron
-// listed with three points, or a biquadratic wedge with eight, is read past
-// its end by every filter. So every cell must have its type's count (VTK's
-// own, from an instance of the type), or at least the minimum for the
-// types of any size; higher-order Lagrange and Bezier cells and polyhedra,
-// whose layout lives in further arrays, are refused.
-void check_cell_sizes(vtkUnstructuredGrid* grid, const std::string& path) {
-  vtkCellArray* cells = grid->GetCells();
-  if (!cells) return;
-  const vtkIdType count = grid->GetNumberOfCells();
-  if (cells->GetNumberOfCells() != count || (count > 0 && !grid->GetCellTypesArray()))
-    throw DataError(path + ": the cell list and the cell types disagree on the number of cells");
-  std::map<int, vtkIdType> required;  // by type: the exact count, or −(the least) for any size
-  for (vtkIdType i = 0; i < count; ++i) {
-    const int type = grid->GetCellType(i);
-    auto known = required.find(type);
-    if (known == required.end()) {
-      const vtkSmartPointer<vtkCell> cell = vtkSmartPointer<vtkCell>::Take(vtkGenericCell::InstantiateCell(type));
-      std::ostringstream message;
-      if (!cell) {
-        message << path << ": cell " << i << " has type " << type << ", which is no VTK cell type";
-        throw DataError(message.str());
-      }
-      if (type == VTK_POLYHEDRON || (type >= VTK_LAGRANGE_CURVE && type <= VTK_BEZIER_WEDGE)) {
-        message << path << ": cell " << i << " is a " << cell->GetClassName()
-                << "; only linear and quadratic cells are supported (VTK's Tessellator filter turns others into them)";
-        throw DataError(message.str());
-      }
-      const vtkIdType fixed = cell->GetNumberOfPoints();
-      vtkIdType least = 1;
-      if (type == VTK_POLY_LINE) least = 2;
-      if (type == VTK_POLYGON || type == VTK_TRIANGLE_STRIP || type == VTK_QUADRATIC_POLYGON) least = 3;
-      if (type == VTK_CONVEX_POINT_SET) least = 4;
-      known = required.emplace(type, fixed > 0 ? fixed : -least).first;
-    }
-    const vtkIdType size = cells->GetCellSize(i);
-    const vtkIdType need = known->second;
-    if (need > 0 ? size != need : size < -need) {
-      std::ostringstream message;
-      message << path << ": cell " << i << " is a " << vtkCellTypes::GetClassNameFromTypeId(type) << " with " << size
-              << " points; it needs " << (need > 0 ? "" : "at least ") << std::abs(need);
-      throw DataError(message.str());
-    }
-  }
-}
-
-// What no reader checks but everything after relies on: finite point
-// coordinates, cells that name existing points, and some volume to sample.
-void check_dataset(vtkDataSet* data, const std::string& path) {
-  const vtkIdType points = data->GetNumberOfPoints();
-  for (vtkIdType i = 0; i < points; ++i) {
-    double p[3];
-    data->GetPoint(i, p);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {
-      std::ostringstream message;
-      message << path << ": point " << i << " has a non-finite coordinate (" << p[0] << ", " << p[1] << ", " << p[2]
-              << ")";
-      throw DataError(message.str());
-    }
-  }
-  if (auto* grid = vtkUnstructuredGrid::SafeDownCast(data)) {
-    check_cell_sizes(grid, path);
-    vtkDataArray* connectivity = grid->GetCells() ? grid->GetCells()->GetConnectivityArray() : nullptr;
-    if (connectivity && connectivity->GetNumberOfTuples() > 0) {
-      double range[2];
-      connectivity->GetRange(range, 0);
-      if (range[0] < 0.0 || range[1] >= double(points)) {
-        std::ostringstream message;
-        message << path << ": a cell names point " << (range[0] < 0.0 ? range[0] : range[1]) << ", but the points are 0 to "
-                << points - 1;
-        throw DataError(message.str());
-      }
-    }
-  }
-  const vtkIdType cells = data->GetNumberOfCells();
-  if (cells == 0) throw DataError(path + ": the data set has no cells: there is no volume to sample tensors in");
-  // One cell with volume is enough: degenerate cells among good ones are
-  // legal (no point lies inside them). Tetrahedra from VTK's own
-  // triangulation of each 3D cell.
-  double bounds[6];
-  data->GetBounds(bounds);
-  const double diagonal = std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]);
-  const double tiny = 1e-12 * diagonal * diagonal * diagonal;
-  auto ids = vtkSmartPointer<vtkIdList>::New();
-  auto corners = vtkSmartPointer<vtkPoints>::New();
-  vtkIdType three_d = 0;
-  for (vtkIdType i = 0; i < cells; ++i) {
-    vtkCell* cell = data->GetCell(i);
-    if (cell->GetCellDimension() != 3) continue;
-    ++three_d;
-    if (!cell->Triangulate(0, ids, corners)) continue;
-    for (vtkIdType t = 0; t + 3 < corners->GetNumberOfPoints(); t += 4) {
-      double a[3], b[3], c[3], d[3];
-      corners->GetPoint(t, a), corners->GetPoint(t + 1, b), corners->GetPoint(t + 2, c), corners->GetPoint(t + 3, d);
-      const Vec3 pa(a[0], a[1], a[2]);
-      const double volume = std::fabs((Vec3(b[0], b[1], b[2]) - pa).dot(
-                                (Vec3(c[0], c[1], c[2]) - pa).cross(Vec3(d[0], d[1], d[2]) - pa))) / 6.0;
-      if (volume > tiny) return;
-    }
-  }
-  std::ostringstream message;
-  message << path << ": none of its " << cells << " cells has any volume ("
-          << (three_d ? std::to_string(three_d) + " are 3D cells, all flat" : std::string("none is a 3D cell"))
-          << "): tensors are sampled inside 3D cells";
-  throw DataError(message.str());
-}
-
-// The data set in `path`; VTK's complaints end up in `vtk`.
-vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSession& vtk) {
-  if (const std::string why = unreadable_input(path); !why.empty()) throw DataError(path + ": " + why);
-
-  const DataFormat* format = format_by_extension(path);
-  if (!format || !format->readable()) throw DataError(unreadable_format_message(path));
-  vtkSmartPointer<vtkAlgorithm> reader;
-  if (format->reader == VtkReaderKind::legacy) {
-    auto legacy = vtkSmartPointer<vtkDataSetReader>::New();
-    legacy->SetFileName(path.c_str());
-    legacy->ReadAllTensorsOn();
-    legacy->ReadAllScalarsOn();
-    legacy->ReadAllVectorsOn();
-    legacy->ReadAllFieldsOn();
-    reader = legacy;
-  } else {
-    auto xml = vtkSmartPointer<vtkXMLGenericDataObjectReader>::New();
-    xml->SetFileName(path.c_str());
-    reader = xml;
-  }
-  check_header(path, *format);
-  update_safely(reader, path, "reader");
-  vtkSmartPointer<vtkDataSet> data = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
-  // A reader's warning is a file it could not read as declared (a
-  // truncated array reads as garbage, with only a warning): an error here.
-  std::string error = vtk.first_error();
-  if (error.empty()) error = vtk.first_warning();
-  if (!error.empty() || !data || data->GetNumberOfPoints() == 0)
-    throw DataError(path + ": cannot read it as a VTK data set: " + (error.empty() ? "no points in it" : error));
-  check_dataset(data, path);
-  return data;
-}
 
 std::string list_arrays(vtkDataSet* data) {
   std::ostringstream out;
@@ -492,11 +310,9 @@ std::unique_ptr<ScalarField> color_field(vtkDataSet* data, const VtkFileSpec& sp
 
 }  // namespace
 
-void set_trial_read_seconds(double seconds) { trial_base_seconds = seconds; }
-
 VtkData load_vtk_data(const VtkFileSpec& spec) {
   const VtkSession vtk;
-  const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path, vtk);
+  const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path, vtk, spec.step);
   VtkData out;
   ChosenArray chosen = choose_field_array(data, spec);
   // One locator for every array of the data set (all share its cells).
@@ -544,11 +360,18 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
 }
 
 std::string describe_vtk_file(const VtkFileSpec& spec) {
+  // Before the session: reading the series takes one of its own.
+  const std::vector<double> times = series_times(spec.path);
   const VtkSession vtk;
-  const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path, vtk);
+  const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path, vtk, spec.step);
   std::ostringstream out;
   double b[6];
   data->GetBounds(b);
+  if (!times.empty()) {
+    out << spec.path << ": a time series of " << times.size() << " steps, at times";
+    for (double t : times) out << " " << t;
+    out << "; step " << std::max(spec.step, 0) << " (data.step) is described\n";
+  }
   out << spec.path << ": " << data->GetClassName() << "\n";
   out << "  bounds    x [" << b[0] << ", " << b[1] << "]  y [" << b[2] << ", " << b[3] << "]  z [" << b[4]
       << ", " << b[5] << "]\n";

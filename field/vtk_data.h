@@ -41,6 +41,7 @@ struct VtkFileSpec {
   CellTensors cell_tensors = CellTensors::constant;
   FieldKind kind = FieldKind::automatic;
   std::string color_array;  // a scalar array to colour by; "" = none
+  int step = -1;            // of a time series: the step's index (-1: the first)
 };
 
 struct VtkData {
@@ -67,6 +68,15 @@ VtkData load_vtk_data(const VtkFileSpec& spec);
 // second per megabyte of file calls the file corrupt. 30 s unless set: the
 // data fuzzer sets a few, so that a file that hangs VTK costs it little.
 void set_trial_read_seconds(double seconds);
+
+// The times of the steps of a time series (a .pvd), in order; none for a
+// data file of one step. Throws DataError for a series it cannot read.
+std::vector<double> series_times(const std::string& path);
+
+// Every file reading `path` (at `step` of a series) reads: itself, and a
+// series' step, a parallel file's pieces, a multiblock file's blocks.
+// Throws DataError for a series it cannot read.
+std::vector<std::string> data_files_read(const std::string& path, int step = -1);
 
 // What `hsb info` prints for a data file: kind, bounds, cell types and
 // counts, arrays, and the range of each eigenvalue of the chosen tensors.

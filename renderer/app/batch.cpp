@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "field/input_file.h"
+#include "field/vtk_data.h"
 #include "renderer/scene/scene_spec.h"
 #include "renderer/scene/toml_text.h"
 
@@ -58,6 +59,37 @@ std::vector<SceneSweep> scene_sweeps(const std::string& scene) {
   return out;
 }
 
+// The data file a scene reads: the scene itself for a data file, else its
+// data.file (a --set value over the file's), relative to the scene; ""
+// when it names none or cannot be read (reported when it renders).
+std::string data_file_of(const std::string& scene, const std::vector<std::string>& fixed) {
+  if (is_data_file(scene)) return scene;
+  if (!unreadable_input(scene).empty()) return "";
+  std::string file;
+  try {
+    const toml::table root = toml::parse_file(scene);
+    file = root["data"]["file"].value_or(std::string());
+  } catch (const std::exception&) {
+    return "";
+  }
+  for (const std::string& o : fixed)
+    if (o.rfind("data.file=", 0) == 0) {
+      file = o.substr(10);
+      if (file.size() >= 2 && (file.front() == '"' || file.front() == '\'')) file = file.substr(1, file.size() - 2);
+    }
+  if (file.empty() || std::filesystem::path(file).is_absolute()) return file;
+  return (std::filesystem::path(scene).parent_path() / file).lexically_normal().string();
+}
+
+bool scene_sets(const std::string& scene, const char* table, const char* key) {
+  if (is_data_file(scene) || !unreadable_input(scene).empty()) return false;
+  try {
+    return bool(toml::parse_file(scene)[table][key]);
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> split_sweep(const std::string& value) {
@@ -103,6 +135,23 @@ Batch::Batch(const std::vector<std::string>& scenes, const std::vector<std::stri
       if (s.values.empty() && scene.error.empty())
         scene.error = s.where + ": sweep." + s.key + " lists no values; a sweep needs one or more";
       scene.swept.push_back({std::move(s.key), std::move(s.values), std::move(s.places)});
+    }
+    // A time series whose step no one chose: one image per step.
+    const auto names_step = [](const std::string& key) { return key == "data.step"; };
+    const bool step_given =
+        scene_sets(path, "data", "step") ||
+        std::any_of(scene.swept.begin(), scene.swept.end(), [&](const SweptKey& k) { return names_step(k.key); }) ||
+        std::any_of(fixed_.begin(), fixed_.end(), [](const std::string& o) { return o.rfind("data.step=", 0) == 0; });
+    if (!step_given) {
+      std::vector<double> times;
+      try {
+        times = series_times(data_file_of(path, fixed_));
+      } catch (const std::exception&) {
+        // Reported, naming the file, when the scene is rendered.
+      }
+      SweptKey steps{"data.step", {}, {}};
+      for (std::size_t i = 0; i < times.size(); ++i) steps.values.push_back(std::to_string(i));
+      if (!steps.values.empty()) scene.swept.insert(scene.swept.begin(), std::move(steps));
     }
     if (scene.error.empty())
       for (const SweptKey& k : scene.swept) {

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "field/vtk_data.h"
 #include "renderer/image/display_image.h"
 #include "renderer/image/image_output.h"
 #include "renderer/image/vector_figure.h"
@@ -51,6 +52,18 @@ std::string data_file_of(const SceneSpec& spec) {
   return "";
 }
 
+// The SHA-1 of the data: of its file, or for data read from several (a
+// series' step, pieces, blocks) of their SHA-1s in turn.
+std::string data_sha1(const SceneSpec& spec) {
+  const std::string data = data_file_of(spec);
+  if (spec.pipeline.data.kind != DataKind::vtk_file) return file_sha1(data);
+  const std::vector<std::string> files = data_files_read(data, spec.pipeline.data.file.step);
+  if (files.size() == 1) return file_sha1(files.front());
+  std::string hashes;
+  for (const std::string& file : files) hashes += file_sha1(file) + "\n";
+  return sha1_hex(hashes);
+}
+
 // The colour configuration the picture goes through: output.ocio_config,
 // else $OCIO, else the built-in one (the same in every build).
 std::string color_config_sha1(const SceneSpec& spec) {
@@ -69,7 +82,7 @@ std::string scene_sha1(const SceneSpec& spec, const std::string& data_sha1) {
 
 }  // namespace
 
-std::string scene_sha1(const SceneSpec& spec) { return scene_sha1(spec, file_sha1(data_file_of(spec))); }
+std::string scene_sha1(const SceneSpec& spec) { return scene_sha1(spec, data_sha1(spec)); }
 
 std::string picture_description(const PreparedScene& prepared) {
   const SceneSpec& spec = prepared.spec;
@@ -99,16 +112,16 @@ std::string metadata_text(const std::string& text) {
 std::map<std::string, std::string> picture_metadata(const SceneSpec& spec, const std::string& description,
                                                     const std::string& resolved, const ColorManagement& color) {
   const std::string data_file = data_file_of(spec);
-  const std::string data_sha1 = file_sha1(data_file);
+  const std::string data_hash = data_sha1(spec);
   return {
       {"Software", std::string("Hyperstreamball ") + HSB_VERSION},
       {"ImageDescription",
        "Hyperstreamball render of " + std::filesystem::path(spec.path).filename().string() + ": " + description},
       {"hsb:scene", spec.path},
       {"hsb:scene_text", metadata_text(scene_text(spec))},
-      {"hsb:scene_sha1", scene_sha1(spec, data_sha1)},
+      {"hsb:scene_sha1", scene_sha1(spec, data_hash)},
       {"hsb:data_file", data_file},
-      {"hsb:data_sha1", data_sha1},
+      {"hsb:data_sha1", data_hash},
       {"hsb:resolved", metadata_text(resolved)},
       {"hsb:kernel", kernel_name(spec.surface.kernel)},
       {"hsb:ocio", color.config_name() + " / " + color.display() + " / " + color.view()},

@@ -79,12 +79,13 @@ void read_data(TableReader& data, DataSpec& spec, const std::string& base_dir) {
     spec.file.association = data.choice<TensorAssociation>("association", {{"auto", TensorAssociation::automatic},
                                                         {"point", TensorAssociation::point},
                                                         {"cell", TensorAssociation::cell}});
+    spec.file.step = data.optional_integer("step").value_or(-1);
     spec.file.cell_tensors =
         data.choice<CellTensors>("cell_tensors", {{"constant", CellTensors::constant}, {"averaged", CellTensors::averaged}});
     refuse_keys(data, {"bounds", "load", "poisson_ratio", "singular_radius"}, "point_load");
   } else {
     if (file) data.fail_at("file", "applies only to data.kind = \"vtk\"");
-    refuse_keys(data, {"array", "association", "cell_tensors", "field"}, "vtk");
+    refuse_keys(data, {"array", "association", "cell_tensors", "field", "step"}, "vtk");
     PointLoadSpec& load = spec.point_load;
     const std::vector<double> b = data.numbers("bounds");
     load.bounds = Box3{Vec3(b[0], b[2], b[4]), Vec3(b[1], b[3], b[5])};

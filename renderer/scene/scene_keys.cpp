@@ -121,6 +121,8 @@ std::vector<KeySchema> build_keys() {
           .length().automatic("D/1000"),
       Key("data.file", T::string, "the data file (" + readable_extensions_text() + "), relative to the scene").none("required for \"vtk\""),
       Key("data.array", T::string, "the field's array").derived("the active tensors, else the only one of 6 or 9 components"),
+      Key("data.step", T::integer, "the step of a time series (.pvd) to read, from 0").range(0, std::numeric_limits<int>::max())
+          .derived("every step, one image each"),
       Key("data.field", T::choice, "read only tensors or only vectors").choices({"auto", "tensor", "vector"}).fallback("\"auto\""),
       Key("data.association", T::choice, "point or cell data").choices({"auto", "point", "cell"}).fallback("\"auto\""),
       Key("data.cell_tensors", T::choice, "cell data constant per cell, or averaged onto the points")

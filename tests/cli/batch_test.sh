@@ -133,4 +133,24 @@ grep -q "cannot write the file" "$work/err_png" || fail "PNG: $(cat "$work/err_p
 "$hsb" --threads 1 render "$src/scenes/fig07_point_load_normalized.toml" -o "$work/t1" "${small[@]}" --quiet || fail "--threads 1"
 cmp -s "$work/t1/fig07_point_load_normalized.png" "$work/sweep/../all/fig07_point_load_normalized.png" \
   || fail "--threads 1 changed the picture"
+# --- A time series (.pvd): one image per step unless data.step names one;
+# --skip-existing renders again only the step whose file changed.
+mkdir -p "$work/series"
+cp "$src/scenes/data/cylinder_stress_coarse.vtu" "$work/series/s0.vtu"
+cp "$src/scenes/data/cylinder_stress_coarse.vtu" "$work/series/s1.vtu"
+printf '<?xml version="1.0"?>\n<VTKFile type="Collection" version="0.1">\n<Collection>\n%s\n%s\n</Collection>\n</VTKFile>\n' \
+  '<DataSet timestep="0" file="s0.vtu"/>' '<DataSet timestep="2.5" file="s1.vtu"/>' > "$work/series/shaft.pvd"
+"$hsb" render "$work/series/shaft.pvd" -o "$work/series/out" "${small[@]}" --quiet || fail "a time series"
+[[ $(ls "$work/series/out" | tr '\n' ' ') == "shaft_data.step=0.png shaft_data.step=1.png " ]] ||
+  fail "a time series made: $(ls "$work/series/out")"
+"$hsb" render "$work/series/shaft.pvd" -o "$work/series/one" "${small[@]}" --set data.step=1 --quiet || fail "data.step=1"
+[[ $(ls "$work/series/one") == shaft.png ]] || fail "data.step=1 made: $(ls "$work/series/one")"
+"$hsb" info "$work/series/shaft.pvd" | grep -q "a time series of 2 steps, at times 0 2.5" || fail "info of a series"
+printf '<!-- changed -->\n' >> "$work/series/s1.vtu"
+out=$("$hsb" render "$work/series/shaft.pvd" -o "$work/series/out" "${small[@]}" --skip-existing)
+grep -q "shaft_data.step=0.png  up to date, skipped" <<<"$out" || fail "step 0 unchanged, not skipped: $out"
+grep -q "shaft_data.step=1.png  sources=" <<<"$out" || fail "step 1 changed, not rendered: $out"
+out=$("$hsb" render "$work/series/shaft.pvd" -o "$work/series/out" "${small[@]}" --set data.step=7 2>&1)
+grep -q "shaft.pvd: data.step 7 is beyond its 2 steps (0 to 1)" <<<"$out" || fail "step 7 of 2: $out"
+
 echo PASS

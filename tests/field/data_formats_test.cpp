@@ -32,7 +32,8 @@ TEST(DataFormats, TheLongestExtensionNamesTheFormat) {
   EXPECT_EQ(format_by_extension("notes.gz"), nullptr);
   EXPECT_EQ(format_by_extension("scene.toml"), nullptr);
   EXPECT_TRUE(is_readable_data_file("a/b/c.vtk"));
-  EXPECT_FALSE(is_readable_data_file("c.pvtu"));
+  EXPECT_TRUE(is_readable_data_file("c.pvtu"));
+  EXPECT_FALSE(is_readable_data_file("c.msh"));
 }
 
 TEST(DataFormats, TheFirstBytesNameTheFormat) {

@@ -1,0 +1,378 @@
+#include "field/dataset_reading.h"
+
+#include <vtkAppendFilter.h>
+#include <vtkCell.h>
+#include <vtkCellData.h>
+#include <vtkDataSetAttributes.h>
+#include <vtkCellTypes.h>
+#include <vtkCompositeDataIterator.h>
+#include <vtkCompositeDataSet.h>
+#include <vtkDataSetReader.h>
+#include <vtkGenericCell.h>
+#include <vtkIdList.h>
+#include <vtkMergePoints.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLDataElement.h>
+#include <vtkXMLDataParser.h>
+#include <vtkXMLGenericDataObjectReader.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "field/child_process.h"
+#include "field/data_error.h"
+#include "field/data_formats.h"
+#include "field/input_file.h"
+#include "field/vtk_data.h"
+
+namespace hsb {
+namespace {
+
+double trial_base_seconds = 30.0;
+
+// A file of random bytes, or of another format, gets a clear message
+// before VTK sees it: legacy files start with their version line, XML
+// files with "<?xml" or "<VTKFile"; a file of another known format under a
+// VTK name is said as what it is.
+void check_header(const std::string& path, const DataFormat& format) {
+  if (const DataFormat* content = format_by_content(path); content && content != &format &&
+                                                             content->reader != format.reader)
+    throw DataError(unreadable_format_message(path));
+  std::ifstream in(path, std::ios::binary);
+  std::string head(256, '\0');
+  in.read(head.data(), std::streamsize(head.size()));
+  head.resize(std::size_t(in.gcount()));
+  if (format.reader == VtkReaderKind::legacy) {
+    if (head.rfind("# vtk DataFile Version", 0) != 0)
+      throw DataError(path + ": not a legacy VTK file: its first line is not \"# vtk DataFile Version x.y\"");
+    return;
+  }
+  std::size_t start = head.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;  // a UTF-8 byte-order mark
+  start = head.find_first_not_of(" \t\r\n", start);
+  if (start == std::string::npos || (head.compare(start, 5, "<?xml") != 0 && head.compare(start, 8, "<VTKFile") != 0))
+    throw DataError(path + ": not a VTK XML file: it does not start with \"<?xml\" or \"<VTKFile\"");
+}
+
+// VTK's cells index their points by their type's count: a hexahedron
+// listed with three points, or a biquadratic wedge with eight, is read past
+// its end by every filter. So every cell must have its type's count (VTK's
+// own, from an instance of the type), or at least the minimum for the
+// types of any size; higher-order Lagrange and Bezier cells and polyhedra,
+// whose layout lives in further arrays, are refused.
+void check_cell_sizes(vtkUnstructuredGrid* grid, const std::string& path) {
+  vtkCellArray* cells = grid->GetCells();
+  if (!cells) return;
+  const vtkIdType count = grid->GetNumberOfCells();
+  if (cells->GetNumberOfCells() != count || (count > 0 && !grid->GetCellTypesArray()))
+    throw DataError(path + ": the cell list and the cell types disagree on the number of cells");
+  std::map<int, vtkIdType> required;  // by type: the exact count, or −(the least) for any size
+  for (vtkIdType i = 0; i < count; ++i) {
+    const int type = grid->GetCellType(i);
+    auto known = required.find(type);
+    if (known == required.end()) {
+      const vtkSmartPointer<vtkCell> cell = vtkSmartPointer<vtkCell>::Take(vtkGenericCell::InstantiateCell(type));
+      std::ostringstream message;
+      if (!cell) {
+        message << path << ": cell " << i << " has type " << type << ", which is no VTK cell type";
+        throw DataError(message.str());
+      }
+      if (type == VTK_POLYHEDRON || (type >= VTK_LAGRANGE_CURVE && type <= VTK_BEZIER_WEDGE)) {
+        message << path << ": cell " << i << " is a " << cell->GetClassName()
+                << "; only linear and quadratic cells are supported (VTK's Tessellator filter turns others into them)";
+        throw DataError(message.str());
+      }
+      const vtkIdType fixed = cell->GetNumberOfPoints();
+      vtkIdType least = 1;
+      if (type == VTK_POLY_LINE) least = 2;
+      if (type == VTK_POLYGON || type == VTK_TRIANGLE_STRIP || type == VTK_QUADRATIC_POLYGON) least = 3;
+      if (type == VTK_CONVEX_POINT_SET) least = 4;
+      known = required.emplace(type, fixed > 0 ? fixed : -least).first;
+    }
+    const vtkIdType size = cells->GetCellSize(i);
+    const vtkIdType need = known->second;
+    if (need > 0 ? size != need : size < -need) {
+      std::ostringstream message;
+      message << path << ": cell " << i << " is a " << vtkCellTypes::GetClassNameFromTypeId(type) << " with " << size
+              << " points; it needs " << (need > 0 ? "" : "at least ") << std::abs(need);
+      throw DataError(message.str());
+    }
+  }
+}
+
+// What no reader checks but everything after relies on: finite point
+// coordinates, cells that name existing points, and some volume to sample.
+void check_dataset(vtkDataSet* data, const std::string& path) {
+  const vtkIdType points = data->GetNumberOfPoints();
+  for (vtkIdType i = 0; i < points; ++i) {
+    double p[3];
+    data->GetPoint(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {
+      std::ostringstream message;
+      message << path << ": point " << i << " has a non-finite coordinate (" << p[0] << ", " << p[1] << ", " << p[2]
+              << ")";
+      throw DataError(message.str());
+    }
+  }
+  if (auto* grid = vtkUnstructuredGrid::SafeDownCast(data)) {
+    check_cell_sizes(grid, path);
+    vtkDataArray* connectivity = grid->GetCells() ? grid->GetCells()->GetConnectivityArray() : nullptr;
+    if (connectivity && connectivity->GetNumberOfTuples() > 0) {
+      double range[2];
+      connectivity->GetRange(range, 0);
+      if (range[0] < 0.0 || range[1] >= double(points)) {
+        std::ostringstream message;
+        message << path << ": a cell names point " << (range[0] < 0.0 ? range[0] : range[1]) << ", but the points are 0 to "
+                << points - 1;
+        throw DataError(message.str());
+      }
+    }
+  }
+  const vtkIdType cells = data->GetNumberOfCells();
+  if (cells == 0) throw DataError(path + ": the data set has no cells: there is no volume to sample tensors in");
+  // One cell with volume is enough: degenerate cells among good ones are
+  // legal (no point lies inside them). Tetrahedra from VTK's own
+  // triangulation of each 3D cell.
+  double bounds[6];
+  data->GetBounds(bounds);
+  const double diagonal = std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]);
+  const double tiny = 1e-12 * diagonal * diagonal * diagonal;
+  auto ids = vtkSmartPointer<vtkIdList>::New();
+  auto corners = vtkSmartPointer<vtkPoints>::New();
+  vtkIdType three_d = 0;
+  for (vtkIdType i = 0; i < cells; ++i) {
+    vtkCell* cell = data->GetCell(i);
+    if (cell->GetCellDimension() != 3) continue;
+    ++three_d;
+    if (!cell->Triangulate(0, ids, corners)) continue;
+    for (vtkIdType t = 0; t + 3 < corners->GetNumberOfPoints(); t += 4) {
+      double a[3], b[3], c[3], d[3];
+      corners->GetPoint(t, a), corners->GetPoint(t + 1, b), corners->GetPoint(t + 2, c), corners->GetPoint(t + 3, d);
+      const Vec3 pa(a[0], a[1], a[2]);
+      const double volume = std::fabs((Vec3(b[0], b[1], b[2]) - pa).dot(
+                                (Vec3(c[0], c[1], c[2]) - pa).cross(Vec3(d[0], d[1], d[2]) - pa))) / 6.0;
+      if (volume > tiny) return;
+    }
+  }
+  std::ostringstream message;
+  message << path << ": none of its " << cells << " cells has any volume ("
+          << (three_d ? std::to_string(three_d) + " are 3D cells, all flat" : std::string("none is a 3D cell"))
+          << "): tensors are sampled inside 3D cells";
+  throw DataError(message.str());
+}
+
+// Pieces (.pvtu) and blocks (.vtm) as one unstructured grid, their ghost
+// cells left out. Arrays that not every block has are dropped (VTK's
+// append keeps the common ones).
+vtkSmartPointer<vtkDataSet> merged(vtkDataObject* read, const std::string& path) {
+  auto append = vtkSmartPointer<vtkAppendFilter>::New();
+  int blocks = 0;
+  const auto add = [&](vtkDataSet* block) {
+    if (!block || block->GetNumberOfCells() == 0) return;
+    // Ghost cells are a piece's copies of its neighbours' cells, for the
+    // parallel filters that wrote it: here they would be cells twice over.
+    auto* grid = vtkUnstructuredGrid::SafeDownCast(block);
+    if (grid && grid->GetCellGhostArray()) {
+      auto copy = vtkSmartPointer<vtkUnstructuredGrid>::New();
+      copy->DeepCopy(grid);
+      copy->RemoveGhostCells();
+      copy->GetCellData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
+      append->AddInputData(copy);
+    } else {
+      append->AddInputData(block);
+    }
+    ++blocks;
+  };
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(read)) {
+    vtkSmartPointer<vtkCompositeDataIterator> it = vtkSmartPointer<vtkCompositeDataIterator>::Take(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem()) add(vtkDataSet::SafeDownCast(it->GetCurrentDataObject()));
+  } else {
+    add(vtkDataSet::SafeDownCast(read));
+  }
+  if (blocks == 0) throw DataError(path + ": none of its blocks holds a data set with cells");
+  update_safely(append, path, "merging of pieces");
+  return vtkDataSet::SafeDownCast(append->GetOutputDataObject(0));
+}
+
+// `grid` with the points at the same place joined into one, as pieces
+// share them: otherwise each piece's faces at its neighbours read as the
+// body's boundary, and a trajectory stops at them. The cells must name
+// existing points (check_dataset).
+vtkSmartPointer<vtkUnstructuredGrid> joined(vtkUnstructuredGrid* grid) {
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  auto locator = vtkSmartPointer<vtkMergePoints>::New();
+  locator->InitPointInsertion(points, grid->GetBounds(), grid->GetNumberOfPoints());
+  auto out = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  out->GetPointData()->CopyAllocate(grid->GetPointData(), grid->GetNumberOfPoints());
+  std::vector<vtkIdType> to(std::size_t(grid->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) {
+    vtkIdType id = 0;
+    if (locator->InsertUniquePoint(grid->GetPoint(i), id)) out->GetPointData()->CopyData(grid->GetPointData(), i, id);
+    to[std::size_t(i)] = id;
+  }
+  out->SetPoints(points);
+  out->Allocate(grid->GetNumberOfCells());
+  auto ids = vtkSmartPointer<vtkIdList>::New();
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
+    grid->GetCellPoints(c, ids);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k) ids->SetId(k, to[std::size_t(ids->GetId(k))]);
+    out->InsertNextCell(grid->GetCellType(c), ids);
+  }
+  out->GetCellData()->ShallowCopy(grid->GetCellData());
+  out->GetFieldData()->ShallowCopy(grid->GetFieldData());
+  return out;
+}
+
+// A time series' data sets: (time, file) in the order of time.
+std::vector<std::pair<double, std::string>> series_files(const std::string& path) {
+  auto parser = vtkSmartPointer<vtkXMLDataParser>::New();
+  parser->SetFileName(path.c_str());
+  vtkXMLDataElement* collection = parser->Parse() ? parser->GetRootElement() : nullptr;
+  if (collection) collection = collection->FindNestedElementWithName("Collection");
+  if (!collection) throw DataError(path + ": not a ParaView time series: no <Collection> in its <VTKFile>");
+  std::vector<std::pair<double, std::string>> steps;
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  for (int i = 0; i < collection->GetNumberOfNestedElements(); ++i) {
+    vtkXMLDataElement* data_set = collection->GetNestedElement(i);
+    const char* file = data_set->GetAttribute("file");
+    if (std::string(data_set->GetName()) != "DataSet" || !file) continue;
+    double time = double(steps.size());
+    data_set->GetScalarAttribute("timestep", time);
+    // Parts of one step beyond the first are not read: a series of one
+    // part each is what ParaView writes for a single data set.
+    if (const char* part = data_set->GetAttribute("part"); part && std::string(part) != "0") continue;
+    const std::filesystem::path p(file);
+    steps.emplace_back(time, (p.is_absolute() ? p : folder / p).lexically_normal().string());
+  }
+  std::stable_sort(steps.begin(), steps.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  if (steps.empty()) throw DataError(path + ": its <Collection> lists no <DataSet file=...>");
+  return steps;
+}
+
+// The one data set the file at `path` holds, before any check.
+vtkSmartPointer<vtkDataSet> read_one(const std::string& path, const VtkSession& vtk) {
+  const DataFormat* format = format_by_extension(path);
+  if (!format || !format->readable()) throw DataError(unreadable_format_message(path));
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (format->reader == VtkReaderKind::legacy) {
+    auto legacy = vtkSmartPointer<vtkDataSetReader>::New();
+    legacy->SetFileName(path.c_str());
+    legacy->ReadAllTensorsOn();
+    legacy->ReadAllScalarsOn();
+    legacy->ReadAllVectorsOn();
+    legacy->ReadAllFieldsOn();
+    reader = legacy;
+  } else {
+    auto xml = vtkSmartPointer<vtkXMLGenericDataObjectReader>::New();
+    xml->SetFileName(path.c_str());
+    reader = xml;
+  }
+  check_header(path, *format);
+  update_safely(reader, path, "reader");
+  vtkDataObject* read = reader->GetOutputDataObject(0);
+  // A reader's warning is a file it could not read as declared (a
+  // truncated array reads as garbage, with only a warning): an error here.
+  const auto complaint = [&] {
+    std::string error = vtk.first_error();
+    return error.empty() ? vtk.first_warning() : error;
+  };
+  if (const std::string error = complaint(); !error.empty())
+    throw DataError(path + ": cannot read it as a VTK data set: " + error);
+  vtkSmartPointer<vtkDataSet> data =
+      format->reader == VtkReaderKind::xml_pieces ? merged(read, path)
+                                                  : vtkSmartPointer<vtkDataSet>(vtkDataSet::SafeDownCast(read));
+  if (const std::string error = complaint(); !error.empty() || !data || data->GetNumberOfPoints() == 0)
+    throw DataError(path + ": cannot read it as a VTK data set: " + (error.empty() ? "no points in it" : error));
+  return data;
+}
+
+// The files that `element` and the elements in it name (a piece's Source,
+// a block's or a step's file), relative to `folder`.
+void named_files(vtkXMLDataElement* element, const std::filesystem::path& folder, std::vector<std::string>& out) {
+  for (const char* attribute : {"Source", "file"})
+    if (const char* file = element->GetAttribute(attribute)) {
+      const std::filesystem::path p(file);
+      out.push_back((p.is_absolute() ? p : folder / p).lexically_normal().string());
+    }
+  for (int i = 0; i < element->GetNumberOfNestedElements(); ++i) named_files(element->GetNestedElement(i), folder, out);
+}
+
+}  // namespace
+
+std::vector<std::string> data_files_read(const std::string& path, int step) {
+  const DataFormat* format = format_by_extension(path);
+  if (format && format->reader == VtkReaderKind::series) {
+    std::vector<std::string> files{path};
+    const VtkSession vtk;
+    const std::vector<std::pair<double, std::string>> steps = series_files(path);
+    if (std::size_t(std::max(step, 0)) < steps.size()) {
+      const std::vector<std::string> inner = data_files_read(steps[std::size_t(std::max(step, 0))].second, -1);
+      files.insert(files.end(), inner.begin(), inner.end());
+    }
+    return files;
+  }
+  std::vector<std::string> files{path};
+  if (format && format->reader == VtkReaderKind::xml_pieces) {
+    const VtkSession vtk;
+    auto parser = vtkSmartPointer<vtkXMLDataParser>::New();
+    parser->SetFileName(path.c_str());
+    if (parser->Parse() && parser->GetRootElement())
+      named_files(parser->GetRootElement(), std::filesystem::path(path).parent_path(), files);
+  }
+  return files;
+}
+
+// A generous time: a few seconds more than a read should take, however
+// large the file. The data fuzzer found the crashes and a hang.
+void update_safely(vtkAlgorithm* algorithm, const std::string& path, const char* what) {
+  const double seconds = trial_base_seconds + double(std::filesystem::file_size(path)) * 1e-6;
+  const ChildResult trial = run_in_child([&] { algorithm->Update(); }, seconds);
+  if (trial.outcome == ChildOutcome::crashed)
+    throw DataError(path + ": the file is corrupt: VTK's " + what + " crashed on it" +
+                    (trial.signal ? " (signal " + std::to_string(trial.signal) + ")" : std::string()));
+  if (trial.outcome == ChildOutcome::timed_out)
+    throw DataError(path + ": the file is corrupt: VTK's " + what + " did not finish it in " +
+                    std::to_string(int(seconds)) + " s");
+  algorithm->Update();
+}
+
+
+void set_trial_read_seconds(double seconds) { trial_base_seconds = seconds; }
+
+std::vector<double> series_times(const std::string& path) {
+  const DataFormat* format = format_by_extension(path);
+  if (!format || format->reader != VtkReaderKind::series) return {};
+  const VtkSession vtk;
+  std::vector<double> times;
+  for (const auto& [time, file] : series_files(path)) times.push_back(time);
+  return times;
+}
+
+vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSession& vtk, int step) {
+  if (const std::string why = unreadable_input(path); !why.empty()) throw DataError(path + ": " + why);
+  const DataFormat* format = format_by_extension(path);
+  if (format && format->reader == VtkReaderKind::series) {
+    const std::vector<std::pair<double, std::string>> steps = series_files(path);
+    if (step >= int(steps.size()))
+      throw DataError(path + ": data.step " + std::to_string(step) + " is beyond its " + std::to_string(steps.size()) +
+                      " steps (0 to " + std::to_string(steps.size() - 1) + ")");
+    const std::string& file = steps[std::size_t(std::max(step, 0))].second;
+    const DataFormat* inner = format_by_extension(file);
+    if (inner && inner->reader == VtkReaderKind::series)
+      throw DataError(path + ": its step names another series, " + file);
+    return read_dataset(file, vtk, -1);
+  }
+  if (step > 0) throw DataError(path + ": data.step applies only to a time series (.pvd)");
+  vtkSmartPointer<vtkDataSet> data = read_one(path, vtk);
+  check_dataset(data, path);
+  if (format->reader == VtkReaderKind::xml_pieces) data = joined(vtkUnstructuredGrid::SafeDownCast(data));
+  return data;
+}
+
+}  // namespace hsb

@@ -1,0 +1,179 @@
+// Data split over several files, as parallel and multiblock writers and
+// time series leave it: pieces and blocks read as one body, a series at
+// the step asked for.
+
+#include <gtest/gtest.h>
+
+#include <vtkDataSetTriangleFilter.h>
+#include <vtkCellData.h>
+#include <vtkDataSetAttributes.h>
+#include <vtkDoubleArray.h>
+#include <vtkImageData.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLMultiBlockDataWriter.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include <fstream>
+
+#include "field/data_error.h"
+#include "field/vtk_data.h"
+#include "tests/temp_dir.h"
+
+namespace hsb {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Six different affine components: linear tetrahedra reproduce it exactly.
+Sym3 linear_tensor(const Vec3& x, double scale = 1.0) {
+  return Sym3{scale * (1 + 2 * x.x() - x.y()), 3 - x.z(), 0.5 + x.x() + x.y() + x.z(),
+              0.25 * x.x(), -x.y() + 2 * x.z(), 1 - 0.5 * x.x()};
+}
+
+// Tetrahedra filling [x0, x0 + 0.25 (nx - 1)] × [0, 1] × [0, 1] ([0, 2]
+// by default), with point tensors "stress".
+vtkSmartPointer<vtkUnstructuredGrid> tet_body(double scale = 1.0, double x0 = 0.0, int nx = 9) {
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetOrigin(x0, 0, 0);
+  image->SetDimensions(nx, 5, 5);
+  image->SetSpacing(0.25, 0.25, 0.25);
+  auto split = vtkSmartPointer<vtkDataSetTriangleFilter>::New();
+  split->SetInputData(image);
+  split->Update();
+  vtkSmartPointer<vtkUnstructuredGrid> grid = split->GetOutput();
+  auto stress = vtkSmartPointer<vtkDoubleArray>::New();
+  stress->SetName("stress");
+  stress->SetNumberOfComponents(6);
+  stress->SetNumberOfTuples(grid->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) {
+    double p[3];
+    grid->GetPoint(i, p);
+    const Sym3 s = linear_tensor(Vec3(p[0], p[1], p[2]), scale);
+    const double t[6] = {s.xx, s.yy, s.zz, s.xy, s.yz, s.xz};
+    stress->SetTuple(i, t);
+  }
+  grid->GetPointData()->SetTensors(stress);
+  return grid;
+}
+
+std::string write_vtu(vtkUnstructuredGrid* grid, const std::string& name) {
+  const std::string path = (test_temp_dir("composite") / name).string();
+  auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
+  writer->SetInputData(grid);
+  writer->SetFileName(path.c_str());
+  writer->Write();
+  return path;
+}
+
+void expect_linear_field(const VtkData& data, double scale = 1.0) {
+  ASSERT_TRUE(data.field);
+  for (const Vec3& p : {Vec3(0.3, 0.4, 0.6), Vec3(1.7, 0.2, 0.9), Vec3(1.0, 0.5, 0.5)}) {
+    const std::optional<Sym3> s = data.field->sample(p);
+    ASSERT_TRUE(s) << p.transpose();
+    EXPECT_LT((s->matrix() - linear_tensor(p, scale).matrix()).norm(), 1e-9) << p.transpose();
+  }
+}
+
+// What a parallel run leaves: each process's piece, the second with a
+// layer of ghost cells copied from the first, and the .pvtu naming them.
+TEST(CompositeData, ParallelPiecesReadAsOneBodyWithoutInnerFaces) {
+  const std::string whole = write_vtu(tet_body(), "whole.vtu");
+  const auto ghost_array = [](vtkIdType cells) {
+    auto ghosts = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+    ghosts->SetNumberOfTuples(cells);
+    ghosts->FillValue(0);
+    return ghosts;
+  };
+  const vtkSmartPointer<vtkUnstructuredGrid> first = tet_body(1.0, 0.0, 5);  // x ∈ [0, 1]
+  first->GetCellData()->AddArray(ghost_array(first->GetNumberOfCells()));
+  write_vtu(first, "piece_0.vtu");
+  // x ∈ [0.5, 2]: an even number of cells on, so split into tetrahedra as the first piece is
+  const vtkSmartPointer<vtkUnstructuredGrid> second = tet_body(1.0, 0.5, 7);
+  const vtkSmartPointer<vtkUnsignedCharArray> ghosts = ghost_array(second->GetNumberOfCells());
+  int ghost_cells = 0;
+  for (vtkIdType c = 0; c < second->GetNumberOfCells(); ++c) {
+    double b[6];
+    second->GetCellBounds(c, b);
+    const bool ghost = b[1] <= 1.0;  // the first piece's cells
+    ghosts->SetValue(c, ghost ? vtkDataSetAttributes::DUPLICATECELL : 0);
+    ghost_cells += ghost;
+  }
+  ASSERT_GT(ghost_cells, 0);
+  second->GetCellData()->AddArray(ghosts);
+  write_vtu(second, "piece_1.vtu");
+  const std::string path = (test_temp_dir("composite") / "pieces.pvtu").string();
+  std::ofstream(path) << "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" version=\"0.1\">\n"
+                      << "<PUnstructuredGrid GhostLevel=\"1\">\n"
+                      << "<PPointData Tensors=\"stress\"><PDataArray type=\"Float64\" Name=\"stress\" "
+                         "NumberOfComponents=\"6\"/></PPointData>\n"
+                      << "<PCellData><PDataArray type=\"UInt8\" Name=\"vtkGhostType\"/></PCellData>\n"
+                      << "<PPoints><PDataArray type=\"Float32\" NumberOfComponents=\"3\"/></PPoints>\n"
+                      << "<Piece Source=\"piece_0.vtu\"/>\n<Piece Source=\"piece_1.vtu\"/>\n"
+                      << "</PUnstructuredGrid>\n</VTKFile>\n";
+
+  const VtkData pieces = load_vtk_data({path});
+  expect_linear_field(pieces);
+  // The pieces' shared points are joined: the shell is the body's outside
+  // alone, as from the one file.
+  const VtkData one = load_vtk_data({whole});
+  EXPECT_EQ(pieces.boundary.triangles.size(), one.boundary.triangles.size());
+}
+
+TEST(CompositeData, BlocksReadAsOneBody) {
+  const vtkSmartPointer<vtkUnstructuredGrid> body = tet_body();
+  auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+  blocks->SetNumberOfBlocks(2);
+  blocks->SetBlock(0, tet_body(1.0, 0.0, 5));  // x ∈ [0, 1]
+  blocks->SetBlock(1, tet_body(1.0, 1.0, 5));  // x ∈ [1, 2], sharing the plane x = 1
+  const std::string path = (test_temp_dir("composite") / "blocks.vtm").string();
+  auto writer = vtkSmartPointer<vtkXMLMultiBlockDataWriter>::New();
+  writer->SetInputData(blocks);
+  writer->SetFileName(path.c_str());
+  writer->Write();
+  const VtkData data = load_vtk_data({path});
+  expect_linear_field(data);
+  const VtkData one = load_vtk_data({write_vtu(body, "whole_for_blocks.vtu")});
+  EXPECT_EQ(data.boundary.triangles.size(), one.boundary.triangles.size());
+}
+
+TEST(CompositeData, ATimeSeriesIsReadAtTheStepAskedFor) {
+  const std::string a = write_vtu(tet_body(1.0), "series_0.vtu");
+  const std::string b = write_vtu(tet_body(5.0), "series_1.vtu");
+  const std::string path = (test_temp_dir("composite") / "series.pvd").string();
+  // Listed out of order: the series is in the order of time.
+  std::ofstream(path) << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n"
+                      << "<DataSet timestep=\"0.5\" part=\"0\" file=\"series_1.vtu\"/>\n"
+                      << "<DataSet timestep=\"0\" part=\"0\" file=\"series_0.vtu\"/>\n"
+                      << "</Collection>\n</VTKFile>\n";
+  EXPECT_EQ(series_times(path), (std::vector<double>{0.0, 0.5}));
+  EXPECT_TRUE(series_times(a).empty());
+  VtkFileSpec spec{path};
+  expect_linear_field(load_vtk_data(spec), 1.0);  // no step: the first
+  spec.step = 1;
+  expect_linear_field(load_vtk_data(spec), 5.0);
+  spec.step = 2;
+  try {
+    load_vtk_data(spec);
+    FAIL() << "step 2 of 2 read";
+  } catch (const DataError& e) {
+    EXPECT_NE(std::string(e.what()).find("data.step 2 is beyond its 2 steps (0 to 1)"), std::string::npos) << e.what();
+  }
+  spec = VtkFileSpec{b};
+  spec.step = 1;
+  EXPECT_THROW(load_vtk_data(spec), DataError);  // a single data set has no step 1
+}
+
+TEST(CompositeData, ASeriesThatIsNotOneIsSaidSo) {
+  const std::string path = (test_temp_dir("composite") / "broken.pvd").string();
+  std::ofstream(path) << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n</VTKFile>\n";
+  EXPECT_THROW(series_times(path), DataError);
+  EXPECT_THROW(load_vtk_data({path}), DataError);
+}
+
+}  // namespace
+}  // namespace hsb
