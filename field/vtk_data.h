@@ -71,6 +71,8 @@ void set_trial_read_seconds(double seconds);
 
 // The times of the steps of a time series (a .pvd), in order; none for a
 // data file of one step. Throws DataError for a series it cannot read.
+// Like data_files_read(), it opens a VTK session of its own: not to be
+// called while holding one.
 std::vector<double> series_times(const std::string& path);
 
 // Every file reading `path` (at `step` of a series) reads: itself, and a

@@ -19,7 +19,9 @@ namespace hsb {
 
 class VtkSession {
  public:
-  // VTK's reporting is global: one session at a time (others wait).
+  // VTK's reporting is global: one session at a time (others wait). So a
+  // thread that holds one must not open another, which would wait for
+  // ever: it passes its session down instead.
   VtkSession();
   ~VtkSession();
   VtkSession(const VtkSession&) = delete;
