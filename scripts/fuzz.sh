@@ -7,7 +7,9 @@
 # Builds build-sanitize/ (clang, AddressSanitizer, UndefinedBehaviorSanitizer,
 # libFuzzer) if needed. New inputs that reach new code are added to
 # tests/fuzz/corpus/<target>/ (commit the useful ones); a crash leaves its
-# input in build-sanitize/fuzz-findings/ and the run stops there.
+# input in build-sanitize/fuzz-findings/ and the run stops there; with
+# KEEP_GOING=1 it runs in libFuzzer's fork mode and goes on past crashes,
+# timeouts and running out of memory, collecting every finding.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-600}
@@ -23,6 +25,8 @@ mkdir -p build-sanitize/fuzz-findings
 export ASAN_OPTIONS=detect_leaks=0
 for t in "${targets[@]}"; do
   echo "fuzz: ${t}_fuzzer for ${seconds} s"
-  "build-sanitize/tests/fuzz/${t}_fuzzer" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 -detect_leaks=0 \
+  keep_going=()
+  [[ ${KEEP_GOING:-0} == 1 ]] && keep_going=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
+  "build-sanitize/tests/fuzz/${t}_fuzzer" "${keep_going[@]}" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 -detect_leaks=0 \
     -artifact_prefix=build-sanitize/fuzz-findings/ "tests/fuzz/corpus/$t"
 done
