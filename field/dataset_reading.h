@@ -20,10 +20,11 @@ namespace hsb {
 // DataError naming the file.
 vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSession& vtk, int step = -1);
 
-// Runs `algorithm` in a child process first: VTK's readers trust the counts
-// a file declares, and its filters the cells they are given, so a corrupt
-// file can make them read past their buffers or loop. A crash or a hang in
-// the child is one DataError naming `path` and `what` ran on it.
+// Runs `algorithm` in a child process first: VTK's filters trust the cells
+// they are given, so a degenerate mesh can make them read past their
+// buffers or loop. A crash or a hang in the child is one DataError naming
+// `path` and `what` ran on it. (Files themselves are parsed only in a
+// child: read_dataset.)
 void update_safely(vtkAlgorithm* algorithm, const std::string& path, const char* what);
 
 }  // namespace hsb
