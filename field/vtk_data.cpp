@@ -67,7 +67,69 @@ struct ChosenArray {
   bool on_points = true;
   std::string name;
   int components = 0;
+  std::string note;  // how it was chosen among others, for the user; "" when there was no choice
 };
+
+// How much an array's name says it is what a stress picture wants: the
+// rule that picks among several arrays of tensors.
+int tensor_name_rank(const std::string& name) {
+  std::string n = name;
+  std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (n.find("stress") != std::string::npos || n.find("sigma") != std::string::npos || n == "s") return 0;
+  if (n.find("strain") != std::string::npos || n.find("eps") != std::string::npos || n == "e") return 1;
+  return 2;
+}
+
+// Every array of 6 or 9 components, point data first (as `association`
+// allows), the active tensors of each ahead of the rest.
+std::vector<ChosenArray> tensor_candidates(vtkDataSet* data, TensorAssociation association) {
+  std::vector<ChosenArray> found;
+  for (const bool points : {true, false}) {
+    if ((points && association == TensorAssociation::cell) || (!points && association == TensorAssociation::point))
+      continue;
+    vtkDataSetAttributes* a = points ? data->GetPointData() : static_cast<vtkDataSetAttributes*>(data->GetCellData());
+    std::vector<vtkDataArray*> arrays;
+    if (vtkDataArray* active = a->GetTensors()) arrays.push_back(active);
+    for (int i = 0; i < a->GetNumberOfArrays(); ++i)
+      if (vtkDataArray* array = a->GetArray(i); array && array != a->GetTensors()) arrays.push_back(array);
+    for (vtkDataArray* array : arrays)
+      if (array->GetNumberOfComponents() == 6 || array->GetNumberOfComponents() == 9)
+        found.push_back({array, points, array->GetName() ? array->GetName() : "(unnamed)", array->GetNumberOfComponents(), ""});
+  }
+  return found;
+}
+
+// Among several arrays of tensors: the active tensors (point data, then
+// cell data), else the first whose name says stress, else strain, else
+// the first; with a note naming the others.
+ChosenArray pick_tensors(vtkDataSet* data, TensorAssociation association) {
+  const std::vector<ChosenArray> candidates = tensor_candidates(data, association);
+  if (candidates.empty()) return {};
+  const auto active = [&](const ChosenArray& c) {
+    return c.array == (c.on_points ? data->GetPointData()->GetTensors() : data->GetCellData()->GetTensors());
+  };
+  auto best = std::find_if(candidates.begin(), candidates.end(), active);
+  if (best == candidates.end())
+    best = std::min_element(candidates.begin(), candidates.end(), [](const ChosenArray& a, const ChosenArray& b) {
+      return tensor_name_rank(a.name) < tensor_name_rank(b.name);
+    });
+  ChosenArray chosen = *best;
+  if (candidates.size() > 1) {
+    std::string others;
+    for (const ChosenArray& c : candidates)
+      if (&c != &*best)
+        others += (others.empty() ? "\"" : ", \"") + c.name + "\" (" + std::to_string(c.components) + " components, " +
+                  (c.on_points ? "point" : "cell") + " data)";
+    chosen.note = "of " + std::to_string(candidates.size()) + " arrays of tensors, \"" + chosen.name + "\" (" +
+                  (chosen.on_points ? "point" : "cell") + " data) is drawn, " +
+                  (active(chosen) ? std::string("the active tensors")
+                   : tensor_name_rank(chosen.name) == 0 ? std::string("its name says stress")
+                   : tensor_name_rank(chosen.name) == 1 ? std::string("its name says strain (none says stress)")
+                                                        : std::string("the first (no name says stress or strain)")) +
+                  "; also in the file: " + others + ". data.array names another";
+  }
+  return chosen;
+}
 
 // The one array of `allowed` components among `attributes`' arrays; null
 // when there is none or more than one.
@@ -104,9 +166,10 @@ const char* where_looked(TensorAssociation association) {
 }
 
 // The array the field is made of. Named: that array, whose components say
-// what it is (6 or 9: tensors, 3: vectors). Not named: the active tensors,
-// else the only array of 6 or 9 components; failing both (and unless
-// tensors were asked for), the active vectors, else the only array of 3.
+// what it is (6 or 9: tensors, 3: vectors). Not named: tensors by
+// pick_tensors(); only when the file has no array of 6 or 9 components
+// (and unless tensors were asked for), the active vectors, else the only
+// array of 3, with a note that the picture is of a flow.
 ChosenArray choose_field_array(vtkDataSet* data, const VtkFileSpec& spec) {
   const TensorAssociation assoc = spec.association;
   ChosenArray chosen;
@@ -116,19 +179,23 @@ ChosenArray choose_field_array(vtkDataSet* data, const VtkFileSpec& spec) {
       throw DataError(spec.path + ": no array named \"" + spec.array + "\" (data.array)" + where_looked(assoc) + "; the file has " +
                       list_arrays(data));
   } else {
-    const auto pick = [&](bool vectors) {
+    const auto pick_vectors = [&]() {
       for (const bool points : {true, false}) {
         if ((points && assoc == TensorAssociation::cell) || (!points && assoc == TensorAssociation::point)) continue;
         vtkDataSetAttributes* a = points ? data->GetPointData() : static_cast<vtkDataSetAttributes*>(data->GetCellData());
-        vtkDataArray* found = vectors ? (a->GetVectors() ? a->GetVectors() : only_array_of(a, {3}))
-                                      : (a->GetTensors() ? a->GetTensors() : only_array_of(a, {6, 9}));
+        vtkDataArray* found = a->GetVectors() ? a->GetVectors() : only_array_of(a, {3});
         if (found) return ChosenArray{found, points, found->GetName() ? found->GetName() : "(unnamed)",
-                                      found->GetNumberOfComponents()};
+                                      found->GetNumberOfComponents(), ""};
       }
       return ChosenArray{};
     };
-    if (spec.kind != FieldKind::vector) chosen = pick(false);
-    if (!chosen.array && spec.kind != FieldKind::tensor) chosen = pick(true);
+    if (spec.kind != FieldKind::vector) chosen = pick_tensors(data, assoc);
+    if (!chosen.array && spec.kind != FieldKind::tensor) {
+      chosen = pick_vectors();
+      if (chosen.array && spec.kind == FieldKind::automatic)
+        chosen.note = "the file has no array of 6 or 9 components: its vectors \"" + chosen.name +
+                      "\" are drawn as a flow (streamballs along streamlines); data.field = \"vector\" says so";
+    }
     if (!chosen.array) {
       const std::string what = spec.kind == FieldKind::tensor ? "no active tensors and no single array of 6 or 9 components"
                                : spec.kind == FieldKind::vector
@@ -315,6 +382,7 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
   const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path, vtk, spec.step);
   VtkData out;
   ChosenArray chosen = choose_field_array(data, spec);
+  if (!chosen.note.empty()) out.warnings.push_back(spec.path + ": " + chosen.note);
   // One locator for every array of the data set (all share its cells).
   std::shared_ptr<const MeshLocator> locator;
   const auto mesh_locator = [&] {
@@ -389,6 +457,7 @@ std::string describe_vtk_file(const VtkFileSpec& spec) {
 
   const ChosenArray chosen = choose_field_array(data, spec);
   const char* where = chosen.on_points ? "point" : "cell";
+  if (!chosen.note.empty()) out << "  chosen    " << chosen.note << "\n";
   if (chosen.components == 3) {
     double lo = INFINITY, hi = 0.0;
     for (const Vec3& v : read_values<Vec3>(chosen, spec.path)) lo = std::min(lo, v.norm()), hi = std::max(hi, v.norm());

@@ -120,7 +120,8 @@ std::vector<KeySchema> build_keys() {
       Key("data.singular_radius", T::number, "within this distance of the load the field is held constant")
           .length().automatic("D/1000"),
       Key("data.file", T::string, "the data file (" + readable_extensions_text() + "), relative to the scene").none("required for \"vtk\""),
-      Key("data.array", T::string, "the field's array").derived("the active tensors, else the only one of 6 or 9 components"),
+      Key("data.array", T::string, "the field's array")
+          .derived("the active tensors, else one whose name says stress, then strain, else the first; vectors only without tensors"),
       Key("data.step", T::integer, "the step of a time series (.pvd) to read, from 0").range(0, std::numeric_limits<int>::max())
           .derived("every step, one image each"),
       Key("data.field", T::choice, "read only tensors or only vectors").choices({"auto", "tensor", "vector"}).fallback("\"auto\""),
