@@ -18,8 +18,13 @@ class MeshField final : public TensorField {
 
   Box3 bounds() const override { return tensors_.bounds(); }
   // Point data: Σ w_i T_i with the cell's interpolation weights w_i. Cell
-  // data: the containing cell's tensor. Outside every cell nothing.
-  std::optional<Sym3> sample(const Vec3& x) const override { return tensors_.sample(x); }
+  // data: the containing cell's tensor. Outside every cell nothing, nor
+  // where a tensor is NaN (no data).
+  std::optional<Sym3> sample(const Vec3& x) const override {
+    std::optional<Sym3> s = tensors_.sample(x);
+    if (s && !s->is_finite()) return std::nullopt;
+    return s;
+  }
 
  private:
   MeshArray<Sym3> tensors_;

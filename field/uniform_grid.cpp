@@ -45,9 +45,11 @@ UniformGridField::UniformGridField(const Vec3& origin, const Vec3& spacing,
                                 " tensors for " + std::to_string(dims_[0]) + "x" +
                                 std::to_string(dims_[1]) + "x" + std::to_string(dims_[2]) +
                                 " = " + std::to_string(node_count(dims_)) + " nodes");
-  // sample() promises finite tensors; interpolating finite nodes keeps that.
+  // A NaN node is no data (sample() gives nothing around it); an infinite
+  // one would make every sample near it infinite.
   for (const Sym3& v : values_) {
-    if (!v.is_finite()) throw std::invalid_argument("uniform grid: non-finite tensor value");
+    const Mat3 m = v.matrix();
+    if (m.array().isInf().any()) throw std::invalid_argument("uniform grid: infinite tensor value");
   }
 }
 
@@ -132,6 +134,8 @@ std::optional<Sym3> UniformGridField::sample(const Vec3& x) const {
                      (dk ? t[2] : 1.0 - t[2]);
     result = result + w * node(cell[0] + di, cell[1] + dj, cell[2] + dk);
   }
+  // A NaN node is no data (a masked voxel): its cells are outside.
+  if (!result.is_finite()) return std::nullopt;
   return result;
 }
 

@@ -251,8 +251,16 @@ std::vector<Sym3> read_tensors(const ChosenArray& chosen, const std::string& pat
   double worst = 0.0, worst_norm = 0.0;
   vtkIdType worst_at = -1;
   double t[9];
+  vtkIdType missing = 0;
   for (vtkIdType i = 0; i < n; ++i) {
     array->GetTuple(i, t);
+    // NaN is "no data" (outside a brain mask, a failed fit): the tensor is
+    // kept as NaN and the fields sample nothing where it counts.
+    if (std::any_of(t, t + components, [](double v) { return std::isnan(v); })) {
+      tensors[std::size_t(i)] = Sym3{NAN, NAN, NAN, NAN, NAN, NAN};
+      ++missing;
+      continue;
+    }
     for (int c = 0; c < components; ++c) {
       if (!std::isfinite(t[c])) {
         std::ostringstream message;
@@ -276,6 +284,14 @@ std::vector<Sym3> read_tensors(const ChosenArray& chosen, const std::string& pat
       worst_at = i;
       worst_norm = m.norm();
     }
+  }
+  if (missing == n)
+    throw DataError(path + ": array \"" + chosen.name + "\" holds no data: every " + item + "'s tensor is NaN");
+  if (missing > 0) {
+    std::ostringstream message;
+    message << path << ": " << missing << " of " << n << " " << item << "s have no tensor (NaN in array \""
+            << chosen.name << "\"): no data there, as outside the data set";
+    warnings.push_back(message.str());
   }
   if (worst_at >= 0) {
     std::ostringstream message;
@@ -468,8 +484,10 @@ std::string describe_vtk_file(const VtkFileSpec& spec) {
   std::vector<std::string> warnings;
   const std::vector<Sym3> tensors = read_tensors(chosen, spec.path, warnings);
   EigenvalueRange range;
-  for (const Sym3& s : tensors) range.add(s);
+  for (const Sym3& s : tensors)
+    if (s.is_finite()) range.add(s);
   out << "  tensors   \"" << chosen.name << "\" (" << chosen.components << " components, " << where << " data)\n";
+  for (const std::string& w : warnings) out << "  note      " << w.substr(w.find(": ") + 2) << "\n";
   out << range;
   for (const std::string& w : warnings) out << "  warning: " << w << "\n";
   return out.str();

@@ -156,6 +156,15 @@ fs::path write_vtu(vtkUnstructuredGrid* data, const std::string& name) {
   return path;
 }
 
+fs::path write_vti(vtkImageData* data, const std::string& name) {
+  const fs::path path = temp_dir() / name;
+  auto writer = vtkSmartPointer<vtkXMLImageDataWriter>::New();
+  writer->SetInputData(data);
+  writer->SetFileName(path.string().c_str());
+  EXPECT_EQ(writer->Write(), 1) << path;
+  return path;
+}
+
 VtkData load(const fs::path& path, const std::string& array = "", CellTensors cells = CellTensors::constant,
              TensorAssociation where = TensorAssociation::automatic) {
   return load_vtk_data({path.string(), array, where, cells});
@@ -437,17 +446,48 @@ TEST(VtkData, AsymmetricTensorsGiveTheirSymmetricPartAndOneWarning) {
   EXPECT_NEAR(loaded.field->sample(Vec3(p[0], p[1], p[2]))->xy, 1.0, 1e-12);  // (2 + 0)/2
 }
 
-TEST(VtkData, NonFiniteValueIsAnErrorNamingThePoint) {
+TEST(VtkData, AnInfiniteValueIsAnErrorNamingThePoint) {
   auto mesh = tet_mesh(1);
   add_point_tensors(mesh, linear_tensor);
-  mesh->GetPointData()->GetTensors()->SetComponent(5, 4, std::nan(""));
-  const fs::path path = write_vtu(mesh, "nan.vtu");
+  mesh->GetPointData()->GetTensors()->SetComponent(5, 4, INFINITY);
+  const fs::path path = write_vtu(mesh, "inf.vtu");
   try {
     load(path);
     FAIL() << "no error";
   } catch (const DataError& e) {
     EXPECT_EQ(std::string(e.what()),
-              path.string() + ": array \"stress\" has a non-finite value (nan) at point 5, component 4");
+              path.string() + ": array \"stress\" has a non-finite value (inf) at point 5, component 4");
+  }
+}
+
+// NaN is how diffusion tools mark the voxels outside a brain mask: no data
+// there, as outside the mesh, said once; a file of nothing else is refused.
+TEST(VtkData, NaNIsNoDataAndAllNaNIsAnError) {
+  auto img = image(4);
+  add_point_tensors(img, linear_tensor);
+  vtkDataArray* tensors = img->GetPointData()->GetTensors();
+  tensors->SetComponent(0, 4, std::nan(""));  // the corner node (0, 0, 0)
+  const VtkData loaded = load(write_vti(img, "masked.vti"));
+  ASSERT_EQ(loaded.warnings.size(), 1u);
+  EXPECT_NE(loaded.warnings[0].find("1 of " + std::to_string(img->GetNumberOfPoints()) +
+                                    " points have no tensor (NaN in array \"stress\"): no data there"),
+            std::string::npos)
+      << loaded.warnings[0];
+  double p0[3], far[3];
+  img->GetPoint(0, p0);
+  img->GetPoint(img->GetNumberOfPoints() - 1, far);
+  const Vec3 near_corner = Vec3(p0[0], p0[1], p0[2]) + 0.1 * (Vec3(far[0], far[1], far[2]) - Vec3(p0[0], p0[1], p0[2])) / 4.0;
+  EXPECT_FALSE(loaded.field->sample(near_corner)) << "the cell at the NaN node is no data";
+  const Vec3 inside = 0.5 * (Vec3(p0[0], p0[1], p0[2]) + Vec3(far[0], far[1], far[2]));
+  ASSERT_TRUE(loaded.field->sample(inside));
+  EXPECT_LT((loaded.field->sample(inside)->matrix() - linear_tensor(inside).matrix()).norm(), 1e-9);
+  for (vtkIdType i = 0; i < img->GetNumberOfPoints(); ++i) tensors->SetComponent(i, 0, std::nan(""));
+  const fs::path all = write_vti(img, "all_nan.vti");
+  try {
+    load(all);
+    FAIL() << "an all-NaN file loaded";
+  } catch (const DataError& e) {
+    EXPECT_EQ(std::string(e.what()), all.string() + ": array \"stress\" holds no data: every point's tensor is NaN");
   }
 }
 
