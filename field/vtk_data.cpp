@@ -33,6 +33,7 @@
 #include "field/child_process.h"
 #include "field/data_error.h"
 #include "field/eigenvalue_range.h"
+#include "field/component_order.h"
 #include "field/dataset_reading.h"
 #include "field/input_file.h"
 #include "field/mesh_field.h"
@@ -114,13 +115,18 @@ ChosenArray pick_tensors(vtkDataSet* data, TensorAssociation association) {
       return tensor_name_rank(a.name) < tensor_name_rank(b.name);
     });
   ChosenArray chosen = *best;
-  if (candidates.size() > 1) {
-    std::string others;
-    for (const ChosenArray& c : candidates)
-      if (&c != &*best)
-        others += (others.empty() ? "\"" : ", \"") + c.name + "\" (" + std::to_string(c.components) + " components, " +
-                  (c.on_points ? "point" : "cell") + " data)";
-    chosen.note = "of " + std::to_string(candidates.size()) + " arrays of tensors, \"" + chosen.name + "\" (" +
+  // The same quantity at the cells as well as at the points is no choice
+  // worth a word: point data is drawn (interpolated, not piecewise).
+  std::string others;
+  int named = 1;
+  for (const ChosenArray& c : candidates)
+    if (c.name != chosen.name) {
+      others += (others.empty() ? "\"" : ", \"") + c.name + "\" (" + std::to_string(c.components) + " components, " +
+                (c.on_points ? "point" : "cell") + " data)";
+      ++named;
+    }
+  if (!others.empty()) {
+    chosen.note = "of " + std::to_string(named) + " arrays of tensors, \"" + chosen.name + "\" (" +
                   (chosen.on_points ? "point" : "cell") + " data) is drawn, " +
                   (active(chosen) ? std::string("the active tensors")
                    : tensor_name_rank(chosen.name) == 0 ? std::string("its name says stress")
@@ -215,6 +221,13 @@ ChosenArray choose_field_array(vtkDataSet* data, const VtkFileSpec& spec) {
   return chosen;
 }
 
+// The order the scene says the six components come in.
+const ComponentOrder& order_of(const VtkFileSpec& spec) {
+  const ComponentOrder* order = component_order(spec.components);
+  if (!order) throw DataError(spec.path + ": no component order \"" + spec.components + "\" (data.components)");
+  return *order;
+}
+
 // The values of a vector or scalar array, checked for finiteness.
 template <class T>
 std::vector<T> read_values(const ChosenArray& chosen, const std::string& path) {
@@ -241,7 +254,7 @@ std::vector<T> read_values(const ChosenArray& chosen, const std::string& path) {
 
 // Tensors of `array`, checked for finiteness, symmetrised when given as 9
 // components (with one warning for the largest asymmetry found).
-std::vector<Sym3> read_tensors(const ChosenArray& chosen, const std::string& path,
+std::vector<Sym3> read_tensors(const ChosenArray& chosen, const std::string& path, const ComponentOrder& order,
                                std::vector<std::string>& warnings) {
   vtkDataArray* array = chosen.array;
   const char* item = chosen.on_points ? "point" : "cell";
@@ -271,7 +284,7 @@ std::vector<Sym3> read_tensors(const ChosenArray& chosen, const std::string& pat
     }
     Sym3& s = tensors[std::size_t(i)];
     if (components == 6) {
-      s = Sym3{t[0], t[1], t[2], t[3], t[4], t[5]};
+      s = tensor_in_order(t, order);
       continue;
     }
     // Row- or column-major does not matter: the symmetric part is the same.
@@ -410,13 +423,13 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
                                                     chosen.on_points ? ValueLocation::points : ValueLocation::cells);
   } else {
     vtkSmartPointer<vtkDataSet> averaged;
-    std::vector<Sym3> tensors = read_tensors(chosen, spec.path, out.warnings);
+    std::vector<Sym3> tensors = read_tensors(chosen, spec.path, order_of(spec), out.warnings);
     if (!chosen.on_points && spec.cell_tensors == CellTensors::averaged) {
       // The checks and warnings above name cells, which the user can find;
       // the averaged copy would only repeat them for points.
       chosen = averaged_onto_points(data, chosen, spec.path, averaged);
       std::vector<std::string> repeated;
-      tensors = read_tensors(chosen, spec.path, repeated);
+      tensors = read_tensors(chosen, spec.path, order_of(spec), repeated);
     }
     if (chosen.on_points && is_image_volume(data)) {
       auto* image = vtkImageData::SafeDownCast(data);
@@ -482,11 +495,15 @@ std::string describe_vtk_file(const VtkFileSpec& spec) {
     return out.str();
   }
   std::vector<std::string> warnings;
-  const std::vector<Sym3> tensors = read_tensors(chosen, spec.path, warnings);
+  const std::vector<Sym3> tensors = read_tensors(chosen, spec.path, order_of(spec), warnings);
   EigenvalueRange range;
   for (const Sym3& s : tensors)
     if (s.is_finite()) range.add(s);
   out << "  tensors   \"" << chosen.name << "\" (" << chosen.components << " components, " << where << " data)\n";
+  if (chosen.components == 6) {
+    const ComponentOrder& order = order_of(spec);
+    out << "  order     " << order.layout << " (data.components = \"" << order.name << "\": " << order.tools << ")\n";
+  }
   for (const std::string& w : warnings) out << "  note      " << w.substr(w.find(": ") + 2) << "\n";
   out << range;
   for (const std::string& w : warnings) out << "  warning: " << w << "\n";

@@ -42,6 +42,7 @@ struct VtkFileSpec {
   FieldKind kind = FieldKind::automatic;
   std::string color_array;  // a scalar array to colour by; "" = none
   int step = -1;            // of a time series: the step's index (-1: the first)
+  std::string components = "vtk";  // the order of 6 components (field/component_order.h)
 };
 
 struct VtkData {

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "field/component_order.h"
 #include "field/data_formats.h"
 #include "field/input_file.h"
 #include "renderer/image/colormap.h"
@@ -80,12 +81,15 @@ void read_data(TableReader& data, DataSpec& spec, const std::string& base_dir) {
                                                         {"point", TensorAssociation::point},
                                                         {"cell", TensorAssociation::cell}});
     spec.file.step = data.optional_integer("step").value_or(-1);
+    std::vector<std::pair<std::string, std::string>> orders;
+    for (const ComponentOrder& o : component_orders()) orders.emplace_back(o.name, o.name);
+    spec.file.components = data.choice<std::string>("components", orders);
     spec.file.cell_tensors =
         data.choice<CellTensors>("cell_tensors", {{"constant", CellTensors::constant}, {"averaged", CellTensors::averaged}});
     refuse_keys(data, {"bounds", "load", "poisson_ratio", "singular_radius"}, "point_load");
   } else {
     if (file) data.fail_at("file", "applies only to data.kind = \"vtk\"");
-    refuse_keys(data, {"array", "association", "cell_tensors", "field", "step"}, "vtk");
+    refuse_keys(data, {"array", "association", "cell_tensors", "components", "field", "step"}, "vtk");
     PointLoadSpec& load = spec.point_load;
     const std::vector<double> b = data.numbers("bounds");
     load.bounds = Box3{Vec3(b[0], b[2], b[4]), Vec3(b[1], b[3], b[5])};

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "field/component_order.h"
 #include "field/data_formats.h"
 #include "field/glyph_mapping.h"
 #include "renderer/image/colormap.h"
@@ -78,6 +79,12 @@ std::vector<std::string> kernel_names() {
   return names;
 }
 
+std::vector<std::string> component_order_names() {
+  std::vector<std::string> names;
+  for (const ComponentOrder& o : component_orders()) names.push_back(o.name);
+  return names;
+}
+
 std::vector<std::string> view_choices() {
   std::vector<std::string> names;
   for (const char* const* n = view_names(); *n; ++n) names.emplace_back(*n);
@@ -124,6 +131,8 @@ std::vector<KeySchema> build_keys() {
           .derived("the active tensors, else one whose name says stress, then strain, else the first; vectors only without tensors"),
       Key("data.step", T::integer, "the step of a time series (.pvd) to read, from 0").range(0, std::numeric_limits<int>::max())
           .derived("every step, one image each"),
+      Key("data.components", T::choice, "the order of a 6-component array's tensor components")
+          .choices(component_order_names()).fallback("\"vtk\""),
       Key("data.field", T::choice, "read only tensors or only vectors").choices({"auto", "tensor", "vector"}).fallback("\"auto\""),
       Key("data.association", T::choice, "point or cell data").choices({"auto", "point", "cell"}).fallback("\"auto\""),
       Key("data.cell_tensors", T::choice, "cell data constant per cell, or averaged onto the points")

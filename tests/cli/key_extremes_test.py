@@ -37,7 +37,7 @@ with open(CURVE, "w", encoding="utf-8") as f:
     f.write('[glyphs]\nplacement = "curve"\n[glyphs.curve]\nkind = "helix"\ncount = 12\n')
 PANELS = os.path.join(SOURCE, "scenes", "fig02_blending_along_a_curve.toml")
 DATA = os.path.join(SOURCE, "scenes", "data", "generated", "beam_bending.vtu")
-VTK_KEYS = ("data.file", "data.array", "data.field", "data.association", "data.cell_tensors", "data.step")
+VTK_KEYS = ("data.file", "data.array", "data.field", "data.association", "data.cell_tensors", "data.step", "data.components")
 # Keys of arrays of tables: written into a scene file, not --set.
 IN_FILE = {"seeds.grid.": "[[seeds.grid]]\n", "panel.": "[[panel]]\n"}
 

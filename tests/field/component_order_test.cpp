@@ -1,0 +1,73 @@
+// Six components in each order real tools write: read with its preset,
+// a tensor of six distinct entries comes back whole; read with another
+// layout's preset, it does not.
+
+#include <gtest/gtest.h>
+
+#include <vtkDoubleArray.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+#include <vtkXMLImageDataWriter.h>
+
+#include "field/component_order.h"
+#include "field/vtk_data.h"
+#include "tests/temp_dir.h"
+
+namespace hsb {
+namespace {
+
+const Sym3 distinct{1.0, 2.0, 3.0, 4.0, 5.0, 6.0};  // xx, yy, zz, xy, yz, xz
+
+// A 3×3×3 image whose array "t" holds `distinct` laid out as `order` says.
+std::string written_in(const ComponentOrder& order) {
+  auto img = vtkSmartPointer<vtkImageData>::New();
+  img->SetDimensions(3, 3, 3);
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName("t");
+  a->SetNumberOfComponents(6);
+  a->SetNumberOfTuples(img->GetNumberOfPoints());
+  const Mat3 m = distinct.matrix();
+  for (vtkIdType p = 0; p < img->GetNumberOfPoints(); ++p)
+    for (int k = 0; k < 6; ++k) a->SetComponent(p, k, m(order.entries[std::size_t(k)][0], order.entries[std::size_t(k)][1]));
+  img->GetPointData()->SetTensors(a);
+  const std::string path = (test_temp_dir("component_order") / (order.name + ".vti")).string();
+  auto writer = vtkSmartPointer<vtkXMLImageDataWriter>::New();
+  writer->SetInputData(img);
+  writer->SetFileName(path.c_str());
+  writer->Write();
+  return path;
+}
+
+Sym3 read(const std::string& path, const std::string& components) {
+  VtkFileSpec spec{path};
+  spec.components = components;
+  return *load_vtk_data(spec).field->sample(Vec3(1, 1, 1));
+}
+
+TEST(ComponentOrder, EachPresetReadsItsOwnLayoutAndNoOther) {
+  ASSERT_GE(component_orders().size(), 5u);
+  for (const ComponentOrder& order : component_orders()) {
+    const std::string path = written_in(order);
+    EXPECT_EQ((read(path, order.name).matrix() - distinct.matrix()).norm(), 0.0) << order.name;
+    for (const ComponentOrder& other : component_orders())
+      if (other.layout != order.layout)
+        EXPECT_GT((read(path, other.name).matrix() - distinct.matrix()).norm(), 1.0)
+            << order.name << " read as " << other.name;
+  }
+}
+
+TEST(ComponentOrder, TheLayoutsSayWhatTheEntriesAre) {
+  // The words agree with the entries: "XY" is (0, 1), and so on.
+  const char* axis = "XYZ";
+  for (const ComponentOrder& order : component_orders()) {
+    std::string words;
+    for (const auto& [i, j] : order.entries) words += std::string(words.empty() ? "" : " ") + axis[i] + axis[j];
+    EXPECT_EQ(words, order.layout) << order.name;
+  }
+  EXPECT_EQ(component_order("sfepy")->layout, "XX YY ZZ XY XZ YZ");
+  EXPECT_EQ(component_order("nosuch"), nullptr);
+}
+
+}  // namespace
+}  // namespace hsb
