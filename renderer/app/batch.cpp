@@ -6,6 +6,7 @@
 #include <cctype>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
@@ -31,47 +32,46 @@ std::string place(const std::string& scene, const toml::node& node) {
   return scene + ":" + std::to_string(node.source().begin.line) + ":" + std::to_string(node.source().begin.column);
 }
 
-std::vector<SceneSweep> scene_sweeps(const std::string& scene) {
-  std::vector<SceneSweep> out;
-  // A FIFO would block the read; anything unreadable is reported when
-  // the scene is rendered.
-  if (is_data_file(scene) || !unreadable_input(scene).empty()) return out;
+// The scene file's TOML, read once for the batch; none for data files and
+// scenes that cannot be read or parsed (a FIFO would block the read):
+// those are reported, with their line and column, when they render.
+std::optional<toml::table> scene_root(const std::string& scene) {
+  if (is_data_file(scene) || !unreadable_input(scene).empty()) return std::nullopt;
   try {
-    const toml::table root = toml::parse_file(scene);
-    // "glyphs.spacing" = [...] and [sweep.glyphs] spacing = [...] say the same.
-    if (const toml::table* sweep = root["sweep"].as_table())
-      for_each_leaf(*sweep, "", [&](const std::string& path, const toml::node& node) {
-        SceneSweep swept{path, {}, place(scene, node), {}};
-        if (const toml::array* values = node.as_array()) {
-          for (const toml::node& v : *values) {
-            swept.values.push_back(toml_text(v));
-            swept.places.push_back(place(scene, v));
-          }
-        } else {
-          swept.values.push_back(toml_text(node));
-          swept.places.push_back(place(scene, node));
-        }
-        out.push_back(std::move(swept));
-      });
+    return toml::parse_file(scene);
   } catch (const std::exception&) {
-    // Reported, with its line and column, when the scene is rendered.
+    return std::nullopt;
   }
+}
+
+std::vector<SceneSweep> scene_sweeps(const std::string& scene, const toml::table& root) {
+  std::vector<SceneSweep> out;
+  // "glyphs.spacing" = [...] and [sweep.glyphs] spacing = [...] say the same.
+  if (const toml::table* sweep = root["sweep"].as_table())
+    for_each_leaf(*sweep, "", [&](const std::string& path, const toml::node& node) {
+      SceneSweep swept{path, {}, place(scene, node), {}};
+      if (const toml::array* values = node.as_array()) {
+        for (const toml::node& v : *values) {
+          swept.values.push_back(toml_text(v));
+          swept.places.push_back(place(scene, v));
+        }
+      } else {
+        swept.values.push_back(toml_text(node));
+        swept.places.push_back(place(scene, node));
+      }
+      out.push_back(std::move(swept));
+    });
   return out;
 }
 
 // The data file a scene reads: the scene itself for a data file, else its
 // data.file (a --set value over the file's), relative to the scene; ""
 // when it names none or cannot be read (reported when it renders).
-std::string data_file_of(const std::string& scene, const std::vector<std::string>& fixed) {
+std::string data_file_of(const std::string& scene, const std::optional<toml::table>& root,
+                         const std::vector<std::string>& fixed) {
   if (is_data_file(scene)) return scene;
-  if (!unreadable_input(scene).empty()) return "";
-  std::string file;
-  try {
-    const toml::table root = toml::parse_file(scene);
-    file = root["data"]["file"].value_or(std::string());
-  } catch (const std::exception&) {
-    return "";
-  }
+  if (!root) return "";
+  std::string file = (*root)["data"]["file"].value_or(std::string());
   for (const std::string& o : fixed)
     if (o.rfind("data.file=", 0) == 0) {
       file = o.substr(10);
@@ -79,15 +79,6 @@ std::string data_file_of(const std::string& scene, const std::vector<std::string
     }
   if (file.empty() || std::filesystem::path(file).is_absolute()) return file;
   return (std::filesystem::path(scene).parent_path() / file).lexically_normal().string();
-}
-
-bool scene_sets(const std::string& scene, const char* table, const char* key) {
-  if (is_data_file(scene) || !unreadable_input(scene).empty()) return false;
-  try {
-    return bool(toml::parse_file(scene)[table][key]);
-  } catch (const std::exception&) {
-    return false;
-  }
 }
 
 }  // namespace
@@ -131,21 +122,21 @@ Batch::Batch(const std::vector<std::string>& scenes, const std::vector<std::stri
   }
   for (const std::string& path : scenes) {
     Scene scene{path, cli, "", size_, 1};
-    for (SceneSweep& s : scene_sweeps(path)) {
+    const std::optional<toml::table> root = scene_root(path);
+    for (SceneSweep& s : root ? scene_sweeps(path, *root) : std::vector<SceneSweep>{}) {
       if (s.values.empty() && scene.error.empty())
         scene.error = s.where + ": sweep." + s.key + " lists no values; a sweep needs one or more";
       scene.swept.push_back({std::move(s.key), std::move(s.values), std::move(s.places)});
     }
     // A time series whose step no one chose: one image per step.
-    const auto names_step = [](const std::string& key) { return key == "data.step"; };
     const bool step_given =
-        scene_sets(path, "data", "step") ||
-        std::any_of(scene.swept.begin(), scene.swept.end(), [&](const SweptKey& k) { return names_step(k.key); }) ||
+        (root && root->at_path("data.step")) ||
+        std::any_of(scene.swept.begin(), scene.swept.end(), [](const SweptKey& k) { return k.key == "data.step"; }) ||
         std::any_of(fixed_.begin(), fixed_.end(), [](const std::string& o) { return o.rfind("data.step=", 0) == 0; });
     if (!step_given) {
       std::vector<double> times;
       try {
-        times = series_times(data_file_of(path, fixed_));
+        times = series_times(data_file_of(path, root, fixed_));
       } catch (const std::exception&) {
         // Reported, naming the file, when the scene is rendered.
       }
