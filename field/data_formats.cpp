@@ -27,11 +27,10 @@ std::vector<DataFormat> build_formats() {
       // Known, not read yet: said as what they are.
       {"VTK XML polygonal data", {".vtp"}, "PolyData", R::none, convert},
       {"VTK HDF", {".vtkhdf", ".hdf"}, "", R::none, convert},
-      {"NRRD", {".nrrd", ".nhdr"}, "NRRD000", R::none,
-       "convert it to .vti (ParaView or VTK's vtkNrrdReader, then Save Data)"},
+      {"NRRD", {".nrrd", ".nhdr"}, "NRRD000", R::nrrd, ""},
       {"NIfTI", {".nii", ".nii.gz", ".hdr"}, "", R::none, "convert it to .vti (e.g. with nibabel and VTK's Python)"},
       {"MRtrix image", {".mif", ".mif.gz", ".mih"}, "mrtrix image", R::none, "convert it with mrconvert to NIfTI, then to .vti"},
-      {"Exodus II", {".e", ".exo", ".ex2", ".exii"}, "", R::none, convert},
+      {"Exodus II", {".e", ".exo", ".ex2", ".exii"}, "", R::exodus, ""},
       {"Gmsh mesh", {".msh"}, "$MeshFormat", R::none, convert},
       {"Abaqus input", {".inp"}, "*Heading", R::none, convert},
       {"Abaqus output database", {".odb"}, "", R::none, "export the field output to .vtu (Abaqus/CAE or a VTK exporter)"},

@@ -17,6 +17,9 @@ enum class VtkReaderKind {
   xml,         // vtkXMLGenericDataObjectReader: one serial data set
   xml_pieces,  // the same, for pieces or blocks merged into one grid
   series,      // a list of data files by time step (.pvd)
+  exodus,      // vtkExodusIIReader: blocks merged into one grid, a time step
+  nrrd,        // field/nrrd_reading.h
+  nifti,       // vtkNIFTIImageReader (field/nifti_reading.h)
 };
 
 struct DataFormat {

@@ -25,13 +25,17 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <map>
 #include <sstream>
 
 #include "field/child_process.h"
 #include "field/data_error.h"
+#include "field/component_arrays.h"
 #include "field/data_formats.h"
+#include "field/exodus_reading.h"
 #include "field/input_file.h"
+#include "field/nrrd_reading.h"
 #include "field/partial_file.h"
 #include "field/vtk_data.h"
 
@@ -42,7 +46,8 @@ double trial_base_seconds = 30.0;
 
 // A file of random bytes, or of another format, gets a clear message
 // before VTK sees it: legacy files start with their version line, XML
-// files with "<?xml" or "<VTKFile"; a file of another known format under a
+// files with "<?xml" or "<VTKFile", Exodus files with netCDF's or HDF5's
+// signature; a file of another known format under a
 // VTK name is said as what it is.
 void check_header(const std::string& path, const DataFormat& format) {
   if (const DataFormat* content = format_by_content(path); content && content != &format &&
@@ -52,6 +57,15 @@ void check_header(const std::string& path, const DataFormat& format) {
   std::string head(256, '\0');
   in.read(head.data(), std::streamsize(head.size()));
   head.resize(std::size_t(in.gcount()));
+  if (format.reader == VtkReaderKind::nrrd) {
+    if (head.rfind("NRRD000", 0) != 0) throw DataError(path + ":1: not a NRRD file: it does not start with \"NRRD000\"");
+    return;
+  }
+  if (format.reader == VtkReaderKind::exodus) {
+    if (head.rfind("CDF", 0) != 0 && head.rfind("\x89HDF\r\n\x1a\n", 0) != 0)
+      throw DataError(path + ": not an Exodus II file: it is neither netCDF (\"CDF\") nor HDF5 inside");
+    return;
+  }
   if (format.reader == VtkReaderKind::legacy) {
     if (head.rfind("# vtk DataFile Version", 0) != 0)
       throw DataError(path + ": not a legacy VTK file: its first line is not \"# vtk DataFile Version x.y\"");
@@ -260,9 +274,17 @@ std::vector<std::pair<double, std::string>> series_files(const std::string& path
 }
 
 // The one data set the file at `path` holds, before any check.
-vtkSmartPointer<vtkDataSet> read_one(const std::string& path, const VtkSession& vtk) {
+vtkSmartPointer<vtkDataSet> read_one(const std::string& path, const VtkSession& vtk, int step) {
   const DataFormat* format = format_by_extension(path);
   if (!format || !format->readable()) throw DataError(unreadable_format_message(path));
+  check_header(path, *format);
+  if (format->reader == VtkReaderKind::exodus) {
+    const vtkSmartPointer<vtkDataObject> read = read_exodus(path, step);
+    if (const std::string error = vtk.first_error(); !error.empty())
+      throw DataError(path + ": cannot read it as Exodus II: " + error);
+    return merged(read, path);
+  }
+  if (format->reader == VtkReaderKind::nrrd) return read_nrrd(path);
   vtkSmartPointer<vtkAlgorithm> reader;
   if (format->reader == VtkReaderKind::legacy) {
     auto legacy = vtkSmartPointer<vtkDataSetReader>::New();
@@ -277,7 +299,6 @@ vtkSmartPointer<vtkDataSet> read_one(const std::string& path, const VtkSession& 
     xml->SetFileName(path.c_str());
     reader = xml;
   }
-  check_header(path, *format);
   reader->Update();
   vtkDataObject* read = reader->GetOutputDataObject(0);
   // A reader's warning is a file it could not read as declared (a
@@ -308,10 +329,14 @@ void named_files(vtkXMLDataElement* element, const std::filesystem::path& folder
 }
 
 // The file read, checked and made whole: what runs in the child.
-vtkSmartPointer<vtkDataSet> read_checked(const std::string& path, const DataFormat& format, const VtkSession& vtk) {
-  vtkSmartPointer<vtkDataSet> data = read_one(path, vtk);
+vtkSmartPointer<vtkDataSet> read_checked(const std::string& path, const DataFormat& format, const VtkSession& vtk,
+                                         int step) {
+  vtkSmartPointer<vtkDataSet> data = read_one(path, vtk, step);
   check_dataset(data, path);
-  if (format.reader == VtkReaderKind::xml_pieces) data = joined(vtkUnstructuredGrid::SafeDownCast(data));
+  if (format.reader == VtkReaderKind::xml_pieces || format.reader == VtkReaderKind::exodus)
+    data = joined(vtkUnstructuredGrid::SafeDownCast(data));
+  join_component_arrays(data->GetPointData(), data->GetFieldData());
+  join_component_arrays(data->GetCellData(), data->GetFieldData());
   return data;
 }
 
@@ -339,13 +364,14 @@ void refuse_failed_child(const ChildResult& child, const std::string& path, cons
 // (the data fuzzer found all four; a write the child survives would go
 // unseen in a trial run). The child writes what it read, checked, as a
 // plain VTK XML file of VTK's own making, which this process then reads.
-vtkSmartPointer<vtkDataSet> read_in_child(const std::string& path, const DataFormat& format, const VtkSession& vtk) {
+vtkSmartPointer<vtkDataSet> read_in_child(const std::string& path, const DataFormat& format, const VtkSession& vtk,
+                                          int step) {
   const std::string base = (std::filesystem::temp_directory_path() / ("hsb-read-" + std::to_string(::getpid()))).string();
   const PartialFile clean(base + ".vtkxml"), failure(base + ".txt");
   const ChildResult child = run_in_child(
       [&] {
         try {
-          const vtkSmartPointer<vtkDataSet> data = read_checked(path, format, vtk);
+          const vtkSmartPointer<vtkDataSet> data = read_checked(path, format, vtk, step);
           auto writer = vtkSmartPointer<vtkXMLDataSetWriter>::New();
           writer->SetInputData(data);
           writer->SetFileName(clean.path().c_str());
@@ -365,13 +391,43 @@ vtkSmartPointer<vtkDataSet> read_in_child(const std::string& path, const DataFor
     throw DataError(text.str());
   }
   // No child to be had (or it could not write): read it here after all.
-  if (!std::filesystem::exists(clean.path())) return read_checked(path, format, vtk);
+  if (!std::filesystem::exists(clean.path())) return read_checked(path, format, vtk, step);
   auto reader = vtkSmartPointer<vtkXMLGenericDataObjectReader>::New();
   reader->SetFileName(clean.path().c_str());
   reader->Update();
   vtkSmartPointer<vtkDataSet> data = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
   if (!data) throw DataError(path + ": cannot read back what VTK read of it");
   return data;
+}
+
+// The times of an Exodus file's steps, asked of VTK in a child process
+// like every parse of a user's file; none for a file of one step.
+std::vector<double> exodus_steps(const std::string& path) {
+  const VtkSession vtk;
+  const std::string base = (std::filesystem::temp_directory_path() / ("hsb-times-" + std::to_string(::getpid()))).string();
+  const PartialFile said(base + ".txt"), failure(base + ".error");
+  const ChildResult child = run_in_child(
+      [&] {
+        try {
+          std::ofstream out(said.path());
+          for (double t : exodus_times(path)) out << std::setprecision(17) << t << "\n";
+        } catch (const std::exception& e) {
+          std::ofstream(failure.path()) << e.what();
+        }
+      },
+      child_seconds(path));
+  refuse_failed_child(child, path, "Exodus reader");
+  if (std::ifstream error{failure.path()}) {
+    std::stringstream text;
+    text << error.rdbuf();
+    throw DataError(text.str());
+  }
+  std::vector<double> times;
+  std::ifstream in(said.path());
+  if (!in) times = exodus_times(path);  // no child to be had
+  for (double t; in >> t;) times.push_back(t);
+  if (times.size() < 2) times.clear();
+  return times;
 }
 
 }  // namespace
@@ -388,6 +444,7 @@ std::vector<std::string> data_files_read(const std::string& path, int step) {
     }
     return files;
   }
+  if (format && format->reader == VtkReaderKind::nrrd) return nrrd_files(path);
   std::vector<std::string> files{path};
   if (format && format->reader == VtkReaderKind::xml_pieces) {
     const VtkSession vtk;
@@ -409,6 +466,7 @@ void set_trial_read_seconds(double seconds) { trial_base_seconds = seconds; }
 
 std::vector<double> series_times(const std::string& path) {
   const DataFormat* format = format_by_extension(path);
+  if (format && format->reader == VtkReaderKind::exodus) return exodus_steps(path);
   if (!format || format->reader != VtkReaderKind::series) return {};
   const VtkSession vtk;
   std::vector<double> times;
@@ -430,9 +488,10 @@ vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSessi
       throw DataError(path + ": its step names another series, " + file);
     return read_dataset(file, vtk, -1);
   }
-  if (step > 0) throw DataError(path + ": data.step applies only to a time series (.pvd)");
   if (!format || !format->readable()) throw DataError(unreadable_format_message(path));
-  return read_in_child(path, *format, vtk);
+  if (step > 0 && format->reader != VtkReaderKind::exodus)
+    throw DataError(path + ": data.step applies only to a time series (.pvd, or Exodus with time steps)");
+  return read_in_child(path, *format, vtk, step);
 }
 
 }  // namespace hsb

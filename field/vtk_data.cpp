@@ -33,6 +33,7 @@
 #include "field/child_process.h"
 #include "field/data_error.h"
 #include "field/eigenvalue_range.h"
+#include "field/component_arrays.h"
 #include "field/component_order.h"
 #include "field/dataset_reading.h"
 #include "field/input_file.h"
@@ -222,9 +223,17 @@ ChosenArray choose_field_array(vtkDataSet* data, const VtkFileSpec& spec) {
 }
 
 // The order the scene says the six components come in.
-const ComponentOrder& order_of(const VtkFileSpec& spec) {
-  const ComponentOrder* order = component_order(spec.components);
-  if (!order) throw DataError(spec.path + ": no component order \"" + spec.components + "\" (data.components)");
+// The order the six components of `chosen` come in: the one the file
+// records (then already VTK's: field/component_arrays.h), else the
+// scene's, else VTK's.
+const ComponentOrder& order_of(const VtkFileSpec& spec, vtkDataSet* data, const ChosenArray& chosen) {
+  const std::string recorded = recorded_component_order(data, chosen.name);
+  if (!recorded.empty() && !spec.components.empty() && spec.components != "vtk")
+    throw DataError(spec.path + ": array \"" + chosen.name + "\" says which component is which (" + recorded +
+                    "): data.components = \"" + spec.components + "\" does not apply; leave it out");
+  const std::string name = recorded.empty() && !spec.components.empty() ? spec.components : "vtk";
+  const ComponentOrder* order = component_order(name);
+  if (!order) throw DataError(spec.path + ": no component order \"" + name + "\" (data.components)");
   return *order;
 }
 
@@ -423,13 +432,13 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
                                                     chosen.on_points ? ValueLocation::points : ValueLocation::cells);
   } else {
     vtkSmartPointer<vtkDataSet> averaged;
-    std::vector<Sym3> tensors = read_tensors(chosen, spec.path, order_of(spec), out.warnings);
+    std::vector<Sym3> tensors = read_tensors(chosen, spec.path, order_of(spec, data, chosen), out.warnings);
     if (!chosen.on_points && spec.cell_tensors == CellTensors::averaged) {
       // The checks and warnings above name cells, which the user can find;
       // the averaged copy would only repeat them for points.
       chosen = averaged_onto_points(data, chosen, spec.path, averaged);
       std::vector<std::string> repeated;
-      tensors = read_tensors(chosen, spec.path, order_of(spec), repeated);
+      tensors = read_tensors(chosen, spec.path, order_of(spec, data, chosen), repeated);
     }
     if (chosen.on_points && is_image_volume(data)) {
       auto* image = vtkImageData::SafeDownCast(data);
@@ -495,13 +504,16 @@ std::string describe_vtk_file(const VtkFileSpec& spec) {
     return out.str();
   }
   std::vector<std::string> warnings;
-  const std::vector<Sym3> tensors = read_tensors(chosen, spec.path, order_of(spec), warnings);
+  const std::vector<Sym3> tensors = read_tensors(chosen, spec.path, order_of(spec, data, chosen), warnings);
   EigenvalueRange range;
   for (const Sym3& s : tensors)
     if (s.is_finite()) range.add(s);
   out << "  tensors   \"" << chosen.name << "\" (" << chosen.components << " components, " << where << " data)\n";
-  if (chosen.components == 6) {
-    const ComponentOrder& order = order_of(spec);
+  const std::string recorded = recorded_component_order(data, chosen.name);
+  if (!recorded.empty()) {
+    out << "  order     recorded in the file: " << recorded << "\n";
+  } else if (chosen.components == 6) {
+    const ComponentOrder& order = order_of(spec, data, chosen);
     out << "  order     " << order.layout << " (data.components = \"" << order.name << "\": " << order.tools << ")\n";
   }
   for (const std::string& w : warnings) out << "  note      " << w.substr(w.find(": ") + 2) << "\n";

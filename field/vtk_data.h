@@ -42,7 +42,9 @@ struct VtkFileSpec {
   FieldKind kind = FieldKind::automatic;
   std::string color_array;  // a scalar array to colour by; "" = none
   int step = -1;            // of a time series: the step's index (-1: the first)
-  std::string components = "vtk";  // the order of 6 components (field/component_order.h)
+  // The order of 6 components (field/component_order.h); "" = the order
+  // the file records (field/component_arrays.h), else VTK's.
+  std::string components;
 };
 
 struct VtkData {

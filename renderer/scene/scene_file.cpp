@@ -83,7 +83,8 @@ void read_data(TableReader& data, DataSpec& spec, const std::string& base_dir) {
     spec.file.step = data.optional_integer("step").value_or(-1);
     std::vector<std::pair<std::string, std::string>> orders;
     for (const ComponentOrder& o : component_orders()) orders.emplace_back(o.name, o.name);
-    spec.file.components = data.choice<std::string>("components", orders);
+    // Absent: the order the file records, else VTK's (field/vtk_data.h).
+    if (data.has("components")) spec.file.components = data.choice<std::string>("components", orders);
     spec.file.cell_tensors =
         data.choice<CellTensors>("cell_tensors", {{"constant", CellTensors::constant}, {"averaged", CellTensors::averaged}});
     refuse_keys(data, {"bounds", "load", "poisson_ratio", "singular_radius"}, "point_load");

@@ -132,7 +132,8 @@ std::vector<KeySchema> build_keys() {
       Key("data.step", T::integer, "the step of a time series (.pvd) to read, from 0").range(0, std::numeric_limits<int>::max())
           .derived("every step, one image each"),
       Key("data.components", T::choice, "the order of a 6-component array's tensor components")
-          .choices(component_order_names()).fallback("\"vtk\""),
+          .choices(component_order_names())
+          .derived("the order the file records (components named apart, NRRD's and NIfTI's layouts), else \"vtk\""),
       Key("data.field", T::choice, "read only tensors or only vectors").choices({"auto", "tensor", "vector"}).fallback("\"auto\""),
       Key("data.association", T::choice, "point or cell data").choices({"auto", "point", "cell"}).fallback("\"auto\""),
       Key("data.cell_tensors", T::choice, "cell data constant per cell, or averaged onto the points")

@@ -61,19 +61,20 @@ out=$("$hsb" render "$work/empty_sweep.toml" -o "$work/sweep" 2>&1); status=$?
 grep -q "empty_sweep.toml:4:20: sweep.glyphs.spacing lists no values" <<<"$out" || fail "empty sweep: $out"
 # A data file of a format hsb does not read, on the command line or in a
 # scene: one line naming the format, never a TOML error; info and export alike.
-printf 'NRRD0004\ntype: float\n' > "$work/helix.nrrd"
+printf '$MeshFormat\n4.1 0 8\n$EndMeshFormat\n' > "$work/bracket.msh"
 for command in render info export; do
-  args=("$work/helix.nrrd")
+  args=("$work/bracket.msh")
   [[ $command == info ]] || args+=(-o "$work/formats")
   out=$("$hsb" $command "${args[@]}" 2>&1); status=$?
-  [[ $status == 1 ]] || fail "$command of a NRRD file: exit $status: $out"
-  grep -q "helix.nrrd: a NRRD file (by its name and content), which hsb does not read: .*hsb reads legacy VTK" <<<"$out" ||
-    fail "$command of a NRRD file: $out"
+  [[ $status == 1 ]] || fail "$command of a Gmsh file: exit $status: $out"
+  grep -q "bracket.msh: a Gmsh mesh file (by its name and content), which hsb does not read: .*hsb reads legacy VTK" <<<"$out" ||
+    fail "$command of a Gmsh file: $out"
 done
-printf '[data]\nfile = "helix.nrrd"\n' > "$work/nrrd_scene.toml"
-out=$("$hsb" render "$work/nrrd_scene.toml" -o "$work/formats" 2>&1)
-grep -q "nrrd_scene.toml:2:8: data.file names .*helix.nrrd: a NRRD file" <<<"$out" || fail "a scene naming NRRD: $out"
-"$hsb" info --formats | grep -q "^NIfTI	.nii .nii.gz .hdr	no: " || fail "hsb info --formats lists no NIfTI"
+printf '[data]\nfile = "bracket.msh"\n' > "$work/msh_scene.toml"
+out=$("$hsb" render "$work/msh_scene.toml" -o "$work/formats" 2>&1)
+grep -q "msh_scene.toml:2:8: data.file names .*bracket.msh: a Gmsh mesh file" <<<"$out" || fail "a scene naming Gmsh: $out"
+"$hsb" info --formats | grep -q "^Gmsh mesh	.msh	no: " || fail "hsb info --formats lists no Gmsh"
+"$hsb" info --formats | grep -q "^NRRD	.nrrd .nhdr	yes" || fail "hsb info --formats does not list NRRD as read"
 
 # The child that trial-reads a data file (VTK's readers crash or hang on
 # some corrupt files) dies with its parent: killed with SIGKILL mid-read,

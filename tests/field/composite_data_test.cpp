@@ -11,12 +11,14 @@
 #include <vtkImageData.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkPointData.h>
+#include <vtkExodusIIWriter.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLMultiBlockDataWriter.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include <array>
 #include <fstream>
 
 #include "field/data_error.h"
@@ -166,6 +168,52 @@ TEST(CompositeData, ATimeSeriesIsReadAtTheStepAskedFor) {
   spec = VtkFileSpec{b};
   spec.step = 1;
   EXPECT_THROW(load_vtk_data(spec), DataError);  // a single data set has no step 1
+}
+
+// `grid`'s tensors as six scalar arrays named `names` (for XX, YY, ZZ,
+// XY, YZ, XZ), added in the order `file_order` gives, written as Exodus II.
+std::string write_exodus_components(vtkUnstructuredGrid* grid, const std::array<std::string, 6>& names,
+                                    const std::array<int, 6>& file_order, const std::string& file) {
+  vtkDataArray* stress = grid->GetPointData()->GetArray("stress");
+  for (int c : file_order) {
+    auto part = vtkSmartPointer<vtkDoubleArray>::New();
+    part->SetName(names[std::size_t(c)].c_str());
+    part->SetNumberOfTuples(stress->GetNumberOfTuples());
+    for (vtkIdType i = 0; i < stress->GetNumberOfTuples(); ++i) part->SetValue(i, stress->GetComponent(i, c));
+    grid->GetPointData()->AddArray(part);
+  }
+  grid->GetPointData()->RemoveArray("stress");
+  const std::string path = (test_temp_dir("composite") / file).string();
+  auto writer = vtkSmartPointer<vtkExodusIIWriter>::New();
+  writer->SetInputData(grid);
+  writer->SetFileName(path.c_str());
+  writer->Write();
+  return path;
+}
+
+// Exodus II as Sierra writes it (stress_xx, ..., stress_zx) and as a
+// writer that lists the upper triangle row by row (stressXX, stressXY,
+// ...), which VTK's own reader gloms into a vector "stressX" and three
+// scalars: both read as the one tensor they are, with the order recorded.
+TEST(CompositeData, ExodusComponentVariablesReadAsOneTensor) {
+  const std::array<int, 6> sierra{0, 1, 2, 3, 4, 5}, upper_rows{0, 3, 5, 1, 4, 2};
+  for (const auto& [names, order] :
+       {std::pair{std::array<std::string, 6>{"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_zx"}, sierra},
+        std::pair{std::array<std::string, 6>{"stressXX", "stressYY", "stressZZ", "stressXY", "stressYZ", "stressXZ"}, upper_rows}}) {
+    VtkFileSpec spec{write_exodus_components(tet_body(), names, order, names[0] + ".exo")};
+    const std::string described = describe_vtk_file(spec);
+    SCOPED_TRACE(described);
+    EXPECT_NE(described.find("tensors   \"stress\" (6 components"), std::string::npos);
+    EXPECT_NE(described.find("order     recorded in the file"), std::string::npos);
+    const VtkData data = load_vtk_data(spec);
+    EXPECT_TRUE(data.warnings.empty());
+    expect_linear_field(data);
+    spec.components = "sfepy";  // the file says which is which: an order given too is refused
+    EXPECT_THROW(load_vtk_data(spec), DataError);
+    spec.components = "";
+    spec.step = 3;  // the file has one step
+    EXPECT_THROW(load_vtk_data(spec), DataError);
+  }
 }
 
 TEST(CompositeData, ASeriesThatIsNotOneIsSaidSo) {

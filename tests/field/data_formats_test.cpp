@@ -50,9 +50,10 @@ TEST(DataFormats, TheFirstBytesNameTheFormat) {
 }
 
 TEST(DataFormats, AFileHsbDoesNotReadIsSaidAsWhatItIs) {
-  const std::string nrrd = write("helix.nrrd", "NRRD0004\n");
-  const std::string message = unreadable_format_message(nrrd);
-  EXPECT_EQ(message.rfind(nrrd + ": a NRRD file (by its name and content), which hsb does not read: ", 0), 0u) << message;
+  const std::string msh = write("bracket.msh", "$MeshFormat\n4.1 0 8\n");
+  const std::string message = unreadable_format_message(msh);
+  EXPECT_EQ(message.rfind(msh + ": a Gmsh mesh file (by its name and content), which hsb does not read: ", 0), 0u) << message;
+  EXPECT_EQ(unreadable_format_message(write("helix.nrrd", "NRRD0004\n")), "");  // read since NRRD got its reader
   EXPECT_NE(message.find("hsb reads legacy VTK (.vtk), VTK XML image data (.vti)"), std::string::npos) << message;
   // Under a name hsb reads, the content is what it is.
   const std::string disguised = write("brain.vtu", nifti_header());

@@ -1,0 +1,41 @@
+#pragma once
+// Tensors and vectors written one component per array, as Exodus files
+// (stress_xx, stress_yy, ...), Abaqus exports (S11, S22, ...) and many
+// solvers' VTK output store them, joined into one array in VTK's order, so
+// that the array choice (field/vtk_data.cpp) sees one tensor named
+// "stress" and never mistakes its components for scalars, or a plane
+// stress's three for a vector. The order of a joined array, or of one a
+// reader converted from a layout its format records (NRRD, NIfTI), is
+// recorded with the data set, for data.components and `hsb info`.
+// Internal to field/.
+
+#include <string>
+#include <vector>
+
+class vtkDataSet;
+class vtkDataSetAttributes;
+class vtkFieldData;
+
+namespace hsb {
+
+// Joins, in `attributes`, every set of one-component arrays whose names
+// differ only in a component suffix, case aside and with or without a
+// separator before it (stress_xx, stressXX, S11):
+//  - a tensor needs xx, yy and xy (11, 22, 12); a missing zz, yz or xz is
+//    zero (plane data), and yx, zx, zy beside xy, xz, yz make a full 3×3
+//    (9 components, row by row); otherwise 6 in VTK's order XX YY ZZ XY YZ XZ;
+//  - a vector needs x and y; a missing z is zero.
+// A joined array is named by the common prefix without its separator
+// ("stress"), replaces its components, and has its order recorded in
+// `records`. A set whose name is taken already is left as it is.
+void join_component_arrays(vtkDataSetAttributes* attributes, vtkFieldData* records);
+
+// Records that the array `name` of `data` is in VTK's order because the
+// file said which component is which (`how`: "named components stress_xx,
+// ..." or the format's layout): data.components then has nothing to say.
+void record_component_order(vtkFieldData* records, const std::string& name, const std::string& how);
+
+// What record_component_order() said of `name`, "" if nothing.
+std::string recorded_component_order(vtkDataSet* data, const std::string& name);
+
+}  // namespace hsb

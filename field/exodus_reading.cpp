@@ -1,0 +1,127 @@
+#include "field/exodus_reading.h"
+
+#include <vtkCellData.h>
+#include <vtkCompositeDataIterator.h>
+#include <vtkCompositeDataSet.h>
+#include <vtkDataArray.h>
+#include <vtkDataSet.h>
+#include <vtkDoubleArray.h>
+#include <vtkExodusIIReader.h>
+#include <vtkInformation.h>
+#include <vtkInformationDoubleVectorKey.h>
+#include <vtkPointData.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
+#include <vtk_exodusII.h>
+
+#include <algorithm>
+#include <map>
+
+#include "field/data_error.h"
+
+namespace hsb {
+namespace {
+
+// The variables of one kind (nodal, element) as the file names them, in
+// the file's order; none if the file cannot say.
+std::vector<std::string> variable_names(const std::string& path, ex_entity_type kind) {
+  int compute_word = 8, io_word = 0;
+  float version = 0.0f;
+  const int file = ex_open(path.c_str(), EX_READ, &compute_word, &io_word, &version);
+  if (file < 0) return {};
+  std::vector<std::string> names;
+  int count = 0;
+  if (ex_get_variable_param(file, kind, &count) == 0 && count > 0) {
+    const int length = std::max(32, int(ex_inquire_int(file, EX_INQ_MAX_READ_NAME_LENGTH)));
+    std::vector<std::vector<char>> buffers(std::size_t(count), std::vector<char>(std::size_t(length) + 1, '\0'));
+    std::vector<char*> pointers;
+    for (auto& b : buffers) pointers.push_back(b.data());
+    if (ex_get_variable_names(file, kind, count, pointers.data()) == 0)
+      for (const auto& b : buffers) names.emplace_back(b.data());
+  }
+  ex_close(file);
+  return names;
+}
+
+// Which variables each of the reader's arrays of `type` holds: its arrays
+// take the file's variables in order, as many as they have components.
+// Empty when they do not add up (a reader that gloms otherwise): the
+// arrays then stay as VTK made them.
+std::map<std::string, std::vector<std::string>> glommed_variables(vtkExodusIIReader* reader, int type,
+                                                                  const std::vector<std::string>& names) {
+  std::map<std::string, std::vector<std::string>> parts;
+  std::size_t next = 0;
+  for (int i = 0; i < reader->GetNumberOfObjectArrays(type); ++i) {
+    const int components = reader->GetNumberOfObjectArrayComponents(type, i);
+    if (components < 1 || next + std::size_t(components) > names.size()) return {};
+    parts[reader->GetObjectArrayName(type, i)].assign(names.begin() + std::ptrdiff_t(next),
+                                                      names.begin() + std::ptrdiff_t(next + std::size_t(components)));
+    next += std::size_t(components);
+  }
+  if (next != names.size()) return {};
+  return parts;
+}
+
+// Each glommed array of `attributes` split back into its variables.
+void unglom(vtkDataSetAttributes* attributes, const std::map<std::string, std::vector<std::string>>& parts) {
+  for (const auto& [glommed, variables] : parts) {
+    vtkDataArray* array = attributes->GetArray(glommed.c_str());
+    if (!array || array->GetNumberOfComponents() != int(variables.size()) || variables.size() < 2) continue;
+    const vtkSmartPointer<vtkDataArray> keep = array;
+    attributes->RemoveArray(glommed.c_str());
+    for (std::size_t c = 0; c < variables.size(); ++c) {
+      auto variable = vtkSmartPointer<vtkDoubleArray>::New();
+      variable->SetName(variables[c].c_str());
+      variable->SetNumberOfTuples(keep->GetNumberOfTuples());
+      for (vtkIdType t = 0; t < keep->GetNumberOfTuples(); ++t) variable->SetValue(t, keep->GetComponent(t, int(c)));
+      attributes->AddArray(variable);
+    }
+  }
+}
+
+vtkSmartPointer<vtkExodusIIReader> exodus_reader(const std::string& path) {
+  auto reader = vtkSmartPointer<vtkExodusIIReader>::New();
+  reader->SetFileName(path.c_str());
+  if (!reader->CanReadFile(path.c_str())) throw DataError(path + ": not an Exodus II file (netCDF or HDF5) VTK can open");
+  reader->UpdateInformation();
+  return reader;
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkDataObject> read_exodus(const std::string& path, int step) {
+  const vtkSmartPointer<vtkExodusIIReader> reader = exodus_reader(path);
+  reader->SetAllArrayStatus(vtkExodusIIReader::NODAL, 1);
+  reader->SetAllArrayStatus(vtkExodusIIReader::ELEM_BLOCK, 1);
+  reader->SetApplyDisplacements(0);
+  const int steps = reader->GetNumberOfTimeSteps();
+  if (step > 0 && step >= steps)
+    throw DataError(path + ": data.step " + std::to_string(step) + " is beyond its " + std::to_string(steps) +
+                    " time steps" + (steps > 0 ? " (0 to " + std::to_string(steps - 1) + ")" : std::string()));
+  reader->SetTimeStep(std::max(step, 0));
+  reader->Update();
+
+  const auto nodal = glommed_variables(reader, vtkExodusIIReader::NODAL, variable_names(path, EX_NODAL));
+  const auto element = glommed_variables(reader, vtkExodusIIReader::ELEM_BLOCK, variable_names(path, EX_ELEM_BLOCK));
+  vtkSmartPointer<vtkDataObject> read = reader->GetOutputDataObject(0);
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(read)) {
+    const vtkSmartPointer<vtkCompositeDataIterator> it =
+        vtkSmartPointer<vtkCompositeDataIterator>::Take(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+      if (auto* block = vtkDataSet::SafeDownCast(it->GetCurrentDataObject())) {
+        unglom(block->GetPointData(), nodal);
+        unglom(block->GetCellData(), element);
+      }
+  }
+  return read;
+}
+
+std::vector<double> exodus_times(const std::string& path) {
+  const vtkSmartPointer<vtkExodusIIReader> reader = exodus_reader(path);
+  vtkInformation* info = reader->GetOutputInformation(0);
+  vtkInformationDoubleVectorKey* key = vtkStreamingDemandDrivenPipeline::TIME_STEPS();
+  if (!info || !info->Has(key)) return {};
+  const double* times = info->Get(key);
+  return std::vector<double>(times, times + info->Length(key));
+}
+
+}  // namespace hsb

@@ -1,0 +1,147 @@
+// NRRD volumes as Teem, Slicer and ITK write them: tensor kinds, oblique
+// space directions, the measurement frame, the encodings, a detached
+// header; and one clear error, at its header line, for what is wrong.
+#include <gtest/gtest.h>
+
+#include <zlib.h>
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "field/data_error.h"
+#include "field/vtk_data.h"
+#include "tests/temp_dir.h"
+
+namespace hsb {
+namespace {
+
+// A tensor that changes along every axis, so that a voxel read from the
+// wrong place, or a component from the wrong slot, shows.
+Sym3 voxel_tensor(int i, int j, int k) {
+  return Sym3{3.0 + i, 2.0 + 0.5 * j, 1.0 + 0.25 * k, 0.1 * i, 0.2 * j - 0.3, 0.05 * k + 0.1};
+}
+
+constexpr int nx = 4, ny = 3, nz = 5;
+
+// Teem's seven values per voxel: confidence, XX XY XZ YY YZ ZZ; the voxel
+// (0, 0, 0) masked out.
+std::vector<float> masked_values() {
+  std::vector<float> v;
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        const Sym3 s = voxel_tensor(i, j, k);
+        const float conf = i + j + k == 0 ? 0.0f : 1.0f;
+        for (double x : {double(conf), s.xx, s.xy, s.xz, s.yy, s.yz, s.zz}) v.push_back(float(x));
+      }
+  return v;
+}
+
+std::string bytes_of(const std::vector<float>& values, bool big_endian = false) {
+  std::string out(values.size() * 4, '\0');
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    char b[4];
+    std::memcpy(b, &values[i], 4);
+    if (big_endian) std::swap(b[0], b[3]), std::swap(b[1], b[2]);
+    std::memcpy(&out[i * 4], b, 4);
+  }
+  return out;
+}
+
+std::string header(const std::string& encoding, const std::string& extra = "") {
+  return "NRRD0005\n# made by a test\ntype: float\ndimension: 4\nspace: right-anterior-superior\n"
+         "sizes: 7 " + std::to_string(nx) + " " + std::to_string(ny) + " " + std::to_string(nz) + "\n"
+         "space directions: none (2,0,0) (0,3,0) (0,0,0.5)\nkinds: 3D-masked-symmetric-matrix space space space\n"
+         "endian: little\nencoding: " + encoding + "\nspace origin: (10,20,30)\n" + extra;
+}
+
+std::string write_file(const std::string& name, const std::string& content) {
+  const std::string path = (test_temp_dir("nrrd") / name).string();
+  std::ofstream(path, std::ios::binary) << content;
+  return path;
+}
+
+// The tensor sampled at the voxel (i, j, k) of a volume placed by `place`.
+void expect_voxels(const VtkData& data, const std::function<Vec3(int, int, int)>& place,
+                   const Mat3& frame = Mat3::Identity()) {
+  ASSERT_TRUE(data.field);
+  for (const auto& [i, j, k] : {std::array{1, 1, 1}, std::array{3, 2, 4}, std::array{2, 0, 3}}) {
+    const std::optional<Sym3> s = data.field->sample(place(i, j, k));
+    ASSERT_TRUE(s) << i << j << k;
+    const Mat3 expected = frame * voxel_tensor(i, j, k).matrix() * frame.transpose();
+    EXPECT_LT((s->matrix() - expected).norm(), 1e-5) << i << " " << j << " " << k;
+  }
+  EXPECT_FALSE(data.field->sample(place(0, 0, 0)));  // masked: no data
+}
+
+Vec3 axis_aligned(int i, int j, int k) { return Vec3(10 + 2 * i, 20 + 3 * j, 30 + 0.5 * k); }
+
+TEST(NrrdReading, TeemMaskedTensorsRawGzipAsciiBigEndian) {
+  const std::vector<float> values = masked_values();
+  std::string ascii;
+  for (float v : values) ascii += std::to_string(v) + " ";
+  std::string packed(compressBound(uLong(values.size() * 4)), '\0');
+  uLongf packed_size = uLongf(packed.size());
+  const std::string raw = bytes_of(values);
+  compress(reinterpret_cast<Bytef*>(packed.data()), &packed_size, reinterpret_cast<const Bytef*>(raw.data()), uLong(raw.size()));
+  packed.resize(packed_size);  // zlib's own wrapper: the reader takes gzip's and zlib's
+  std::string big = header("raw") + "\n" + bytes_of(values, true);
+  big.replace(big.find("endian: little"), 14, "endian: big");
+  for (const std::string& content : {header("raw") + "\n" + raw, header("gzip") + "\n" + packed,
+                                     header("ascii") + "\n" + ascii, big}) {
+    SCOPED_TRACE(content.substr(content.find("encoding"), 20));
+    expect_voxels(load_vtk_data({write_file("volume.nrrd", content)}), axis_aligned);
+  }
+}
+
+TEST(NrrdReading, ObliqueDirectionsAndTheMeasurementFrame) {
+  // Axes turned 90° about z: i runs along +y, j along −x. The measurement
+  // frame turns the tensors the same way.
+  std::string content = header("raw", "measurement frame: (0,1,0) (-1,0,0) (0,0,1)\n") + "\n" + bytes_of(masked_values());
+  content.replace(content.find("(2,0,0) (0,3,0)"), 15, "(0,2,0) (-3,0,0)");
+  Mat3 frame;
+  frame << 0, -1, 0, 1, 0, 0, 0, 0, 1;
+  expect_voxels(load_vtk_data({write_file("oblique.nrrd", content)}),
+                [](int i, int j, int k) { return Vec3(10 - 3 * j, 20 + 2 * i, 30 + 0.5 * k); }, frame);
+}
+
+TEST(NrrdReading, ADetachedHeaderNamesItsData) {
+  write_file("volume.raw", bytes_of(masked_values()));
+  const std::string path = write_file("volume.nhdr", header("raw", "data file: volume.raw\n"));
+  expect_voxels(load_vtk_data({path}), axis_aligned);
+  EXPECT_EQ(data_files_read(path).size(), 2u);
+}
+
+// Each broken header is one DataError that names the file and its line.
+TEST(NrrdReading, WhatIsWrongIsSaidAtItsLine) {
+  const std::string raw = bytes_of(masked_values());
+  const auto broken = [&](const std::string& from, const std::string& to, bool with_data = true) {
+    std::string content = header("raw") + "\n" + (with_data ? raw : raw.substr(0, 100));
+    if (!from.empty()) content.replace(content.find(from), from.size(), to);
+    return write_file("broken.nrrd", content);
+  };
+  const auto message = [](const std::string& path) {
+    try {
+      load_vtk_data({path});
+    } catch (const DataError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message(broken("sizes: 7 4", "sizes: 7 -4")).find("broken.nrrd:6: each size must be"), std::string::npos);
+  EXPECT_NE(message(broken("sizes: 7 4 3 5", "sizes: 7 99999 99999 99999")).find(":6: the volume declares more"),
+            std::string::npos);
+  EXPECT_NE(message(broken("", "", false)).find("its raw data has"), std::string::npos);
+  EXPECT_NE(message(broken("kinds: 3D-masked-symmetric-matrix", "kinds: RGB-color")).find(":8: the first axis"),
+            std::string::npos);
+  EXPECT_NE(message(broken("encoding: raw", "encoding: bzip2")).find("encoding \"bzip2\" is not read"), std::string::npos);
+  EXPECT_NE(message(broken("type: float", "type: quaternion")).find(":3: NRRD type"), std::string::npos);
+  EXPECT_NE(message(broken("(0,3,0)", "(0,3)")).find(":7: expected a vector"), std::string::npos);
+  EXPECT_NE(message(broken("dimension: 4", "dimension: 3")).find("one value per voxel"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace hsb
