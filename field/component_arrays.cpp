@@ -32,6 +32,13 @@ constexpr Suffix tensor_suffixes[] = {
 constexpr Suffix vector_suffixes[] = {{"x", {0, -1}}, {"y", {1, -1}}, {"z", {2, -1}}};
 
 const std::string record_prefix = "hsb component order: ";
+const std::string default_prefix = "hsb default component order: ";
+const std::string frame_prefix = "hsb tensor frame: ";
+
+vtkStringArray* string_record(vtkDataSet* data, const std::string& key) {
+  auto* record = vtkStringArray::SafeDownCast(data->GetFieldData()->GetAbstractArray(key.c_str()));
+  return record && record->GetNumberOfValues() > 0 ? record : nullptr;
+}
 
 // Whether `name` ends in `suffix`, case aside.
 bool ends_in(const std::string& name, const char* suffix) {
@@ -159,8 +166,39 @@ void record_component_order(vtkFieldData* records, const std::string& name, cons
 }
 
 std::string recorded_component_order(vtkDataSet* data, const std::string& name) {
-  auto* record = vtkStringArray::SafeDownCast(data->GetFieldData()->GetAbstractArray((record_prefix + name).c_str()));
-  return record && record->GetNumberOfValues() > 0 ? record->GetValue(0) : std::string();
+  vtkStringArray* record = string_record(data, record_prefix + name);
+  return record ? record->GetValue(0) : std::string();
+}
+
+void record_default_order(vtkFieldData* records, const std::string& name, const std::string& order,
+                          const std::string& why) {
+  auto record = vtkSmartPointer<vtkStringArray>::New();
+  record->SetName((default_prefix + name).c_str());
+  record->InsertNextValue(order);
+  record->InsertNextValue(why);
+  records->AddArray(record);
+}
+
+DefaultOrder recorded_default_order(vtkDataSet* data, const std::string& name) {
+  vtkStringArray* record = string_record(data, default_prefix + name);
+  if (!record || record->GetNumberOfValues() < 2) return {};
+  return {record->GetValue(0), record->GetValue(1)};
+}
+
+void record_tensor_frame(vtkFieldData* records, const std::string& name, const Mat3& frame) {
+  auto record = vtkSmartPointer<vtkDoubleArray>::New();
+  record->SetName((frame_prefix + name).c_str());
+  for (int k = 0; k < 9; ++k) record->InsertNextValue(frame(k / 3, k % 3));
+  records->AddArray(record);
+}
+
+std::optional<Mat3> recorded_tensor_frame(vtkDataSet* data, const std::string& name) {
+  auto* record = vtkDoubleArray::SafeDownCast(data->GetFieldData()->GetAbstractArray((frame_prefix + name).c_str()));
+  if (!record || record->GetNumberOfValues() != 9) return std::nullopt;
+  Mat3 frame;
+  for (int k = 0; k < 9; ++k) frame(k / 3, k % 3) = record->GetValue(k);
+  if (!frame.allFinite()) return std::nullopt;
+  return frame;
 }
 
 }  // namespace hsb

@@ -9,8 +9,11 @@
 // recorded with the data set, for data.components and `hsb info`.
 // Internal to field/.
 
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "field/sym3.h"
 
 class vtkDataSet;
 class vtkDataSetAttributes;
@@ -37,5 +40,20 @@ void record_component_order(vtkFieldData* records, const std::string& name, cons
 
 // What record_component_order() said of `name`, "" if nothing.
 std::string recorded_component_order(vtkDataSet* data, const std::string& name);
+
+// For a 6-component array whose order the file does not record but its
+// format implies (FSL's for a NIfTI of six volumes): the data.components
+// name used when the scene gives none, and why.
+void record_default_order(vtkFieldData* records, const std::string& name, const std::string& order,
+                          const std::string& why);
+struct DefaultOrder {
+  std::string order, why;  // empty when none was recorded
+};
+DefaultOrder recorded_default_order(vtkDataSet* data, const std::string& name);
+
+// The rotation (or reflection) that takes `name`'s tensors from the axes
+// they were written in to the data's space: T → F T Fᵀ, after the order.
+void record_tensor_frame(vtkFieldData* records, const std::string& name, const Mat3& frame);
+std::optional<Mat3> recorded_tensor_frame(vtkDataSet* data, const std::string& name);
 
 }  // namespace hsb

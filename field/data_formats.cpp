@@ -28,7 +28,7 @@ std::vector<DataFormat> build_formats() {
       {"VTK XML polygonal data", {".vtp"}, "PolyData", R::none, convert},
       {"VTK HDF", {".vtkhdf", ".hdf"}, "", R::none, convert},
       {"NRRD", {".nrrd", ".nhdr"}, "NRRD000", R::nrrd, ""},
-      {"NIfTI", {".nii", ".nii.gz", ".hdr"}, "", R::none, "convert it to .vti (e.g. with nibabel and VTK's Python)"},
+      {"NIfTI", {".nii", ".nii.gz", ".hdr"}, "", R::nifti, ""},
       {"MRtrix image", {".mif", ".mif.gz", ".mih"}, "mrtrix image", R::none, "convert it with mrconvert to NIfTI, then to .vti"},
       {"Exodus II", {".e", ".exo", ".ex2", ".exii"}, "", R::exodus, ""},
       {"Gmsh mesh", {".msh"}, "$MeshFormat", R::none, convert},

@@ -35,6 +35,7 @@
 #include "field/data_formats.h"
 #include "field/exodus_reading.h"
 #include "field/input_file.h"
+#include "field/nifti_reading.h"
 #include "field/nrrd_reading.h"
 #include "field/partial_file.h"
 #include "field/vtk_data.h"
@@ -57,6 +58,12 @@ void check_header(const std::string& path, const DataFormat& format) {
   std::string head(256, '\0');
   in.read(head.data(), std::streamsize(head.size()));
   head.resize(std::size_t(in.gcount()));
+  if (format.reader == VtkReaderKind::nifti) {
+    const DataFormat* content = format_by_content(path);
+    if (head.rfind("\x1f\x8b", 0) != 0 && (!content || content->reader != VtkReaderKind::nifti))
+      throw DataError(path + ": not a NIfTI file: no NIfTI magic (\"n+1\", \"ni1\", \"n+2\") and not gzip-compressed");
+    return;
+  }
   if (format.reader == VtkReaderKind::nrrd) {
     if (head.rfind("NRRD000", 0) != 0) throw DataError(path + ":1: not a NRRD file: it does not start with \"NRRD000\"");
     return;
@@ -285,6 +292,7 @@ vtkSmartPointer<vtkDataSet> read_one(const std::string& path, const VtkSession& 
     return merged(read, path);
   }
   if (format->reader == VtkReaderKind::nrrd) return read_nrrd(path);
+  if (format->reader == VtkReaderKind::nifti) return read_nifti(path);
   vtkSmartPointer<vtkAlgorithm> reader;
   if (format->reader == VtkReaderKind::legacy) {
     auto legacy = vtkSmartPointer<vtkDataSetReader>::New();

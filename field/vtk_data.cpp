@@ -225,14 +225,16 @@ ChosenArray choose_field_array(vtkDataSet* data, const VtkFileSpec& spec) {
 // The order the scene says the six components come in.
 // The order the six components of `chosen` come in: the one the file
 // records (then already VTK's: field/component_arrays.h), else the
-// scene's, else VTK's.
+// scene's, else the one its format implies, else VTK's.
 const ComponentOrder& order_of(const VtkFileSpec& spec, vtkDataSet* data, const ChosenArray& chosen) {
   const std::string recorded = recorded_component_order(data, chosen.name);
   if (!recorded.empty() && !spec.components.empty() && spec.components != "vtk")
     throw DataError(spec.path + ": array \"" + chosen.name + "\" says which component is which (" + recorded +
                     "): data.components = \"" + spec.components + "\" does not apply; leave it out");
-  const std::string name = recorded.empty() && !spec.components.empty() ? spec.components : "vtk";
-  const ComponentOrder* order = component_order(name);
+  std::string name = "vtk";
+  if (recorded.empty() && !spec.components.empty()) name = spec.components;
+  else if (recorded.empty()) name = recorded_default_order(data, chosen.name).order;
+  const ComponentOrder* order = component_order(name.empty() ? "vtk" : name);
   if (!order) throw DataError(spec.path + ": no component order \"" + name + "\" (data.components)");
   return *order;
 }
@@ -322,6 +324,17 @@ std::vector<Sym3> read_tensors(const ChosenArray& chosen, const std::string& pat
             << worst_at << " (where |T| = " << worst_norm << ")";
     warnings.push_back(message.str());
   }
+  return tensors;
+}
+
+// The tensors of `chosen` in the data's space: in their order, and
+// turned from the axes they were written in where the file says (FSL's).
+std::vector<Sym3> tensors_of(const ChosenArray& chosen, const VtkFileSpec& spec, vtkDataSet* data,
+                             std::vector<std::string>& warnings) {
+  std::vector<Sym3> tensors = read_tensors(chosen, spec.path, order_of(spec, data, chosen), warnings);
+  if (const std::optional<Mat3> frame = recorded_tensor_frame(data, chosen.name))
+    for (Sym3& t : tensors)
+      if (t.is_finite()) t = Sym3::symmetric_part(*frame * t.matrix() * frame->transpose());
   return tensors;
 }
 
@@ -432,13 +445,13 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
                                                     chosen.on_points ? ValueLocation::points : ValueLocation::cells);
   } else {
     vtkSmartPointer<vtkDataSet> averaged;
-    std::vector<Sym3> tensors = read_tensors(chosen, spec.path, order_of(spec, data, chosen), out.warnings);
+    std::vector<Sym3> tensors = tensors_of(chosen, spec, data, out.warnings);
     if (!chosen.on_points && spec.cell_tensors == CellTensors::averaged) {
       // The checks and warnings above name cells, which the user can find;
       // the averaged copy would only repeat them for points.
       chosen = averaged_onto_points(data, chosen, spec.path, averaged);
       std::vector<std::string> repeated;
-      tensors = read_tensors(chosen, spec.path, order_of(spec, data, chosen), repeated);
+      tensors = tensors_of(chosen, spec, data, repeated);
     }
     if (chosen.on_points && is_image_volume(data)) {
       auto* image = vtkImageData::SafeDownCast(data);
@@ -504,7 +517,7 @@ std::string describe_vtk_file(const VtkFileSpec& spec) {
     return out.str();
   }
   std::vector<std::string> warnings;
-  const std::vector<Sym3> tensors = read_tensors(chosen, spec.path, order_of(spec, data, chosen), warnings);
+  const std::vector<Sym3> tensors = tensors_of(chosen, spec, data, warnings);
   EigenvalueRange range;
   for (const Sym3& s : tensors)
     if (s.is_finite()) range.add(s);
@@ -514,8 +527,12 @@ std::string describe_vtk_file(const VtkFileSpec& spec) {
     out << "  order     recorded in the file: " << recorded << "\n";
   } else if (chosen.components == 6) {
     const ComponentOrder& order = order_of(spec, data, chosen);
-    out << "  order     " << order.layout << " (data.components = \"" << order.name << "\": " << order.tools << ")\n";
+    out << "  order     " << order.layout << " (data.components = \"" << order.name << "\": " << order.tools << ")";
+    if (const DefaultOrder implied = recorded_default_order(data, chosen.name); spec.components.empty() && !implied.why.empty())
+      out << "; " << implied.why;
+    out << "\n";
   }
+  if (recorded_tensor_frame(data, chosen.name)) out << "  frame     tensors turned from the file's voxel axes into its space\n";
   for (const std::string& w : warnings) out << "  note      " << w.substr(w.find(": ") + 2) << "\n";
   out << range;
   for (const std::string& w : warnings) out << "  warning: " << w << "\n";

@@ -1,0 +1,130 @@
+// NIfTI tensor volumes in the three layouts tools write (FSL dtifit's six
+// volumes in its voxel axes, NIfTI's symmetric-matrix intent, MRtrix's),
+// placed by the sform: each read back as the tensors of the space.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "field/data_error.h"
+#include "field/vtk_data.h"
+#include "tests/temp_dir.h"
+
+namespace hsb {
+namespace {
+
+constexpr int nx = 4, ny = 3, nz = 5;
+
+// A tensor of the space that changes along every axis.
+Sym3 space_tensor(int i, int j, int k) {
+  return Sym3{3.0 + i, 2.0 + 0.5 * j, 1.0 + 0.25 * k, 0.1 * i + 0.2, 0.2 * j - 0.3, 0.05 * k + 0.1};
+}
+
+// A NIfTI-1 file written byte by byte as the standard lays it out: float
+// voxels, `dim` as given, the sform `rows` (3×4), `values(i, j, k)` the
+// voxel's six numbers in the file's layout.
+std::string write_nifti(const std::string& name, std::array<std::int16_t, 8> dim, std::int16_t intent,
+                        const std::string& descrip, const std::array<std::array<float, 4>, 3>& rows,
+                        const std::function<std::array<double, 6>(int, int, int)>& values) {
+  std::vector<char> header(352, '\0');
+  const auto put = [&](std::size_t at, const auto& v) { std::memcpy(header.data() + at, &v, sizeof v); };
+  put(0, std::int32_t(348));
+  for (int d = 0; d < 8; ++d) put(40 + 2 * std::size_t(d), dim[std::size_t(d)]);
+  put(68, intent);
+  put(70, std::int16_t(16));  // float32
+  put(72, std::int16_t(32));
+  const float pixdim[8] = {1, 1, 1, 1, 1, 1, 1, 1};
+  std::memcpy(header.data() + 76, pixdim, sizeof pixdim);
+  put(108, 352.0f);
+  put(112, 1.0f);
+  std::memcpy(header.data() + 148, descrip.data(), std::min<std::size_t>(descrip.size(), 79));
+  put(254, std::int16_t(1));  // sform_code: scanner
+  for (int r = 0; r < 3; ++r) std::memcpy(header.data() + 280 + 16 * std::size_t(r), rows[std::size_t(r)].data(), 16);
+  std::memcpy(header.data() + 344, "n+1\0", 4);
+  std::vector<float> data(std::size_t(nx * ny * nz * 6));
+  for (int c = 0; c < 6; ++c)
+    for (int k = 0; k < nz; ++k)
+      for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i)
+          data[std::size_t(((c * nz + k) * ny + j) * nx + i)] = float(values(i, j, k)[std::size_t(c)]);
+  const std::string path = (test_temp_dir("nifti") / name).string();
+  std::ofstream out(path, std::ios::binary);
+  out.write(header.data(), std::streamsize(header.size()));
+  out.write(reinterpret_cast<const char*>(data.data()), std::streamsize(data.size() * sizeof(float)));
+  return path;
+}
+
+void expect_space_tensors(const std::string& path, const std::function<Vec3(int, int, int)>& place) {
+  const VtkData data = load_vtk_data({path});
+  ASSERT_TRUE(data.field);
+  for (const auto& [i, j, k] : {std::array{1, 1, 1}, std::array{3, 2, 4}, std::array{2, 0, 3}}) {
+    const std::optional<Sym3> s = data.field->sample(place(i, j, k));
+    ASSERT_TRUE(s) << i << j << k;
+    EXPECT_LT((s->matrix() - space_tensor(i, j, k).matrix()).norm(), 1e-5) << i << " " << j << " " << k;
+  }
+}
+
+// Voxel axes turned 90° about z in the space: i runs along +y, j along −x.
+const std::array<std::array<float, 4>, 3> turned{{{0, -2, 0, 10}, {2, 0, 0, 20}, {0, 0, 1, 30}}};
+Vec3 turned_place(int i, int j, int k) { return Vec3(10 - 2 * j, 20 + 2 * i, 30 + k); }
+Mat3 turned_axes() {
+  Mat3 r;
+  r << 0, -1, 0, 1, 0, 0, 0, 0, 1;
+  return r;
+}
+
+TEST(NiftiReading, SymmetricMatrixIntentIsTheLowerTriangleInTheSpace) {
+  const std::string path = write_nifti("intent.nii", {5, nx, ny, nz, 1, 6, 1, 1}, 1005, "", turned, [](int i, int j, int k) {
+    const Sym3 s = space_tensor(i, j, k);
+    return std::array<double, 6>{s.xx, s.xy, s.yy, s.xz, s.yz, s.zz};
+  });
+  expect_space_tensors(path, turned_place);
+  EXPECT_NE(describe_vtk_file({path}).find("order     recorded in the file: NIfTI's symmetric-matrix intent"),
+            std::string::npos);
+}
+
+TEST(NiftiReading, MrtrixSaysSoInItsDescription) {
+  const std::string path = write_nifti("mrtrix.nii", {4, nx, ny, nz, 6, 1, 1, 1}, 0, "MRtrix version: 3.0.4", turned,
+                                       [](int i, int j, int k) {
+                                         const Sym3 s = space_tensor(i, j, k);
+                                         return std::array<double, 6>{s.xx, s.yy, s.zz, s.xy, s.xz, s.yz};
+                                       });
+  expect_space_tensors(path, turned_place);
+}
+
+// FSL's dtifit: XX XY XZ YY YZ ZZ in its voxel axes, x flipped because
+// this transform keeps handedness: the space's tensor S is written as
+// F Rᵀ S R F, with R the voxel axes and F = diag(−1, 1, 1).
+TEST(NiftiReading, FslSixVolumesAreTurnedFromItsVoxelAxes) {
+  const Mat3 to_fsl = Vec3(-1, 1, 1).asDiagonal() * turned_axes().transpose();
+  const std::string path = write_nifti("dti_tensor.nii", {4, nx, ny, nz, 6, 1, 1, 1}, 0, "FSL6.0", turned,
+                                       [&](int i, int j, int k) {
+                                         const Mat3 m = to_fsl * space_tensor(i, j, k).matrix() * to_fsl.transpose();
+                                         return std::array<double, 6>{m(0, 0), m(0, 1), m(0, 2), m(1, 1), m(1, 2), m(2, 2)};
+                                       });
+  expect_space_tensors(path, turned_place);
+  const std::string described = describe_vtk_file({path});
+  EXPECT_NE(described.find("data.components = \"fsl\""), std::string::npos) << described;
+  EXPECT_NE(described.find("FSL dtifit's layout"), std::string::npos) << described;
+  // Another order may be named for such a file: it is not recorded.
+  VtkFileSpec mrtrix{path};
+  mrtrix.components = "mrtrix";
+  EXPECT_NO_THROW(load_vtk_data(mrtrix));
+}
+
+TEST(NiftiReading, VoxelsOfOtherSizesAreSaidSo) {
+  const std::string path = write_nifti("five.nii", {4, nx, ny, nz, 5, 1, 1, 1}, 0, "", turned,
+                                       [](int, int, int) { return std::array<double, 6>{}; });
+  try {
+    load_vtk_data({path});
+    FAIL() << "read a volume of 5 values per voxel";
+  } catch (const DataError& e) {
+    EXPECT_NE(std::string(e.what()).find("its voxels hold 5 values"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace hsb
