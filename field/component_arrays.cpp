@@ -4,7 +4,9 @@
 #include <vtkDataSet.h>
 #include <vtkDataSetAttributes.h>
 #include <vtkDoubleArray.h>
+#include <vtkCellData.h>
 #include <vtkFieldData.h>
+#include <vtkPointData.h>
 #include <vtkSmartPointer.h>
 #include <vtkStringArray.h>
 
@@ -183,6 +185,21 @@ DefaultOrder recorded_default_order(vtkDataSet* data, const std::string& name) {
   vtkStringArray* record = string_record(data, default_prefix + name);
   if (!record || record->GetNumberOfValues() < 2) return {};
   return {record->GetValue(0), record->GetValue(1)};
+}
+
+void record_writer_orders(vtkDataSet* data) {
+  const bool sfepy = data->GetPointData()->GetAbstractArray("node_groups") && data->GetCellData()->GetAbstractArray("mat_id");
+  if (!sfepy) return;
+  for (vtkDataSetAttributes* attributes : {static_cast<vtkDataSetAttributes*>(data->GetPointData()),
+                                           static_cast<vtkDataSetAttributes*>(data->GetCellData())})
+    for (int i = 0; i < attributes->GetNumberOfArrays(); ++i) {
+      vtkDataArray* array = attributes->GetArray(i);
+      if (!array || !array->GetName() || array->GetNumberOfComponents() != 6) continue;
+      const std::string name = array->GetName();
+      if (recorded_component_order(data, name).empty() && recorded_default_order(data, name).order.empty())
+        record_default_order(data->GetFieldData(), name, "sfepy",
+                             "written by SfePy (its node_groups and mat_id arrays say so), which stores 11 22 33 12 13 23");
+    }
 }
 
 void record_tensor_frame(vtkFieldData* records, const std::string& name, const Mat3& frame) {

@@ -51,6 +51,12 @@ struct DefaultOrder {
 };
 DefaultOrder recorded_default_order(vtkDataSet* data, const std::string& name);
 
+// Records the order a file's writer implies for its 6-component arrays
+// where the file records none: SfePy's output (it leaves its arrays
+// node_groups and mat_id in every file it writes) stores 11 22 33 12 13 23,
+// read as VTK's it would swap σyz and σxz without a sign.
+void record_writer_orders(vtkDataSet* data);
+
 // The rotation (or reflection) that takes `name`'s tensors from the axes
 // they were written in to the data's space: T → F T Fᵀ, after the order.
 void record_tensor_frame(vtkFieldData* records, const std::string& name, const Mat3& frame);

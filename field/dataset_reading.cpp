@@ -345,6 +345,7 @@ vtkSmartPointer<vtkDataSet> read_checked(const std::string& path, const DataForm
     data = joined(vtkUnstructuredGrid::SafeDownCast(data));
   join_component_arrays(data->GetPointData(), data->GetFieldData());
   join_component_arrays(data->GetCellData(), data->GetFieldData());
+  record_writer_orders(data);
   return data;
 }
 

@@ -331,7 +331,13 @@ std::vector<Sym3> read_tensors(const ChosenArray& chosen, const std::string& pat
 // turned from the axes they were written in where the file says (FSL's).
 std::vector<Sym3> tensors_of(const ChosenArray& chosen, const VtkFileSpec& spec, vtkDataSet* data,
                              std::vector<std::string>& warnings) {
-  std::vector<Sym3> tensors = read_tensors(chosen, spec.path, order_of(spec, data, chosen), warnings);
+  const ComponentOrder& order = order_of(spec, data, chosen);
+  std::vector<Sym3> tensors = read_tensors(chosen, spec.path, order, warnings);
+  // An order no file states, only its writer implies: said, as a choice the scene can overrule.
+  if (const DefaultOrder implied = recorded_default_order(data, chosen.name);
+      chosen.components == 6 && spec.components.empty() && !implied.why.empty())
+    warnings.push_back(spec.path + ": array \"" + chosen.name + "\" read in the order " + order.layout + " (\"" +
+                       order.name + "\"): " + implied.why + "; data.components names another");
   if (const std::optional<Mat3> frame = recorded_tensor_frame(data, chosen.name))
     for (Sym3& t : tensors)
       if (t.is_finite()) t = Sym3::symmetric_part(*frame * t.matrix() * frame->transpose());

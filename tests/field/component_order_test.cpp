@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkImageData.h>
 #include <vtkPointData.h>
@@ -55,6 +56,41 @@ TEST(ComponentOrder, EachPresetReadsItsOwnLayoutAndNoOther) {
         EXPECT_GT((read(path, other.name).matrix() - distinct.matrix()).norm(), 1.0)
             << order.name << " read as " << other.name;
   }
+}
+
+// SfePy's output records no order, but SfePy leaves its node_groups and
+// mat_id arrays in every file: its order is then the default, said in a
+// warning; a scene may still name another.
+TEST(ComponentOrder, SfepyOutputIsReadInSfepyOrderAndSaidSo) {
+  auto img = vtkSmartPointer<vtkImageData>::New();
+  img->SetDimensions(3, 3, 3);
+  const ComponentOrder& sfepy = *component_order("sfepy");
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName("cauchy_stress");
+  a->SetNumberOfComponents(6);
+  a->SetNumberOfTuples(img->GetNumberOfPoints());
+  const Mat3 m = distinct.matrix();
+  for (vtkIdType p = 0; p < img->GetNumberOfPoints(); ++p)
+    for (int k = 0; k < 6; ++k) a->SetComponent(p, k, m(sfepy.entries[std::size_t(k)][0], sfepy.entries[std::size_t(k)][1]));
+  img->GetPointData()->AddArray(a);
+  for (auto [name, on_points] : {std::pair{"node_groups", true}, std::pair{"mat_id", false}}) {
+    auto marker = vtkSmartPointer<vtkDoubleArray>::New();
+    marker->SetName(name);
+    marker->SetNumberOfTuples(on_points ? img->GetNumberOfPoints() : img->GetNumberOfCells());
+    marker->FillValue(0.0);
+    if (on_points) img->GetPointData()->AddArray(marker);
+    else img->GetCellData()->AddArray(marker);
+  }
+  const std::string path = (test_temp_dir("component_order") / "sfepy_output.vti").string();
+  auto writer = vtkSmartPointer<vtkXMLImageDataWriter>::New();
+  writer->SetInputData(img);
+  writer->SetFileName(path.c_str());
+  writer->Write();
+  const VtkData data = load_vtk_data({path});
+  EXPECT_EQ((data.field->sample(Vec3(1, 1, 1))->matrix() - distinct.matrix()).norm(), 0.0);
+  ASSERT_EQ(data.warnings.size(), 1u);
+  EXPECT_NE(data.warnings[0].find("written by SfePy"), std::string::npos) << data.warnings[0];
+  EXPECT_GT((read(path, "vtk").matrix() - distinct.matrix()).norm(), 1.0);  // the scene's word wins
 }
 
 TEST(ComponentOrder, TheLayoutsSayWhatTheEntriesAre) {
