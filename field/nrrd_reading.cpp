@@ -189,8 +189,9 @@ std::vector<double> read_values(const Header& h, const std::string& path, std::u
   std::vector<char> raw((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const long long byte_skip = h.integer("byte skip");
 
+  // Nothing is reserved for what the header declares before the data
+  // shows it holds that much: a corrupt size must not take all memory.
   std::vector<double> values;
-  values.reserve(count);
   if (encoding == "txt" || encoding == "text" || encoding == "ascii") {
     const std::string text(raw.begin(), raw.end());
     const char* at = text.c_str();
@@ -214,7 +215,6 @@ std::vector<double> read_values(const Header& h, const std::string& path, std::u
                       " bytes; the header declares " + std::to_string(bytes));
     decoded.assign(raw.begin() + std::ptrdiff_t(start), raw.begin() + std::ptrdiff_t(start + bytes));
   } else if (encoding == "gzip" || encoding == "gz") {
-    decoded.resize(bytes);
     z_stream z{};
     if (inflateInit2(&z, 15 + 32) != Z_OK) throw DataError(path + ": cannot start zlib");
     z.next_in = reinterpret_cast<unsigned char*>(raw.data());
@@ -222,8 +222,11 @@ std::vector<double> read_values(const Header& h, const std::string& path, std::u
     std::uint64_t done = 0;
     int status = Z_OK;
     while (done < bytes && status == Z_OK) {
+      // Grown as the data inflates, not to the declared size at once.
+      if (decoded.size() == done)
+        decoded.resize(std::size_t(std::min<std::uint64_t>(bytes, std::max<std::uint64_t>(2 * done, 1 << 20))));
       z.next_out = decoded.data() + done;
-      z.avail_out = uInt(std::min<std::uint64_t>(bytes - done, std::numeric_limits<uInt>::max()));
+      z.avail_out = uInt(std::min<std::uint64_t>(decoded.size() - done, std::numeric_limits<uInt>::max()));
       status = inflate(&z, Z_NO_FLUSH);
       done = z.total_out;
     }
@@ -235,6 +238,7 @@ std::vector<double> read_values(const Header& h, const std::string& path, std::u
     h.fail(h.find("encoding"), "NRRD encoding \"" + encoding + "\" is not read (raw, gzip and ascii are)");
   }
   const bool swap = type.bytes > 1 && h.value("endian", "little") == "big";
+  values.reserve(std::size_t(count));
   for (std::uint64_t i = 0; i < count; ++i) {
     unsigned char b[8];
     std::memcpy(b, decoded.data() + i * std::uint64_t(type.bytes), std::size_t(type.bytes));

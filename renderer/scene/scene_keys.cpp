@@ -129,7 +129,7 @@ std::vector<KeySchema> build_keys() {
       Key("data.file", T::string, "the data file (" + readable_extensions_text() + "), relative to the scene").none("required for \"vtk\""),
       Key("data.array", T::string, "the field's array")
           .derived("the active tensors, else one whose name says stress, then strain, else the first; vectors only without tensors"),
-      Key("data.step", T::integer, "the step of a time series (.pvd) to read, from 0").range(0, std::numeric_limits<int>::max())
+      Key("data.step", T::integer, "the step of a time series (.pvd, or Exodus with time steps) to read, from 0").range(0, std::numeric_limits<int>::max())
           .derived("every step, one image each"),
       Key("data.components", T::choice, "the order of a 6-component array's tensor components")
           .choices(component_order_names())
