@@ -35,9 +35,10 @@ double automatic_spacing(const Box3& domain, RadiusMapping mapping) {
   return domain.diagonal() / (maps_magnitude(mapping) ? 40.0 : 25.0);
 }
 
-SeedSpec automatic_seeds(const Box3& domain) {
+SeedSpec automatic_seeds(const Box3& domain, std::optional<int> plane_axis) {
   Eigen::Index longest = 0;
   domain.size().maxCoeff(&longest);
+  if (plane_axis) longest = *plane_axis;  // the grid across the normal is the plane
   const Eigen::Index u = (longest + 1) % 3, v = (longest + 2) % 3;
   SeedGridSpec grid;
   grid.corner = Vec3::Zero();

@@ -22,8 +22,9 @@ double automatic_max_length(const Box3& domain);
 double automatic_spacing(const Box3& domain, RadiusMapping mapping);
 // A 5×5 grid on the cross-section through the middle of the bounding box,
 // across its longest axis (in bounds fractions): trajectories along the
-// body of a bar, beam or rail.
-SeedSpec automatic_seeds(const Box3& domain);
+// body of a bar, beam or rail. For a 2-D result (`plane_axis`), a 5×5
+// grid over its plane, in the middle of the slab's thickness.
+SeedSpec automatic_seeds(const Box3& domain, std::optional<int> plane_axis = std::nullopt);
 
 // The glyph size, for every mapping. Sizes are isolated glyphs' largest
 // semi-axes, glyph_extent times the largest radius (see build_glyph_scene).

@@ -145,6 +145,14 @@ std::vector<Place> tensor_places(ComponentSet& set) {
 
 }  // namespace
 
+int tensor_name_rank(const std::string& name) {
+  std::string n = name;
+  std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (n.find("stress") != std::string::npos || n.find("sigma") != std::string::npos || n == "s") return 0;
+  if (n.find("strain") != std::string::npos || n.find("eps") != std::string::npos || n == "e") return 1;
+  return 2;
+}
+
 void join_component_arrays(vtkDataSetAttributes* attributes, vtkFieldData* records) {
   for (auto& [key, set] : component_sets(attributes, tensor_suffixes, never)) {
     const std::string name = joined_name(key.substr(0, key.find('\n')));

@@ -33,6 +33,11 @@ namespace hsb {
 // `records`. A set whose name is taken already is left as it is.
 void join_component_arrays(vtkDataSetAttributes* attributes, vtkFieldData* records);
 
+// How much an array's name says it is what a stress picture wants: 0 for
+// stress (stress, sigma, S), 1 for strain (strain, eps, E), 2 for neither.
+// The rule that picks among several arrays of tensors.
+int tensor_name_rank(const std::string& name);
+
 // Records that the array `name` of `data` is in VTK's order because the
 // file said which component is which (`how`: "named components stress_xx,
 // ..." or the format's layout): data.components then has nothing to say.

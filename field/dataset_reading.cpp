@@ -38,6 +38,7 @@
 #include "field/nifti_reading.h"
 #include "field/nrrd_reading.h"
 #include "field/partial_file.h"
+#include "field/plane_data.h"
 #include "field/vtk_data.h"
 
 namespace hsb {
@@ -131,8 +132,8 @@ void check_cell_sizes(vtkUnstructuredGrid* grid, const std::string& path) {
 }
 
 // What no reader checks but everything after relies on: finite point
-// coordinates, cells that name existing points, and some volume to sample.
-void check_dataset(vtkDataSet* data, const std::string& path) {
+// coordinates, cells of their type's size that name existing points.
+void check_cells(vtkDataSet* data, const std::string& path) {
   const vtkIdType points = data->GetNumberOfPoints();
   for (vtkIdType i = 0; i < points; ++i) {
     double p[3];
@@ -158,8 +159,14 @@ void check_dataset(vtkDataSet* data, const std::string& path) {
       }
     }
   }
+  if (data->GetNumberOfCells() == 0)
+    throw DataError(path + ": the data set has no cells: there is no volume to sample tensors in");
+}
+
+// Some volume to sample in: one cell with volume is enough (2-D results
+// are made a slab first: field/plane_data.h).
+void check_volume(vtkDataSet* data, const std::string& path) {
   const vtkIdType cells = data->GetNumberOfCells();
-  if (cells == 0) throw DataError(path + ": the data set has no cells: there is no volume to sample tensors in");
   // One cell with volume is enough: degenerate cells among good ones are
   // legal (no point lies inside them). Tetrahedra from VTK's own
   // triangulation of each 3D cell.
@@ -227,7 +234,7 @@ vtkSmartPointer<vtkDataSet> merged(vtkDataObject* read, const std::string& path)
 // `grid` with the points at the same place joined into one, as pieces
 // share them: otherwise each piece's faces at its neighbours read as the
 // body's boundary, and a trajectory stops at them. The cells must name
-// existing points (check_dataset).
+// existing points (check_cells).
 vtkSmartPointer<vtkUnstructuredGrid> joined(vtkUnstructuredGrid* grid) {
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToDouble();
@@ -340,12 +347,14 @@ void named_files(vtkXMLDataElement* element, const std::filesystem::path& folder
 vtkSmartPointer<vtkDataSet> read_checked(const std::string& path, const DataFormat& format, const VtkSession& vtk,
                                          int step) {
   vtkSmartPointer<vtkDataSet> data = read_one(path, vtk, step);
-  check_dataset(data, path);
+  check_cells(data, path);
   if (format.reader == VtkReaderKind::xml_pieces || format.reader == VtkReaderKind::exodus)
     data = joined(vtkUnstructuredGrid::SafeDownCast(data));
   join_component_arrays(data->GetPointData(), data->GetFieldData());
   join_component_arrays(data->GetCellData(), data->GetFieldData());
   record_writer_orders(data);
+  if (const std::optional<PlaneOfData> plane = find_plane(data, path)) data = extruded(data, *plane);
+  check_volume(data, path);
   return data;
 }
 

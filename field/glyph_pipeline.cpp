@@ -24,6 +24,7 @@ LoadedField make_field(const DataSpec& spec) {
     loaded.vectors = std::move(data.vectors);
     loaded.color = std::move(data.color);
     loaded.boundary = std::move(data.boundary);
+    loaded.plane_axis = data.plane_axis;
     loaded.warnings = std::move(data.warnings);
     if (const auto* mesh = dynamic_cast<const MeshVectorField*>(loaded.vectors.get()))
       for (const Vec3& v : mesh->values()) loaded.max_speed = std::max(loaded.max_speed, v.norm());
@@ -98,7 +99,7 @@ std::vector<Vec3> all_seeds(const SeedSpec& spec, const Box3& bounds) {
 // a flow, its largest speed).
 GlyphValues resolve_lengths(const GlyphPipelineSpec& spec, const Box3& domain, const LoadedField& loaded) {
   GlyphValues v;
-  v.seeds = spec.seeds.automatic() ? automatic_seeds(domain) : spec.seeds;
+  v.seeds = spec.seeds.automatic() ? automatic_seeds(domain, loaded.plane_axis) : spec.seeds;
   TrajectoryOptions& t = v.trajectory;
   t.family = spec.trajectory.family;
   t.step = spec.trajectory.step.value_or(automatic_step(domain));
@@ -226,6 +227,7 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   scene.domain = flow ? flow->bounds() : tensors->bounds();
   if (with_domain) with_domain(scene.domain);
   scene.boundary = std::move(loaded.boundary);
+  scene.plane_axis = loaded.plane_axis;
   scene.warnings = std::move(loaded.warnings);
   scene.values = resolve_lengths(spec, scene.domain, loaded);
   if (data.kind == DataKind::point_load) scene.values.singular_radius = data.point_load.singular_radius;
@@ -286,6 +288,9 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   scene.values.mapping = automatic_glyph_mapping(spec.size, eigenvalues, scene.domain, glyph_extent);
   size_sources(scene.sources, scene.values.mapping);
   if (flow && spec.stretch != 1.0) stretch_sources(scene.sources, spec.stretch);
+  if (scene.plane_axis)
+    flatten_sources(scene.sources, Vec3::Unit(*scene.plane_axis),
+                    spec.thickness ? std::optional<double>(0.5 * *spec.thickness) : std::nullopt);
   warn_about_the_result(scene, seeds.size());
   return scene;
 }

@@ -100,6 +100,9 @@ struct GlyphPipelineSpec {
   // ColorScalar::array colours by data.file.color_array.
   std::optional<ColorScalar> color;
   double stretch = 1.0;  // streamballs: the first radius (along the flow) times this
+  // 2-D data: the glyphs' thickness across the plane; none: each glyph's
+  // smaller in-plane diameter (flatten_sources).
+  std::optional<double> thickness;
   CurveSpec curve;        // placement curve
   std::string list_file;  // placement list: the CSV file (source_list.h)
 };
@@ -120,6 +123,7 @@ struct GlyphScene {
   std::vector<Trajectory> trajectories;
   std::vector<GlyphSource> sources;
   std::optional<TriangleMesh> boundary;  // a mesh's outer surface (none for analytic data)
+  std::optional<int> plane_axis;         // a 2-D result: its plane's normal axis (seen along it)
   GlyphValues values;
   std::vector<std::string> warnings;     // about the data, for the user
   // The peak resident memory this scene will take once rendered, the
@@ -134,6 +138,7 @@ struct LoadedField {
   std::unique_ptr<ScalarField> color;    // data.file.color_array, when named
   double max_speed = 0.0;                // of the flow's values
   std::optional<TriangleMesh> boundary;
+  std::optional<int> plane_axis;  // a 2-D result (field/vtk_data.h)
   std::vector<std::string> warnings;
 };
 

@@ -65,6 +65,15 @@ void stretch_sources(std::vector<GlyphSource>& sources, double factor) {
   for (GlyphSource& s : sources) s.radii.x() *= factor;
 }
 
+void flatten_sources(std::vector<GlyphSource>& sources, const Vec3& normal, std::optional<double> half_thickness) {
+  for (GlyphSource& s : sources) {
+    Eigen::Index across = 0;
+    (s.axes.transpose() * normal).cwiseAbs().maxCoeff(&across);
+    const double in_plane = std::min(s.radii[(across + 1) % 3], s.radii[(across + 2) % 3]);
+    s.radii[across] = half_thickness.value_or(in_plane);
+  }
+}
+
 std::vector<GlyphSource> place_sources(const Trajectory& trajectory, double spacing, const SourceMaker& make) {
   if (!(spacing > 0.0) || !std::isfinite(spacing))
     throw std::invalid_argument("glyph sources: spacing must be finite and > 0");

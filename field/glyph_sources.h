@@ -57,6 +57,11 @@ GlyphSource make_flow_source(const Vec3& centre, const Vec3& velocity, ColorScal
 // the flow), after sizing.
 void stretch_sources(std::vector<GlyphSource>& sources, double factor);
 
+// 2-D data: every source's radius along `normal` (along its axis nearest
+// it: for planar tensors, the medium one) set to `half_thickness`, or, when
+// none is given, to its smaller in-plane radius: lenses lying in the plane.
+void flatten_sources(std::vector<GlyphSource>& sources, const Vec3& normal, std::optional<double> half_thickness);
+
 // Sets every source's radii from its eigenvalues.
 void size_sources(std::vector<GlyphSource>& sources, const GlyphMapping& mapping);
 

@@ -35,6 +35,7 @@
 #include "field/eigenvalue_range.h"
 #include "field/component_arrays.h"
 #include "field/component_order.h"
+#include "field/plane_data.h"
 #include "field/dataset_reading.h"
 #include "field/input_file.h"
 #include "field/mesh_field.h"
@@ -71,16 +72,6 @@ struct ChosenArray {
   int components = 0;
   std::string note;  // how it was chosen among others, for the user; "" when there was no choice
 };
-
-// How much an array's name says it is what a stress picture wants: the
-// rule that picks among several arrays of tensors.
-int tensor_name_rank(const std::string& name) {
-  std::string n = name;
-  std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if (n.find("stress") != std::string::npos || n.find("sigma") != std::string::npos || n == "s") return 0;
-  if (n.find("strain") != std::string::npos || n.find("eps") != std::string::npos || n == "e") return 1;
-  return 2;
-}
 
 // Every array of 6 or 9 components, point data first (as `association`
 // allows), the active tensors of each ahead of the rest.
@@ -481,6 +472,7 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
   }
   if (!spec.color_array.empty()) out.color = color_field(data, spec, mesh_locator());
   out.boundary = boundary_surface(data, spec.path);
+  if (const std::optional<PlaneOfData> plane = plane_of(data)) out.plane_axis = plane->axis;
   return out;
 }
 
@@ -511,6 +503,9 @@ std::string describe_vtk_file(const VtkFileSpec& spec) {
     separator = ", ";
   }
   out << "\n  arrays    " << list_arrays(data) << "\n";
+  if (const std::optional<PlaneOfData> plane = plane_of(data))
+    out << "  plane     a 2-D result in " << "xyz"[plane->axis] << " = " << plane->coordinate << ", made a slab "
+        << plane->thickness << " thick; its tensors' out-of-plane entries set planar (the in-plane mean, no shear)\n";
 
   const ChosenArray chosen = choose_field_array(data, spec);
   const char* where = chosen.on_points ? "point" : "cell";

@@ -52,6 +52,8 @@ struct VtkData {
   std::unique_ptr<VectorField> vectors;   // vector data
   std::unique_ptr<ScalarField> color;     // VtkFileSpec::color_array, when named
   TriangleMesh boundary;              // the data set's outer surface
+  // A 2-D result (field/plane_data.h): the axis of its plane's normal.
+  std::optional<int> plane_axis;
   std::vector<std::string> warnings;  // e.g. a non-symmetric tensor array
 };
 

@@ -306,7 +306,7 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   }
 
   CameraRequest camera = s.camera;
-  if (!camera.view) camera.view = automatic_view(domain);
+  if (!camera.view) camera.view = automatic_view(domain, p.glyphs.plane_axis);
   const std::vector<Vec3> framed = framed_points(s.camera.frame, p, extent);
   p.camera = frame_camera(camera, framed, p.render.width, p.render.height, reserve);
   p.resolve("camera.position", toml_vec3(p.camera.position));

@@ -43,7 +43,8 @@ Vec3 automatic_up(const Vec3& view) {
   return std::fabs(view.normalized().z()) > 0.99 ? Vec3::UnitY() : Vec3::UnitZ();
 }
 
-Vec3 automatic_view(const Box3& data) {
+Vec3 automatic_view(const Box3& data, std::optional<int> plane_axis) {
+  if (plane_axis) return Vec3::Unit(*plane_axis);
   const Vec3 size = data.size();
   Eigen::Index longest = 0;
   size.maxCoeff(&longest);

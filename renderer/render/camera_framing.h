@@ -43,8 +43,10 @@ Vec3 automatic_up(const Vec3& view);
 
 // For a compact body, from the front-right and 23° above (lower than
 // "iso"); for one at least twice as long as it is wide, from the side and
-// above, its length across the picture, the near end a little closer.
-Vec3 automatic_view(const Box3& data);
+// above, its length across the picture, the near end a little closer. A
+// 2-D result (its plane's normal along `plane_axis`) straight from above
+// its plane.
+Vec3 automatic_view(const Box3& data, std::optional<int> plane_axis = std::nullopt);
 
 // The parts of the picture a legend takes, as fractions of its width (at
 // the right) and of its height (at the bottom); at most 0.4 each.

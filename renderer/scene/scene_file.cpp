@@ -183,6 +183,7 @@ void read_glyphs(TableReader& g, GlyphPipelineSpec& spec, const std::string& bas
     g.fail_at("placement", "= \"list\" needs glyphs.file, a CSV file of sources");
   }
   spec.stretch = g.number("stretch");
+  spec.thickness = g.optional_number("thickness");
   spec.spacing = g.optional_number("spacing");
   GlyphSizeSpec& size = spec.size;
   size.mapping = g.choice<RadiusMapping>("mapping", {{"linear", RadiusMapping::linear}, {"sqrt", RadiusMapping::sqrt},

@@ -175,6 +175,8 @@ std::vector<KeySchema> build_keys() {
           .automatic("three times the reference glyph's"),
       Key("glyphs.color_by", T::choice, "the colour scalar, or \"array:NAME\"").choices(color_by_choices())
           .automatic("\"lambda3\" for tensors, \"speed\" for a flow"),
+      Key("glyphs.thickness", T::number, "2-D data: the glyphs' thickness across the plane").length()
+          .automatic("each glyph's smaller in-plane diameter"),
       Key("glyphs.stretch", T::number, "streamballs: the radius along the flow times this").range(1.0, 100.0).fallback("1"),
       Key("glyphs.file", T::string, "placement = \"list\": the CSV file of sources").none(),
       Key("glyphs.curve.kind", T::choice, "the curve").choices({"line", "circle", "helix", "polyline"}).fallback("\"helix\""),

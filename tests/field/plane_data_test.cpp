@@ -1,0 +1,116 @@
+// 2-D results: triangles or quads in an axis plane, with plane tensors of
+// 3 components or full ones of 6, read as a thin slab whose tensors are
+// planar; anything else 2-D is refused with a reason.
+#include <gtest/gtest.h>
+
+#include <vtkCellType.h>
+#include <vtkDoubleArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include "field/automatic_values.h"
+#include "field/data_error.h"
+#include "field/vtk_data.h"
+#include "tests/temp_dir.h"
+
+namespace hsb {
+namespace {
+
+// An n × n grid of quads (or of triangles, two per quad) spanning [0, 2]
+// along the in-plane axes u, v of the plane `axis` = 0.5, with point
+// tensors from `tensor(u, v)`: 3 components (xx, yy, xy) or 6.
+std::string plane_mesh(const std::string& name, int axis, bool triangles, int components,
+                       const std::function<std::vector<double>(double, double)>& tensor, double lift_last = 0.0) {
+  const int n = 6, u = (axis + 1) % 3, v = (axis + 2) % 3;
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  auto values = vtkSmartPointer<vtkDoubleArray>::New();
+  values->SetName("stress");
+  values->SetNumberOfComponents(components);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      double p[3];
+      p[axis] = 0.5, p[u] = 2.0 * i / n, p[v] = 2.0 * j / n;
+      points->InsertNextPoint(p);
+      values->InsertNextTuple(tensor(p[u], p[v]).data());
+    }
+  double last[3];
+  points->GetPoint(points->GetNumberOfPoints() - 1, last);
+  last[axis] += lift_last;  // a surface bent out of its plane
+  points->SetPoint(points->GetNumberOfPoints() - 1, last);
+  grid->SetPoints(points);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const vtkIdType a = j * (n + 1) + i, b = a + 1, c = b + n + 1, d = a + n + 1;
+      if (triangles) {
+        const vtkIdType t1[3] = {a, b, c}, t2[3] = {a, d, c};  // the second clockwise: turned when extruded
+        grid->InsertNextCell(VTK_TRIANGLE, 3, t1);
+        grid->InsertNextCell(VTK_TRIANGLE, 3, t2);
+      } else {
+        const vtkIdType q[4] = {a, b, c, d};
+        grid->InsertNextCell(VTK_QUAD, 4, q);
+      }
+    }
+  grid->GetPointData()->AddArray(values);
+  const std::string path = (test_temp_dir("plane_data") / name).string();
+  auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
+  writer->SetInputData(grid);
+  writer->SetFileName(path.c_str());
+  writer->Write();
+  return path;
+}
+
+// Linear in-plane stresses: exact under linear and bilinear interpolation
+// along one axis (to the float precision of the written points).
+std::vector<double> plane_stress(double u, double v) { return {1 + u, 2 - 0.5 * v, 0.3 * u + 0.1}; }
+
+TEST(PlaneData, PlaneStressOnTrianglesIsReadInItsPlane) {
+  const VtkData data = load_vtk_data({plane_mesh("triangles.vtu", 2, true, 3, plane_stress)});
+  ASSERT_TRUE(data.field);
+  ASSERT_EQ(data.plane_axis, 2);
+  for (const Vec3& p : {Vec3(0.3, 0.4, 0.5), Vec3(1.7, 1.1, 0.5), Vec3(1.0, 1.9, 0.5)}) {
+    const std::optional<Sym3> s = data.field->sample(p);
+    ASSERT_TRUE(s) << p.transpose();
+    const std::vector<double> t = plane_stress(p.x(), p.y());
+    // The out-of-plane normal is the in-plane mean: λ1 and λ3 the in-plane principal stresses.
+    const Sym3 expected{t[0], t[1], 0.5 * (t[0] + t[1]), t[2], 0.0, 0.0};
+    EXPECT_LT((s->matrix() - expected.matrix()).norm(), 1e-6) << p.transpose();
+  }
+  EXPECT_FALSE(data.field->sample(Vec3(1, 1, 3)));  // far off the plane: outside
+}
+
+TEST(PlaneData, FullTensorsOnQuadsInAYPlaneLoseTheirOutOfPlaneShear) {
+  const auto full = [](double u, double v) { return std::vector<double>{1 + u, 5.0, 2 + v, 0.7, 0.9, 0.4}; };
+  const VtkData data = load_vtk_data({plane_mesh("quads.vtu", 1, false, 6, full)});
+  ASSERT_EQ(data.plane_axis, 1);
+  // u = z, v = x for the y plane: at (x, y, z) = (0.6, 0.5, 1.2) the tensor has xx 1.6 (v = x: 2 + 0.6), ...
+  const std::optional<Sym3> s = data.field->sample(Vec3(0.6, 0.5, 1.2));
+  ASSERT_TRUE(s);
+  const double xx = 1 + 1.2, zz = 2 + 0.6;  // u = z, v = x
+  const Sym3 expected{xx, 0.5 * (xx + zz), zz, 0.0, 0.0, 0.4};
+  EXPECT_LT((s->matrix() - expected.matrix()).norm(), 1e-6);
+}
+
+TEST(PlaneData, SeedsLieInThePlaneAndSurfacesOutOfOnePlaneAreRefused) {
+  const SeedSpec seeds = automatic_seeds(Box3{Vec3(0, 0, -0.1), Vec3(2, 4, 0.1)}, 2);
+  ASSERT_EQ(seeds.grids.size(), 1u);
+  EXPECT_EQ(seeds.grids[0].corner.z(), 0.5);  // the middle of the slab, in bounds fractions
+  EXPECT_EQ(seeds.grids[0].edge_u.z(), 0.0);
+  EXPECT_EQ(seeds.grids[0].edge_v.z(), 0.0);
+
+  // A surface bent out of its plane: one message, naming the file.
+  const std::string bent = plane_mesh("bent.vtu", 2, false, 6, [](double, double) { return std::vector<double>(6, 1.0); }, 0.3);
+  try {
+    load_vtk_data({bent});
+    FAIL() << "read a bent surface as plane data";
+  } catch (const DataError& e) {
+    EXPECT_NE(std::string(e.what()).find("bent.vtu: its cells are 2-D (no volume) but do not lie in one plane"),
+              std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace hsb
