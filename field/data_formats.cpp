@@ -24,8 +24,8 @@ std::vector<DataFormat> build_formats() {
       {"parallel VTK XML rectilinear grid", {".pvtr"}, "PRectilinearGrid", R::xml, ""},
       {"VTK XML multiblock data set", {".vtm", ".vtmb"}, "vtkMultiBlockDataSet", R::xml_pieces, ""},
       {"ParaView time series", {".pvd"}, "Collection", R::series, ""},
+      {"VTK XML polygonal data", {".vtp"}, "PolyData", R::xml, ""},
       // Known, not read yet: said as what they are.
-      {"VTK XML polygonal data", {".vtp"}, "PolyData", R::none, convert},
       {"VTK HDF", {".vtkhdf", ".hdf"}, "", R::none, convert},
       {"NRRD", {".nrrd", ".nhdr"}, "NRRD000", R::nrrd, ""},
       {"NIfTI", {".nii", ".nii.gz", ".hdr"}, "", R::nifti, ""},

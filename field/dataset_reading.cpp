@@ -192,6 +192,11 @@ void check_volume(vtkDataSet* data, const std::string& path) {
     }
   }
   std::ostringstream message;
+  if (three_d == 0 && data->GetNumberOfCells() > 0 && data->GetCell(0)->GetCellDimension() < 2) {
+    message << path << ": its " << cells << " cells are points or lines, with no area or volume: tensors are "
+            << "sampled in 3-D cells, or 2-D cells in a plane (a point cloud of tensors has nothing to trace in)";
+    throw DataError(message.str());
+  }
   message << path << ": none of its " << cells << " cells has any volume ("
           << (three_d ? std::to_string(three_d) + " are 3D cells, all flat" : std::string("none is a 3D cell"))
           << "): tensors are sampled inside 3D cells";

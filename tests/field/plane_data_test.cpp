@@ -3,7 +3,12 @@
 // planar; anything else 2-D is refused with a reason.
 #include <gtest/gtest.h>
 
+#include <vtkCellArray.h>
 #include <vtkCellType.h>
+#include <vtkGeometryFilter.h>
+#include <vtkPolyData.h>
+#include <vtkXMLPolyDataWriter.h>
+#include <vtkXMLUnstructuredGridReader.h>
 #include <vtkDoubleArray.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -92,6 +97,42 @@ TEST(PlaneData, FullTensorsOnQuadsInAYPlaneLoseTheirOutOfPlaneShear) {
   const double xx = 1 + 1.2, zz = 2 + 0.6;  // u = z, v = x
   const Sym3 expected{xx, 0.5 * (xx + zz), zz, 0.0, 0.0, 0.4};
   EXPECT_LT((s->matrix() - expected.matrix()).norm(), 1e-6);
+}
+
+// Polygonal data (.vtp) in a plane is the same 2-D result; a cloud of
+// points carrying tensors is refused with the reason.
+TEST(PlaneData, PolygonsInAVtpFileAreAPlaneAndPointsAreSaidSo) {
+  const std::string vtu = plane_mesh("for_vtp.vtu", 2, true, 3, plane_stress);
+  auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+  reader->SetFileName(vtu.c_str());
+  auto surface = vtkSmartPointer<vtkGeometryFilter>::New();
+  surface->SetInputConnection(reader->GetOutputPort());
+  surface->Update();
+  const std::string vtp = (test_temp_dir("plane_data") / "plate.vtp").string();
+  auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+  writer->SetInputData(surface->GetOutput());
+  writer->SetFileName(vtp.c_str());
+  writer->Write();
+  const VtkData data = load_vtk_data({vtp});
+  ASSERT_EQ(data.plane_axis, 2);
+  ASSERT_TRUE(data.field->sample(Vec3(1.1, 0.7, 0.5)));
+
+  auto cloud = vtkSmartPointer<vtkPolyData>::New();
+  cloud->SetPoints(surface->GetOutput()->GetPoints());
+  auto vertices = vtkSmartPointer<vtkCellArray>::New();
+  for (vtkIdType i = 0; i < cloud->GetNumberOfPoints(); ++i) vertices->InsertNextCell(1, &i);
+  cloud->SetVerts(vertices);
+  cloud->GetPointData()->AddArray(surface->GetOutput()->GetPointData()->GetArray("stress"));
+  const std::string points = (test_temp_dir("plane_data") / "cloud.vtp").string();
+  writer->SetInputData(cloud);
+  writer->SetFileName(points.c_str());
+  writer->Write();
+  try {
+    load_vtk_data({points});
+    FAIL() << "read a point cloud";
+  } catch (const DataError& e) {
+    EXPECT_NE(std::string(e.what()).find("cells are points or lines"), std::string::npos) << e.what();
+  }
 }
 
 TEST(PlaneData, SeedsLieInThePlaneAndSurfacesOutOfOnePlaneAreRefused) {
