@@ -274,7 +274,6 @@ std::vector<std::pair<double, std::string>> series_files(const std::string& path
   if (collection) collection = collection->FindNestedElementWithName("Collection");
   if (!collection) throw DataError(path + ": not a ParaView time series: no <Collection> in its <VTKFile>");
   std::vector<std::pair<double, std::string>> steps;
-  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
   for (int i = 0; i < collection->GetNumberOfNestedElements(); ++i) {
     vtkXMLDataElement* data_set = collection->GetNestedElement(i);
     const char* file = data_set->GetAttribute("file");
@@ -284,8 +283,7 @@ std::vector<std::pair<double, std::string>> series_files(const std::string& path
     // Parts of one step beyond the first are not read: a series of one
     // part each is what ParaView writes for a single data set.
     if (const char* part = data_set->GetAttribute("part"); part && std::string(part) != "0") continue;
-    const std::filesystem::path p(file);
-    steps.emplace_back(time, (p.is_absolute() ? p : folder / p).lexically_normal().string());
+    steps.emplace_back(time, file_named_in(path, file));
   }
   std::stable_sort(steps.begin(), steps.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   if (steps.empty()) throw DataError(path + ": its <Collection> lists no <DataSet file=...>");
@@ -293,20 +291,19 @@ std::vector<std::pair<double, std::string>> series_files(const std::string& path
 }
 
 // The one data set the file at `path` holds, before any check.
-vtkSmartPointer<vtkDataSet> read_one(const std::string& path, const VtkSession& vtk, int step) {
-  const DataFormat* format = format_by_extension(path);
-  if (!format || !format->readable()) throw DataError(unreadable_format_message(path));
-  check_header(path, *format);
-  if (format->reader == VtkReaderKind::exodus) {
+vtkSmartPointer<vtkDataSet> read_one(const std::string& path, const DataFormat& format, const VtkSession& vtk,
+                                     int step) {
+  check_header(path, format);
+  if (format.reader == VtkReaderKind::exodus) {
     const vtkSmartPointer<vtkDataObject> read = read_exodus(path, step);
     if (const std::string error = vtk.first_error(); !error.empty())
       throw DataError(path + ": cannot read it as Exodus II: " + error);
     return merged(read, path);
   }
-  if (format->reader == VtkReaderKind::nrrd) return read_nrrd(path);
-  if (format->reader == VtkReaderKind::nifti) return read_nifti(path);
+  if (format.reader == VtkReaderKind::nrrd) return read_nrrd(path);
+  if (format.reader == VtkReaderKind::nifti) return read_nifti(path);
   vtkSmartPointer<vtkAlgorithm> reader;
-  if (format->reader == VtkReaderKind::legacy) {
+  if (format.reader == VtkReaderKind::legacy) {
     auto legacy = vtkSmartPointer<vtkDataSetReader>::New();
     legacy->SetFileName(path.c_str());
     legacy->ReadAllTensorsOn();
@@ -330,7 +327,7 @@ vtkSmartPointer<vtkDataSet> read_one(const std::string& path, const VtkSession& 
   if (const std::string error = complaint(); !error.empty())
     throw DataError(path + ": cannot read it as a VTK data set: " + error);
   vtkSmartPointer<vtkDataSet> data =
-      format->reader == VtkReaderKind::xml_pieces ? merged(read, path)
+      format.reader == VtkReaderKind::xml_pieces ? merged(read, path)
                                                   : vtkSmartPointer<vtkDataSet>(vtkDataSet::SafeDownCast(read));
   if (const std::string error = complaint(); !error.empty() || !data || data->GetNumberOfPoints() == 0)
     throw DataError(path + ": cannot read it as a VTK data set: " + (error.empty() ? "no points in it" : error));
@@ -338,20 +335,17 @@ vtkSmartPointer<vtkDataSet> read_one(const std::string& path, const VtkSession& 
 }
 
 // The files that `element` and the elements in it name (a piece's Source,
-// a block's or a step's file), relative to `folder`.
-void named_files(vtkXMLDataElement* element, const std::filesystem::path& folder, std::vector<std::string>& out) {
+// a block's or a step's file), as named in the file `from`.
+void named_files(vtkXMLDataElement* element, const std::string& from, std::vector<std::string>& out) {
   for (const char* attribute : {"Source", "file"})
-    if (const char* file = element->GetAttribute(attribute)) {
-      const std::filesystem::path p(file);
-      out.push_back((p.is_absolute() ? p : folder / p).lexically_normal().string());
-    }
-  for (int i = 0; i < element->GetNumberOfNestedElements(); ++i) named_files(element->GetNestedElement(i), folder, out);
+    if (const char* file = element->GetAttribute(attribute)) out.push_back(file_named_in(from, file));
+  for (int i = 0; i < element->GetNumberOfNestedElements(); ++i) named_files(element->GetNestedElement(i), from, out);
 }
 
 // The file read, checked and made whole: what runs in the child.
 vtkSmartPointer<vtkDataSet> read_checked(const std::string& path, const DataFormat& format, const VtkSession& vtk,
                                          int step) {
-  vtkSmartPointer<vtkDataSet> data = read_one(path, vtk, step);
+  vtkSmartPointer<vtkDataSet> data = read_one(path, format, vtk, step);
   check_cells(data, path);
   if (format.reader == VtkReaderKind::xml_pieces || format.reader == VtkReaderKind::exodus)
     data = joined(vtkUnstructuredGrid::SafeDownCast(data));
@@ -474,7 +468,7 @@ std::vector<std::string> data_files_read(const std::string& path, int step) {
     auto parser = vtkSmartPointer<vtkXMLDataParser>::New();
     parser->SetFileName(path.c_str());
     if (parser->Parse() && parser->GetRootElement())
-      named_files(parser->GetRootElement(), std::filesystem::path(path).parent_path(), files);
+      named_files(parser->GetRootElement(), path, files);
   }
   return files;
 }

@@ -1,5 +1,7 @@
 #include "field/input_file.h"
 
+#include <filesystem>
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -21,6 +23,11 @@ std::string unreadable_input(const std::string& path) {
   if (fd < 0) return std::string("cannot be read: ") + std::strerror(errno);
   close(fd);
   return "";
+}
+
+std::string file_named_in(const std::string& from, const std::string& named) {
+  const std::filesystem::path p(named);
+  return (p.is_absolute() ? p : std::filesystem::path(from).parent_path() / p).lexically_normal().string();
 }
 
 }  // namespace hsb

@@ -13,4 +13,8 @@ namespace hsb {
 // socket or device)" or "cannot be read: Permission denied".
 std::string unreadable_input(const std::string& path);
 
+// The file `named` in the data file `from` (a piece, a block, a step, a
+// detached header's data): relative to `from`'s folder unless absolute.
+std::string file_named_in(const std::string& from, const std::string& named);
+
 }  // namespace hsb

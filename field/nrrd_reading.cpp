@@ -22,6 +22,7 @@
 
 #include "field/component_arrays.h"
 #include "field/data_error.h"
+#include "field/input_file.h"
 #include "field/sym3.h"
 
 namespace hsb {
@@ -170,8 +171,7 @@ std::string data_file(const Header& h, const std::string& path) {
   if (!f) return path;
   if (f->value.rfind("LIST", 0) == 0 || f->value.find(' ') != std::string::npos)
     h.fail(f, "a data file list or pattern is not read; give one data file");
-  const std::filesystem::path p(f->value);
-  return (p.is_absolute() ? p : std::filesystem::path(path).parent_path() / p).lexically_normal().string();
+  return file_named_in(path, f->value);
 }
 
 // The data's bytes: `count` values of `type`, decoded as the header says.

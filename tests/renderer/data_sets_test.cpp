@@ -7,6 +7,7 @@
 
 #include <filesystem>
 
+#include "field/data_formats.h"
 #include "field/data_info.h"
 #include "renderer/app/export_job.h"
 #include "renderer/app/pinned_scene.h"
@@ -21,9 +22,12 @@ namespace fs = std::filesystem;
 
 std::vector<std::string> data_files() {
   std::vector<std::string> files;
-  for (const char* folder : {"/scenes/data", "/scenes/data/generated"})
-    for (const auto& entry : fs::directory_iterator(std::string(HSB_SOURCE_DIR) + folder))
-      if (entry.is_regular_file() && is_data_file(entry.path().string())) files.push_back(entry.path().string());
+  // Every file of a format hsb reads, pieces and steps of the formats' sets included.
+  for (const char* folder : {"/scenes/data", "/scenes/data/generated", "/scenes/data/formats"})
+    if (fs::is_directory(std::string(HSB_SOURCE_DIR) + folder))
+      for (const auto& entry : fs::directory_iterator(std::string(HSB_SOURCE_DIR) + folder))
+        if (entry.is_regular_file() && is_readable_data_file(entry.path().string()))
+          files.push_back(entry.path().string());
   std::sort(files.begin(), files.end());
   return files;
 }
