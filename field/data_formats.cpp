@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <fstream>
 
 namespace hsb {
@@ -109,6 +110,17 @@ const DataFormat* format_by_content(const std::string& path) {
   return nullptr;
 }
 
+std::string file_stem(const std::string& path) {
+  const std::string name = std::filesystem::path(path).filename().string();
+  if (const DataFormat* format = format_by_extension(path)) {
+    std::size_t longest = 0;
+    for (const std::string& e : format->extensions)
+      if (ends_with(lower(name), e)) longest = std::max(longest, e.size());
+    if (longest > 0 && longest < name.size()) return name.substr(0, name.size() - longest);
+  }
+  return std::filesystem::path(path).stem().string();
+}
+
 bool is_readable_data_file(const std::string& path) {
   const DataFormat* f = format_by_extension(path);
   return f && f->readable();
@@ -143,6 +155,8 @@ std::string readable_extensions_text() {
 std::string unreadable_format_message(const std::string& path) {
   const DataFormat* by_name = format_by_extension(path);
   const DataFormat* by_content = format_by_content(path);
+  // Exodus is netCDF, whose version 4 is HDF5 inside: its content is not another format.
+  if (by_name && by_name->reader == VtkReaderKind::exodus && by_content && by_content->name == "HDF5") by_content = nullptr;
   // The content decides where it says anything; a readable name whose
   // content says nothing is left to the reader's own checks.
   const DataFormat* format = by_content ? by_content : by_name;

@@ -44,6 +44,10 @@ const DataFormat* format_by_extension(const std::string& path);
 // when it cannot be read).
 const DataFormat* format_by_content(const std::string& path);
 
+// `path`'s file name without its format's extension ("brain" for
+// "a/brain.nii.gz"), or without its last extension when no format has it.
+std::string file_stem(const std::string& path);
+
 // Whether `path` names a data file hsb reads, by its extension.
 bool is_readable_data_file(const std::string& path);
 

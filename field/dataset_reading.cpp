@@ -23,9 +23,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <iterator>
 #include <map>
 #include <sstream>
 
@@ -52,9 +54,7 @@ double trial_base_seconds = 30.0;
 // signature; a file of another known format under a
 // VTK name is said as what it is.
 void check_header(const std::string& path, const DataFormat& format) {
-  if (const DataFormat* content = format_by_content(path); content && content != &format &&
-                                                             content->reader != format.reader)
-    throw DataError(unreadable_format_message(path));
+  if (const std::string other = unreadable_format_message(path); !other.empty()) throw DataError(other);
   std::ifstream in(path, std::ios::binary);
   std::string head(256, '\0');
   in.read(head.data(), std::streamsize(head.size()));
@@ -290,6 +290,30 @@ std::vector<std::pair<double, std::string>> series_files(const std::string& path
   return steps;
 }
 
+// A legacy file written with the type names of VTK's 5.1 format that
+// VTK 9.1's reader does not know (meshio, and so SfePy, write
+// "vtktypeint32" for an int array) copied with the older names of the same
+// types, to `copy`; false when the file has none. Only whole words that
+// end a header line are renamed.
+bool with_known_type_names(const std::string& path, const std::string& copy) {
+  static const std::pair<const char*, const char*> names[] = {
+      {" vtktypeint8\n", " signed_char\n"}, {" vtktypeuint8\n", " unsigned_char\n"},
+      {" vtktypeint16\n", " short\n"},      {" vtktypeuint16\n", " unsigned_short\n"},
+      {" vtktypeint32\n", " int\n"},        {" vtktypeuint32\n", " unsigned_int\n"},
+      {" vtktypefloat32\n", " float\n"},    {" vtktypefloat64\n", " double\n"}};
+  std::ifstream in(path, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (text.find(" vtktype") == std::string::npos) return false;
+  bool renamed = false;
+  for (const auto& [from, to] : names)
+    for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + std::strlen(to))) {
+      text.replace(at, std::strlen(from), to);
+      renamed = true;
+    }
+  if (renamed) std::ofstream(copy, std::ios::binary) << text;
+  return renamed;
+}
+
 // The one data set the file at `path` holds, before any check.
 vtkSmartPointer<vtkDataSet> read_one(const std::string& path, const DataFormat& format, const VtkSession& vtk,
                                      int step) {
@@ -303,9 +327,10 @@ vtkSmartPointer<vtkDataSet> read_one(const std::string& path, const DataFormat& 
   if (format.reader == VtkReaderKind::nrrd) return read_nrrd(path);
   if (format.reader == VtkReaderKind::nifti) return read_nifti(path);
   vtkSmartPointer<vtkAlgorithm> reader;
+  const PartialFile renamed((std::filesystem::temp_directory_path() / ("hsb-types-" + std::to_string(::getpid()) + ".vtk")).string());
   if (format.reader == VtkReaderKind::legacy) {
     auto legacy = vtkSmartPointer<vtkDataSetReader>::New();
-    legacy->SetFileName(path.c_str());
+    legacy->SetFileName(with_known_type_names(path, renamed.path()) ? renamed.path().c_str() : path.c_str());
     legacy->ReadAllTensorsOn();
     legacy->ReadAllScalarsOn();
     legacy->ReadAllVectorsOn();

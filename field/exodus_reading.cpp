@@ -42,6 +42,32 @@ std::vector<std::string> variable_names(const std::string& path, ex_entity_type 
   return names;
 }
 
+// Whether the Exodus library itself reads every nodal variable of the file
+// at `step`: VTK's reader does not say when it cannot, and hands on
+// uninitialised values (a file meshio wrote reads so). Throws DataError.
+void check_nodal_variables(const std::string& path, int step, std::size_t variables) {
+  int compute_word = 8, io_word = 0;
+  float version = 0.0f;
+  const int file = ex_open(path.c_str(), EX_READ, &compute_word, &io_word, &version);
+  if (file < 0) throw DataError(path + ": the Exodus library cannot open it");
+  const int64_t nodes = ex_inquire_int(file, EX_INQ_NODES);
+  std::vector<double> values(std::size_t(std::max<int64_t>(nodes, 1)));
+  int failed = 0;
+  for (std::size_t v = 0; v < variables && !failed; ++v)
+    if (ex_get_var(file, std::max(step, 0) + 1, EX_NODAL, int(v) + 1, 1, nodes, values.data()) != EX_NOERR)
+      failed = int(v) + 1;  // a warning too: it leaves the values unread
+  const char* message = nullptr;
+  const char* function = nullptr;
+  int code = 0;
+  if (failed) ex_get_err(&message, &function, &code);
+  ex_close(file);
+  if (failed)
+    throw DataError(path + ": the Exodus library cannot read its nodal variable " + std::to_string(failed) +
+                    (message && *message ? std::string(" (") + message + ")" : std::string()) +
+                    ": the file does not follow Exodus II as written by the Exodus library; write it with the "
+                    "Exodus library (SEACAS, VTK, ParaView), or as .vtu");
+}
+
 // Which variables each of the reader's arrays of `type` holds: its arrays
 // take the file's variables in order, as many as they have components.
 // Empty when they do not add up (a reader that gloms otherwise): the
@@ -100,7 +126,9 @@ vtkSmartPointer<vtkDataObject> read_exodus(const std::string& path, int step) {
   reader->SetTimeStep(std::max(step, 0));
   reader->Update();
 
-  const auto nodal = glommed_variables(reader, vtkExodusIIReader::NODAL, variable_names(path, EX_NODAL));
+  const std::vector<std::string> nodal_names = variable_names(path, EX_NODAL);
+  check_nodal_variables(path, step, nodal_names.size());
+  const auto nodal = glommed_variables(reader, vtkExodusIIReader::NODAL, nodal_names);
   const auto element = glommed_variables(reader, vtkExodusIIReader::ELEM_BLOCK, variable_names(path, EX_ELEM_BLOCK));
   vtkSmartPointer<vtkDataObject> read = reader->GetOutputDataObject(0);
   if (auto* composite = vtkCompositeDataSet::SafeDownCast(read)) {

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Regenerates the test data sets in scenes/data/generated/ from the generator
-# scripts in scenes/data/generators/ (see the README.md there). Installs the
+# Regenerates the test data sets in scenes/data/generated/ and
+# scenes/data/formats/ from the generator scripts in scenes/data/generators/
+# and scenes/data/generators/formats/ (see the README.md in each). Installs the
 # Debian packages it needs (only those missing). Deterministic: no random
 # input without a fixed seed. Not run by the tests; the outputs are committed.
 #
@@ -9,7 +10,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(python3-sfepy python3-vtk9 python3-numpy python3-scipy)
+packages=(python3-sfepy python3-vtk9 python3-numpy python3-scipy
+          python3-meshio python3-nibabel python3-netcdf4 python3-gmsh netcdf-bin teem-apps)
 missing=()
 for p in "${packages[@]}"; do
   status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
@@ -38,6 +40,13 @@ for script in vtk_point_load hex_cube_patch_load beam_bending \
   echo "generate-data: $script"
   (cd "$gen" && "$PY" "$script.py" "$out")
 done
+
+# The result files of other tools and formats (scenes/data/formats).
+if [[ -z ${1:-} ]]; then
+  scenes/data/generators/formats/run_all.sh
+else
+  scenes/data/generators/formats/run_all.sh "$out/formats"
+fi
 
 # Re-read every file with VTK (fails on any VTK warning) and print a summary.
 "$PY" "$gen/summarize.py" "$out"

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "field/data_formats.h"
 #include "field/vtk_export.h"
 #include "renderer/app/povray_export.h"
 #include "renderer/app/prepared_scene.h"
@@ -12,7 +13,7 @@ std::vector<std::string> run_export_job(const ExportJob& job) {
   SceneSpec spec = load_scene_or_data_file(job.scene_path, job.overrides);
   const std::filesystem::path dir(job.output_dir);
   std::filesystem::create_directories(dir);
-  const std::string stem = std::filesystem::path(job.scene_path).stem().string();
+  const std::string stem = file_stem(job.scene_path);
   const ColorManagement color = scene_color_management(spec);
   const std::unique_ptr<PreparedScene> p = prepare_scene(std::move(spec), color);
 

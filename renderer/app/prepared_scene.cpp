@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "field/data_formats.h"
 #include "field/memory_budget.h"
 #include "renderer/image/image_output.h"
 #include <sstream>
@@ -190,7 +191,7 @@ double glyph_extent(const SurfaceSpec& surface) {
 }
 
 std::string output_file_name(const SceneSpec& spec) {
-  return spec.output.file.value_or(std::filesystem::path(spec.path).stem().string() + ".png");
+  return spec.output.file.value_or(file_stem(spec.path) + ".png");
 }
 
 std::array<int, 2> picture_size(const SceneSpec& s) {

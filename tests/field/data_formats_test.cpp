@@ -49,6 +49,13 @@ TEST(DataFormats, TheFirstBytesNameTheFormat) {
   EXPECT_EQ(format_by_content(write("h", "")), nullptr);
 }
 
+TEST(DataFormats, AFileStemLosesItsWholeExtension) {
+  EXPECT_EQ(file_stem("scans/brain.nii.gz"), "brain");
+  EXPECT_EQ(file_stem("beam.vtu"), "beam");
+  EXPECT_EQ(file_stem("scene.v2.toml"), "scene.v2");
+  EXPECT_EQ(file_stem("archive.tar.gz"), "archive.tar");
+}
+
 TEST(DataFormats, AFileHsbDoesNotReadIsSaidAsWhatItIs) {
   const std::string msh = write("bracket.msh", "$MeshFormat\n4.1 0 8\n");
   const std::string message = unreadable_format_message(msh);
