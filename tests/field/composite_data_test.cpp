@@ -216,6 +216,20 @@ TEST(CompositeData, ExodusComponentVariablesReadAsOneTensor) {
   }
 }
 
+// meshio's Exodus writer makes files whose variables the Exodus library
+// cannot find ("could not find nodal variables"), and VTK's reader then
+// hands on uninitialised memory as values, silently: such a file is refused.
+TEST(CompositeData, AnExodusFileTheExodusLibraryCannotReadIsRefused) {
+  const std::string path = std::string(HSB_SOURCE_DIR) + "/tests/field/data/meshio_nodal_variables.e";
+  try {
+    load_vtk_data({path});
+    FAIL() << "read values the Exodus library could not";
+  } catch (const DataError& e) {
+    EXPECT_NE(std::string(e.what()).find("the Exodus library cannot read its nodal variable 1"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(CompositeData, ASeriesThatIsNotOneIsSaidSo) {
   const std::string path = (test_temp_dir("composite") / "broken.pvd").string();
   std::ofstream(path) << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n</VTKFile>\n";
