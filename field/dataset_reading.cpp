@@ -26,6 +26,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iterator>
 #include <map>
@@ -400,6 +401,30 @@ void refuse_failed_child(const ChildResult& child, const std::string& path, cons
                     std::to_string(int(child_seconds(path))) + " s");
 }
 
+// Runs `work` on the user's file `path` in a child process: a crash or a
+// hang there is one DataError naming `what` ran, and so is an exception
+// `work` throws (its message, passed back through a file). `work` leaves
+// its result in files of its own.
+void run_on_file_in_child(const std::string& path, const char* what, const std::function<void()>& work) {
+  const PartialFile failure(
+      (std::filesystem::temp_directory_path() / ("hsb-failure-" + std::to_string(::getpid()) + ".txt")).string());
+  const ChildResult child = run_in_child(
+      [&] {
+        try {
+          work();
+        } catch (const std::exception& e) {
+          std::ofstream(failure.path()) << e.what();
+        }
+      },
+      child_seconds(path));
+  refuse_failed_child(child, path, what);
+  if (std::ifstream said{failure.path()}) {
+    std::stringstream text;
+    text << said.rdbuf();
+    throw DataError(text.str());
+  }
+}
+
 // The user's file is parsed only in a child process: VTK's readers trust
 // the counts a file declares, so a corrupt file can make them read or
 // write past their buffers, loop, or corrupt the heap without crashing
@@ -408,30 +433,18 @@ void refuse_failed_child(const ChildResult& child, const std::string& path, cons
 // plain VTK XML file of VTK's own making, which this process then reads.
 vtkSmartPointer<vtkDataSet> read_in_child(const std::string& path, const DataFormat& format, const VtkSession& vtk,
                                           int step) {
-  const std::string base = (std::filesystem::temp_directory_path() / ("hsb-read-" + std::to_string(::getpid()))).string();
-  const PartialFile clean(base + ".vtkxml"), failure(base + ".txt");
-  const ChildResult child = run_in_child(
-      [&] {
-        try {
-          const vtkSmartPointer<vtkDataSet> data = read_checked(path, format, vtk, step);
-          auto writer = vtkSmartPointer<vtkXMLDataSetWriter>::New();
-          writer->SetInputData(data);
-          writer->SetFileName(clean.path().c_str());
-          writer->SetDataModeToAppended();
-          writer->EncodeAppendedDataOff();
-          writer->SetCompressorTypeToNone();
-          if (!writer->Write()) std::filesystem::remove(clean.path());
-        } catch (const std::exception& e) {
-          std::ofstream(failure.path()) << e.what();
-        }
-      },
-      child_seconds(path));
-  refuse_failed_child(child, path, "reader");
-  if (std::ifstream said{failure.path()}) {
-    std::stringstream text;
-    text << said.rdbuf();
-    throw DataError(text.str());
-  }
+  const PartialFile clean(
+      (std::filesystem::temp_directory_path() / ("hsb-read-" + std::to_string(::getpid()) + ".vtkxml")).string());
+  run_on_file_in_child(path, "reader", [&] {
+    const vtkSmartPointer<vtkDataSet> data = read_checked(path, format, vtk, step);
+    auto writer = vtkSmartPointer<vtkXMLDataSetWriter>::New();
+    writer->SetInputData(data);
+    writer->SetFileName(clean.path().c_str());
+    writer->SetDataModeToAppended();
+    writer->EncodeAppendedDataOff();
+    writer->SetCompressorTypeToNone();
+    if (!writer->Write()) std::filesystem::remove(clean.path());
+  });
   // No child to be had (or it could not write): read it here after all.
   if (!std::filesystem::exists(clean.path())) return read_checked(path, format, vtk, step);
   auto reader = vtkSmartPointer<vtkXMLGenericDataObjectReader>::New();
@@ -446,24 +459,12 @@ vtkSmartPointer<vtkDataSet> read_in_child(const std::string& path, const DataFor
 // like every parse of a user's file; none for a file of one step.
 std::vector<double> exodus_steps(const std::string& path) {
   const VtkSession vtk;
-  const std::string base = (std::filesystem::temp_directory_path() / ("hsb-times-" + std::to_string(::getpid()))).string();
-  const PartialFile said(base + ".txt"), failure(base + ".error");
-  const ChildResult child = run_in_child(
-      [&] {
-        try {
-          std::ofstream out(said.path());
-          for (double t : exodus_times(path)) out << std::setprecision(17) << t << "\n";
-        } catch (const std::exception& e) {
-          std::ofstream(failure.path()) << e.what();
-        }
-      },
-      child_seconds(path));
-  refuse_failed_child(child, path, "Exodus reader");
-  if (std::ifstream error{failure.path()}) {
-    std::stringstream text;
-    text << error.rdbuf();
-    throw DataError(text.str());
-  }
+  const PartialFile said(
+      (std::filesystem::temp_directory_path() / ("hsb-times-" + std::to_string(::getpid()) + ".txt")).string());
+  run_on_file_in_child(path, "Exodus reader", [&] {
+    std::ofstream out(said.path());
+    for (double t : exodus_times(path)) out << std::setprecision(17) << t << "\n";
+  });
   std::vector<double> times;
   std::ifstream in(said.path());
   if (!in) times = exodus_times(path);  // no child to be had

@@ -289,3 +289,20 @@ def plate_grid(points, hexes):
     ug = common.unstructured_grid(points, [(vtk.VTK_HEXAHEDRON, hexes)])
     common.check_positive_volumes(ug)
     return ug
+
+
+def teem_helix(name, samples, encoding):
+    """Teem's `tend helix` at `samples`^3, saved by `unu save` as NRRD with
+    `encoding` to `name` in the output folder; returns the path."""
+    import subprocess
+    folder = out_dir()
+    helix = subprocess.Popen(['/usr/bin/teem-tend', 'helix', '-s'] + [str(samples)] * 3 + ['-o', '-'],
+                             stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, cwd=folder)
+    subprocess.run(['/usr/bin/teem-unu', 'save', '-f', 'nrrd', '-e', encoding, '-o', name],
+                   stdin=helix.stdout, check=True, cwd=folder)
+    helix.stdout.close()
+    if helix.wait() != 0:
+        raise RuntimeError('teem-tend helix failed')
+    path = os.path.join(folder, name)
+    report(path)
+    return path

@@ -28,21 +28,11 @@ Deterministic:
 Teem's gzip header carries no time stamp.
 """
 import os
-import subprocess
 
 import formats_common as fc
 
 folder = fc.out_dir()
-name = 'teem_helix.nrrd'
-helix = subprocess.Popen(['/usr/bin/teem-tend', 'helix', '-s', '32', '32', '32', '-o', '-'],
-                         stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, cwd=folder)
-subprocess.run(['/usr/bin/teem-unu', 'save', '-f', 'nrrd', '-e', 'gzip', '-o', name],
-               stdin=helix.stdout, check=True, cwd=folder)
-helix.stdout.close()
-if helix.wait() != 0:
-    raise RuntimeError('teem-tend helix failed')
-path = os.path.join(folder, name)
-fc.report(path)
+path = fc.teem_helix('teem_helix.nrrd', 32, 'gzip')
 with open(path, 'rb') as f:
     header = f.read(1024).split(b'\n\n')[0].decode()
 print(header)

@@ -16,21 +16,11 @@ eigenvalues 0.006 / 0.002 / 0.001, in an isotropic background of 0.5),
 coarser: 16 samples across.
 """
 import os
-import subprocess
 
 import formats_common as fc
 
 folder = fc.out_dir()
-name = 'teem_helix_detached.nhdr'
-helix = subprocess.Popen(['/usr/bin/teem-tend', 'helix', '-s', '16', '16', '16', '-o', '-'],
-                         stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, cwd=folder)
-subprocess.run(['/usr/bin/teem-unu', 'save', '-f', 'nrrd', '-e', 'raw', '-o', name],
-               stdin=helix.stdout, check=True, cwd=folder)
-helix.stdout.close()
-if helix.wait() != 0:
-    raise RuntimeError('teem-tend helix failed')
-path = os.path.join(folder, name)
-fc.report(path)
+path = fc.teem_helix('teem_helix_detached.nhdr', 16, 'raw')
 with open(path) as f:
     header = f.read()
 print(header, end='')
