@@ -16,6 +16,8 @@
 #include <map>
 #include <optional>
 
+#include "field/component_order.h"
+
 namespace hsb {
 namespace {
 
@@ -140,7 +142,8 @@ std::vector<Place> tensor_places(ComponentSet& set) {
       set.names.emplace(pair[0], lower->second);
       set.names.erase(lower);
     }
-  return {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
+  const ComponentOrder::Entries& vtk = component_order("vtk")->entries;
+  return std::vector<Place>(vtk.begin(), vtk.end());
 }
 
 }  // namespace

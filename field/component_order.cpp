@@ -43,4 +43,11 @@ Sym3 tensor_in_order(const double* six, const ComponentOrder& order) {
   return Sym3::symmetric_part(m);
 }
 
+std::array<double, 6> components_in_order(const Sym3& t, const ComponentOrder& order) {
+  const Mat3 m = t.matrix();
+  std::array<double, 6> six{};
+  for (std::size_t k = 0; k < 6; ++k) six[k] = m(order.entries[k][0], order.entries[k][1]);
+  return six;
+}
+
 }  // namespace hsb

@@ -29,4 +29,7 @@ const ComponentOrder* component_order(const std::string& name);
 // The tensor whose six components, in `order`, are `six`.
 Sym3 tensor_in_order(const double* six, const ComponentOrder& order);
 
+// The six components of `t` in `order`: tensor_in_order() undone.
+std::array<double, 6> components_in_order(const Sym3& t, const ComponentOrder& order);
+
 }  // namespace hsb

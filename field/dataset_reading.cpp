@@ -50,26 +50,15 @@ namespace {
 double trial_base_seconds = 30.0;
 
 // A file of random bytes, or of another format, gets a clear message
-// before VTK sees it: legacy files start with their version line, XML
-// files with "<?xml" or "<VTKFile", Exodus files with netCDF's or HDF5's
-// signature; a file of another known format under a
-// VTK name is said as what it is.
+// before VTK's readers see it: legacy files start with their version
+// line, XML files with "<?xml" or "<VTKFile", Exodus files with netCDF's
+// or HDF5's signature. (NRRD and NIfTI are read by readers that check
+// their own headers.)
 void check_header(const std::string& path, const DataFormat& format) {
-  if (const std::string other = unreadable_format_message(path); !other.empty()) throw DataError(other);
   std::ifstream in(path, std::ios::binary);
   std::string head(256, '\0');
   in.read(head.data(), std::streamsize(head.size()));
   head.resize(std::size_t(in.gcount()));
-  if (format.reader == VtkReaderKind::nifti) {
-    const DataFormat* content = format_by_content(path);
-    if (head.rfind("\x1f\x8b", 0) != 0 && (!content || content->reader != VtkReaderKind::nifti))
-      throw DataError(path + ": not a NIfTI file: no NIfTI magic (\"n+1\", \"ni1\", \"n+2\") and not gzip-compressed");
-    return;
-  }
-  if (format.reader == VtkReaderKind::nrrd) {
-    if (head.rfind("NRRD000", 0) != 0) throw DataError(path + ":1: not a NRRD file: it does not start with \"NRRD000\"");
-    return;
-  }
   if (format.reader == VtkReaderKind::exodus) {
     if (head.rfind("CDF", 0) != 0 && head.rfind("\x89HDF\r\n\x1a\n", 0) != 0)
       throw DataError(path + ": not an Exodus II file: it is neither netCDF (\"CDF\") nor HDF5 inside");
@@ -295,7 +284,8 @@ std::vector<std::pair<double, std::string>> series_files(const std::string& path
 // VTK 9.1's reader does not know (meshio, and so SfePy, write
 // "vtktypeint32" for an int array) copied with the older names of the same
 // types, to `copy`; false when the file has none. Only whole words that
-// end a header line are renamed.
+// end a header line are renamed, and only in files of version 5, the only
+// ones that have them: no other file is read twice.
 bool with_known_type_names(const std::string& path, const std::string& copy) {
   static const std::pair<const char*, const char*> names[] = {
       {" vtktypeint8\n", " signed_char\n"}, {" vtktypeuint8\n", " unsigned_char\n"},
@@ -303,6 +293,10 @@ bool with_known_type_names(const std::string& path, const std::string& copy) {
       {" vtktypeint32\n", " int\n"},        {" vtktypeuint32\n", " unsigned_int\n"},
       {" vtktypefloat32\n", " float\n"},    {" vtktypefloat64\n", " double\n"}};
   std::ifstream in(path, std::ios::binary);
+  std::string version;
+  std::getline(in, version);
+  if (version.rfind("# vtk DataFile Version 5", 0) != 0) return false;
+  in.seekg(0);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (text.find(" vtktype") == std::string::npos) return false;
   bool renamed = false;
@@ -318,6 +312,10 @@ bool with_known_type_names(const std::string& path, const std::string& copy) {
 // The one data set the file at `path` holds, before any check.
 vtkSmartPointer<vtkDataSet> read_one(const std::string& path, const DataFormat& format, const VtkSession& vtk,
                                      int step) {
+  // A file of another known format under this one's name is said as what it is.
+  if (const std::string other = unreadable_format_message(path); !other.empty()) throw DataError(other);
+  if (format.reader == VtkReaderKind::nrrd) return read_nrrd(path);
+  if (format.reader == VtkReaderKind::nifti) return read_nifti(path);
   check_header(path, format);
   if (format.reader == VtkReaderKind::exodus) {
     const vtkSmartPointer<vtkDataObject> read = read_exodus(path, step);
@@ -325,8 +323,6 @@ vtkSmartPointer<vtkDataSet> read_one(const std::string& path, const DataFormat& 
       throw DataError(path + ": cannot read it as Exodus II: " + error);
     return merged(read, path);
   }
-  if (format.reader == VtkReaderKind::nrrd) return read_nrrd(path);
-  if (format.reader == VtkReaderKind::nifti) return read_nifti(path);
   vtkSmartPointer<vtkAlgorithm> reader;
   const PartialFile renamed((std::filesystem::temp_directory_path() / ("hsb-types-" + std::to_string(::getpid()) + ".vtk")).string());
   if (format.reader == VtkReaderKind::legacy) {

@@ -21,51 +21,59 @@
 namespace hsb {
 namespace {
 
+// The file as the Exodus library opens it, closed at the end of scope.
+class ExodusFile {
+ public:
+  explicit ExodusFile(const std::string& path) {
+    int compute_word = 8, io_word = 0;
+    float version = 0.0f;
+    id_ = ex_open(path.c_str(), EX_READ, &compute_word, &io_word, &version);
+    if (id_ < 0) throw DataError(path + ": the Exodus library cannot open it");
+  }
+  ~ExodusFile() { ex_close(id_); }
+  ExodusFile(const ExodusFile&) = delete;
+  ExodusFile& operator=(const ExodusFile&) = delete;
+  int id() const { return id_; }
+
+ private:
+  int id_ = -1;
+};
+
 // The variables of one kind (nodal, element) as the file names them, in
 // the file's order; none if the file cannot say.
-std::vector<std::string> variable_names(const std::string& path, ex_entity_type kind) {
-  int compute_word = 8, io_word = 0;
-  float version = 0.0f;
-  const int file = ex_open(path.c_str(), EX_READ, &compute_word, &io_word, &version);
-  if (file < 0) return {};
+std::vector<std::string> variable_names(const ExodusFile& file, ex_entity_type kind) {
   std::vector<std::string> names;
   int count = 0;
-  if (ex_get_variable_param(file, kind, &count) == 0 && count > 0) {
-    const int length = std::max(32, int(ex_inquire_int(file, EX_INQ_MAX_READ_NAME_LENGTH)));
+  if (ex_get_variable_param(file.id(), kind, &count) == 0 && count > 0) {
+    const int length = std::max(32, int(ex_inquire_int(file.id(), EX_INQ_MAX_READ_NAME_LENGTH)));
     std::vector<std::vector<char>> buffers(std::size_t(count), std::vector<char>(std::size_t(length) + 1, '\0'));
     std::vector<char*> pointers;
     for (auto& b : buffers) pointers.push_back(b.data());
-    if (ex_get_variable_names(file, kind, count, pointers.data()) == 0)
+    if (ex_get_variable_names(file.id(), kind, count, pointers.data()) == 0)
       for (const auto& b : buffers) names.emplace_back(b.data());
   }
-  ex_close(file);
   return names;
 }
 
 // Whether the Exodus library itself reads every nodal variable of the file
 // at `step`: VTK's reader does not say when it cannot, and hands on
 // uninitialised values (a file meshio wrote reads so). Throws DataError.
-void check_nodal_variables(const std::string& path, int step, std::size_t variables) {
-  int compute_word = 8, io_word = 0;
-  float version = 0.0f;
-  const int file = ex_open(path.c_str(), EX_READ, &compute_word, &io_word, &version);
-  if (file < 0) throw DataError(path + ": the Exodus library cannot open it");
-  const int64_t nodes = ex_inquire_int(file, EX_INQ_NODES);
+void check_nodal_variables(const ExodusFile& file, const std::string& path, int step, std::size_t variables) {
+  const int64_t nodes = ex_inquire_int(file.id(), EX_INQ_NODES);
   std::vector<double> values(std::size_t(std::max<int64_t>(nodes, 1)));
-  int failed = 0;
-  for (std::size_t v = 0; v < variables && !failed; ++v)
-    if (ex_get_var(file, std::max(step, 0) + 1, EX_NODAL, int(v) + 1, 1, nodes, values.data()) != EX_NOERR)
-      failed = int(v) + 1;  // a warning too: it leaves the values unread
-  const char* message = nullptr;
-  const char* function = nullptr;
-  int code = 0;
-  if (failed) ex_get_err(&message, &function, &code);
-  ex_close(file);
-  if (failed)
-    throw DataError(path + ": the Exodus library cannot read its nodal variable " + std::to_string(failed) +
+  for (std::size_t v = 0; v < variables; ++v) {
+    // A warning too: it leaves the values unread.
+    if (ex_get_var(file.id(), std::max(step, 0) + 1, EX_NODAL, int(v) + 1, 1, nodes, values.data()) == EX_NOERR)
+      continue;
+    const char* message = nullptr;
+    const char* function = nullptr;
+    int code = 0;
+    ex_get_err(&message, &function, &code);
+    throw DataError(path + ": the Exodus library cannot read its nodal variable " + std::to_string(v + 1) +
                     (message && *message ? std::string(" (") + message + ")" : std::string()) +
                     ": the file does not follow Exodus II as written by the Exodus library; write it with the "
                     "Exodus library (SEACAS, VTK, ParaView), or as .vtu");
+  }
 }
 
 // Which variables each of the reader's arrays of `type` holds: its arrays
@@ -124,12 +132,19 @@ vtkSmartPointer<vtkDataObject> read_exodus(const std::string& path, int step) {
     throw DataError(path + ": data.step " + std::to_string(step) + " is beyond its " + std::to_string(steps) +
                     " time steps" + (steps > 0 ? " (0 to " + std::to_string(steps - 1) + ")" : std::string()));
   reader->SetTimeStep(std::max(step, 0));
-  reader->Update();
 
-  const std::vector<std::string> nodal_names = variable_names(path, EX_NODAL);
-  check_nodal_variables(path, step, nodal_names.size());
+  // The variables' own names, and the nodal ones read by the Exodus
+  // library before VTK reads them all.
+  std::vector<std::string> nodal_names, element_names;
+  {
+    const ExodusFile file(path);
+    nodal_names = variable_names(file, EX_NODAL);
+    element_names = variable_names(file, EX_ELEM_BLOCK);
+    check_nodal_variables(file, path, step, nodal_names.size());
+  }
+  reader->Update();
   const auto nodal = glommed_variables(reader, vtkExodusIIReader::NODAL, nodal_names);
-  const auto element = glommed_variables(reader, vtkExodusIIReader::ELEM_BLOCK, variable_names(path, EX_ELEM_BLOCK));
+  const auto element = glommed_variables(reader, vtkExodusIIReader::ELEM_BLOCK, element_names);
   vtkSmartPointer<vtkDataObject> read = reader->GetOutputDataObject(0);
   if (auto* composite = vtkCompositeDataSet::SafeDownCast(read)) {
     const vtkSmartPointer<vtkCompositeDataIterator> it =

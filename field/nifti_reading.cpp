@@ -9,10 +9,12 @@
 #include <vtkNIFTIImageReader.h>
 #include <vtkPointData.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
 #include "field/component_arrays.h"
+#include "field/component_order.h"
 #include "field/data_error.h"
 #include "field/sym3.h"
 
@@ -21,15 +23,12 @@ namespace {
 
 constexpr int symmetric_matrix_intent = 1005;  // NIFTI_INTENT_SYMMATRIX
 
-// Where each of VTK's six (XX YY ZZ XY YZ XZ) is among a layout's six.
-constexpr std::array<int, 6> from_lower_triangle{0, 2, 5, 1, 4, 3};  // XX XY YY XZ YZ ZZ
-constexpr std::array<int, 6> from_mrtrix{0, 1, 2, 3, 5, 4};          // XX YY ZZ XY XZ YZ
-
 }  // namespace
 
 vtkSmartPointer<vtkImageData> read_nifti(const std::string& path) {
   auto reader = vtkSmartPointer<vtkNIFTIImageReader>::New();
-  if (!reader->CanReadFile(path.c_str())) throw DataError(path + ": not a NIfTI-1 or NIfTI-2 file VTK can read");
+  if (!reader->CanReadFile(path.c_str()))
+    throw DataError(path + ": not a NIfTI file: no NIfTI-1 or NIfTI-2 header (magic \"n+1\", \"ni1\", \"n+2\") in it");
   reader->SetFileName(path.c_str());
   reader->TimeAsVectorOn();  // FSL's six volumes along the fourth dimension
   reader->Update();
@@ -71,16 +70,22 @@ vtkSmartPointer<vtkImageData> read_nifti(const std::string& path) {
   const std::string descrip = header->GetDescrip() ? header->GetDescrip() : "";
   const bool lower_triangle = values == 6 && header->GetIntentCode() == symmetric_matrix_intent;
   const bool mrtrix = values == 6 && !lower_triangle && descrip.rfind("MRtrix", 0) == 0;
+  // A layout the file records is turned into VTK's here; FSL's is not recorded (below).
+  const ComponentOrder* recorded = lower_triangle ? component_order("nifti") : mrtrix ? component_order("mrtrix") : nullptr;
 
   auto array = vtkSmartPointer<vtkDoubleArray>::New();
   array->SetName(values == 3 ? "vectors" : "tensors");
   array->SetNumberOfComponents(values);
   array->SetNumberOfTuples(voxels->GetNumberOfTuples());
-  for (vtkIdType i = 0; i < voxels->GetNumberOfTuples(); ++i)
-    for (int c = 0; c < values; ++c) {
-      const int from = lower_triangle ? from_lower_triangle[std::size_t(c)] : mrtrix ? from_mrtrix[std::size_t(c)] : c;
-      array->SetComponent(i, c, voxels->GetComponent(i, from) * slope + intercept);
+  std::array<double, 9> v{};
+  for (vtkIdType i = 0; i < voxels->GetNumberOfTuples(); ++i) {
+    for (int c = 0; c < values; ++c) v[std::size_t(c)] = voxels->GetComponent(i, c) * slope + intercept;
+    if (recorded) {
+      const std::array<double, 6> six = components_in_order(tensor_in_order(v.data(), *recorded), *component_order("vtk"));
+      std::copy(six.begin(), six.end(), v.begin());
     }
+    array->SetTuple(i, v.data());
+  }
 
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetExtent(read->GetExtent());

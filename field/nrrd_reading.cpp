@@ -21,6 +21,7 @@
 #include <sstream>
 
 #include "field/component_arrays.h"
+#include "field/component_order.h"
 #include "field/data_error.h"
 #include "field/input_file.h"
 #include "field/sym3.h"
@@ -369,16 +370,14 @@ vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path) {
       continue;
     }
     const double* t = v + (layout.masked ? 1 : 0);
-    Mat3 m;
-    if (layout.kind == VoxelLayout::full) m << t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7], t[8];
-    else m << t[0], t[1], t[2], t[1], t[3], t[4], t[2], t[4], t[5];
+    Mat3 m = layout.kind == VoxelLayout::full ? Mat3(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(t))
+                                              : tensor_in_order(t, *component_order("teem")).matrix();
     m = frame * m * frame.transpose();
     if (layout.masked && !(v[0] >= 0.5)) m.setConstant(std::nan(""));  // Teem: below 0.5 is outside the mask
     if (out_components == 9) {
       for (int c = 0; c < 9; ++c) array->SetComponent(i, c, m(c / 3, c % 3));
     } else {
-      const double six[6] = {m(0, 0), m(1, 1), m(2, 2), m(0, 1), m(1, 2), m(0, 2)};
-      array->SetTuple(i, six);
+      array->SetTuple(i, components_in_order(Sym3::symmetric_part(m), *component_order("vtk")).data());
     }
   }
 

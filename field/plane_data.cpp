@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "field/component_arrays.h"
+#include "field/component_order.h"
 #include "field/data_error.h"
 #include "field/sym3.h"
 
@@ -33,11 +34,10 @@ Mat3 planar(const Mat3& t, int axis) {
   return m;
 }
 
+// The tensor of 9 components (row by row) or 6 in VTK's order.
 Mat3 from_components(const double* c, int count) {
-  Mat3 m;
-  if (count == 9) m << c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8];
-  else m << c[0], c[3], c[5], c[3], c[1], c[4], c[5], c[4], c[2];
-  return m;
+  if (count == 9) return Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(c);
+  return tensor_in_order(c, *component_order("vtk")).matrix();
 }
 
 // Every tensor array of `attributes` made planar; in the z plane, a
@@ -65,8 +65,7 @@ void make_planar(vtkDataSetAttributes* attributes, vtkFieldData* records, int ax
       if (count == 9) {
         for (int k = 0; k < 9; ++k) out->SetComponent(t, k, m(k / 3, k % 3));
       } else {
-        const double six[6] = {m(0, 0), m(1, 1), m(2, 2), m(0, 1), m(1, 2), m(0, 2)};
-        out->SetTuple(t, six);
+        out->SetTuple(t, components_in_order(Sym3::symmetric_part(m), *component_order("vtk")).data());
       }
     }
     const bool active = attributes->GetTensors() == array;
