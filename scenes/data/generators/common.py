@@ -110,6 +110,8 @@ def write_xml(ds, path):
     """Write a VTK XML file (appended, raw binary, zlib) and re-read it."""
     if isinstance(ds, vtk.vtkImageData):
         w = vtk.vtkXMLImageDataWriter()
+    elif isinstance(ds, vtk.vtkMultiBlockDataSet):
+        w = vtk.vtkXMLMultiBlockDataWriter()  # the blocks in a folder beside it
     else:
         w = vtk.vtkXMLUnstructuredGridWriter()
     w.SetFileName(path)

@@ -55,15 +55,7 @@ for k, (name, quads) in enumerate(zip(('left', 'right'), halves)):
           'x in [%g, %g]' % ug.GetBounds()[:2])
 
 path = fc.out_path('kirsch_plate_blocks.vtm')
-w = vtk.vtkXMLMultiBlockDataWriter()
-w.SetFileName(path)
-w.SetInputData(mb)
-w.SetDataModeToAppended()
-w.EncodeAppendedDataOff()
-w.SetCompressorTypeToZLib()
-w.SetHeaderTypeToUInt64()
-if not w.Write():
-    raise RuntimeError('cannot write ' + path)
+common.write_xml(mb, path)
 fc.report(path)
 for root, _, files in os.walk(os.path.join(fc.out_dir(), 'kirsch_plate_blocks')):
     for f in sorted(files):
