@@ -6,13 +6,14 @@
 
 #include <tbb/parallel_for.h>
 
+#include "base/memory_budget.h"
+#include "base/process_memory.h"
 #include "field/automatic_values.h"
-#include "field/source_list.h"
-#include "field/data_error.h"
-#include "field/memory_budget.h"
-#include "field/process_memory.h"
-#include "field/seeding.h"
-#include "field/uniform_grid.h"
+#include "field/glyphs/source_list.h"
+#include "field/reading/data_error.h"
+#include "field/sampling/mesh_field.h"
+#include "field/sampling/uniform_grid.h"
+#include "field/tracing/seeding.h"
 
 namespace hsb {
 
@@ -26,7 +27,7 @@ LoadedField make_field(const DataSpec& spec) {
     loaded.boundary = std::move(data.boundary);
     loaded.plane_axis = data.plane_axis;
     loaded.warnings = std::move(data.warnings);
-    if (const auto* mesh = dynamic_cast<const MeshVectorField*>(loaded.vectors.get()))
+    if (const auto* mesh = dynamic_cast<const MeshField<Vec3>*>(loaded.vectors.get()))
       for (const Vec3& v : mesh->values()) loaded.max_speed = std::max(loaded.max_speed, v.norm());
   } else {
     loaded.field = std::make_unique<PointLoadField>(spec.point_load);

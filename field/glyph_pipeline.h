@@ -16,12 +16,12 @@
 #include <string>
 #include <vector>
 
-#include "field/curve_sources.h"
-#include "field/glyph_sources.h"
-#include "field/point_load.h"
-#include "field/trajectory.h"
-#include "field/triangle_mesh.h"
-#include "field/vtk_data.h"
+#include "field/glyphs/curve_sources.h"
+#include "field/glyphs/glyph_sources.h"
+#include "field/glyphs/triangle_mesh.h"
+#include "field/reading/vtk_data.h"
+#include "field/sampling/point_load.h"
+#include "field/tracing/trajectory.h"
 
 namespace hsb {
 
@@ -138,7 +138,7 @@ struct LoadedField {
   std::unique_ptr<ScalarField> color;    // data.file.color_array, when named
   double max_speed = 0.0;                // of the flow's values
   std::optional<TriangleMesh> boundary;
-  std::optional<int> plane_axis;  // a 2-D result (field/vtk_data.h)
+  std::optional<int> plane_axis;  // a 2-D result (field/reading/vtk_data.h)
   std::vector<std::string> warnings;
 };
 

@@ -11,8 +11,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "field/input_file.h"
-#include "field/vtk_data.h"
+#include "base/input_file.h"
+#include "field/reading/vtk_data.h"
 #include "renderer/scene/scene_spec.h"
 #include "renderer/scene/toml_text.h"
 

@@ -2,8 +2,8 @@
 
 #include <filesystem>
 
-#include "field/data_formats.h"
-#include "field/vtk_export.h"
+#include "field/glyphs/vtk_export.h"
+#include "field/reading/data_formats.h"
 #include "renderer/app/povray_export.h"
 #include "renderer/app/prepared_scene.h"
 

@@ -17,20 +17,20 @@
 #include <string>
 #include <vector>
 
-#include "field/data_formats.h"
-#include "field/data_info.h"
-#include "field/partial_file.h"
+#include "base/partial_file.h"
+#include "base/process_memory.h"
+#include "field/reading/data_formats.h"
+#include "field/reading/data_info.h"
 #include "renderer/app/batch.h"
 #include "renderer/app/export_job.h"
 #include "renderer/app/pinned_scene.h"
 #include "renderer/app/prepared_scene.h"
-#include "field/process_memory.h"
 #include "renderer/app/render_job.h"
 #include "renderer/render/ray_scene.h"
-#include "renderer/surface/instruction_set.h"
+#include "renderer/scene/scene_error.h"
 #include "renderer/scene/scene_keys.h"
 #include "renderer/scene/scene_spec.h"
-#include "renderer/scene/scene_error.h"
+#include "renderer/surface/instruction_set.h"
 
 #ifndef HSB_VERSION
 #define HSB_VERSION "unknown"

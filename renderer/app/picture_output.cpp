@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "field/vtk_data.h"
+#include "field/reading/vtk_data.h"
 #include "renderer/image/display_image.h"
 #include "renderer/image/image_output.h"
 #include "renderer/image/vector_figure.h"

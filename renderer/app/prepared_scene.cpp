@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "field/data_formats.h"
-#include "field/memory_budget.h"
+#include "base/memory_budget.h"
+#include "field/reading/data_formats.h"
 #include "renderer/image/image_output.h"
 #include <sstream>
 

@@ -3,8 +3,8 @@
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
-#include "field/file_extension.h"
-#include "field/partial_file.h"
+#include "base/file_extension.h"
+#include "base/partial_file.h"
 
 #include <filesystem>
 #include <fstream>

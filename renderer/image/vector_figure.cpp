@@ -10,8 +10,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "field/file_extension.h"
-#include "field/partial_file.h"
+#include "base/file_extension.h"
+#include "base/partial_file.h"
 
 namespace hsb {
 namespace {

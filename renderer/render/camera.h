@@ -1,7 +1,7 @@
 #pragma once
 // A pinhole or orthographic camera.
 
-#include "field/sym3.h"
+#include "base/vec3.h"
 
 namespace hsb {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "field/box3.h"
+#include "base/box3.h"
 #include "renderer/render/camera.h"
 
 namespace hsb {

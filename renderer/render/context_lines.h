@@ -13,7 +13,7 @@
 
 #include <vector>
 
-#include "field/box3.h"
+#include "base/box3.h"
 
 namespace hsb {
 

@@ -7,8 +7,8 @@
 #include <optional>
 #include <string>
 
-#include "field/box3.h"
-#include "field/triangle_mesh.h"
+#include "base/box3.h"
+#include "field/glyphs/triangle_mesh.h"
 #include "renderer/render/context_lines.h"
 #include "renderer/render/shading.h"
 #include "renderer/render/shell_geometry.h"

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "field/sym3.h"
+#include "base/vec3.h"
 
 namespace hsb {
 

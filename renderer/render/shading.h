@@ -9,13 +9,10 @@
 // Under ambient light of 1 alone, a surface's colour is its albedo: the
 // colormap's colours reach the picture as defined.
 
-#include <array>
-
-#include "field/sym3.h"
+#include "base/rgb.h"
+#include "base/vec3.h"
 
 namespace hsb {
-
-using Rgb = std::array<float, 3>;
 
 enum class BackgroundKind { solid, gradient, transparent };
 

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "field/box3.h"
+#include "base/box3.h"
 #include "renderer/surface/embree_bounds.h"
 
 namespace hsb {

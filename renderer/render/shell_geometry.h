@@ -18,7 +18,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "field/triangle_mesh.h"
+#include "field/glyphs/triangle_mesh.h"
 
 namespace hsb {
 

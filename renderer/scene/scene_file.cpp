@@ -4,15 +4,15 @@
 #include <fstream>
 #include <sstream>
 
-#include "field/component_order.h"
-#include "field/data_formats.h"
-#include "field/input_file.h"
+#include "base/input_file.h"
+#include "field/reading/component_order.h"
+#include "field/reading/data_formats.h"
 #include "renderer/image/colormap.h"
 #include "renderer/image/image_output.h"
 #include "renderer/scene/scene_keys.h"
 #include "renderer/scene/scene_spec.h"
-#include "renderer/scene/toml_text.h"
 #include "renderer/scene/toml_reader.h"
+#include "renderer/scene/toml_text.h"
 
 namespace hsb {
 namespace {
@@ -83,7 +83,7 @@ void read_data(TableReader& data, DataSpec& spec, const std::string& base_dir) {
     spec.file.step = data.optional_integer("step").value_or(-1);
     std::vector<std::pair<std::string, std::string>> orders;
     for (const ComponentOrder& o : component_orders()) orders.emplace_back(o.name, o.name);
-    // Absent: the order the file records, else VTK's (field/vtk_data.h).
+    // Absent: the order the file records, else VTK's (field/reading/vtk_data.h).
     if (data.has("components")) spec.file.components = data.choice<std::string>("components", orders);
     spec.file.cell_tensors =
         data.choice<CellTensors>("cell_tensors", {{"constant", CellTensors::constant}, {"averaged", CellTensors::averaged}});

@@ -5,9 +5,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "field/component_order.h"
-#include "field/data_formats.h"
-#include "field/glyph_mapping.h"
+#include "field/glyphs/glyph_mapping.h"
+#include "field/reading/component_order.h"
+#include "field/reading/data_formats.h"
 #include "renderer/image/colormap.h"
 #include "renderer/render/camera_framing.h"
 #include "renderer/render/render_image.h"

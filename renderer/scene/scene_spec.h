@@ -137,7 +137,7 @@ toml::table scene_table(const SceneSpec& spec);
 void check_data_lengths(const SceneSpec& spec, double diagonal);
 
 // True for a path that names data of a format hsb knows (by extension, else
-// by content; field/data_formats.h), read or not: `hsb` makes it a scene
+// by content; field/reading/data_formats.h), read or not: `hsb` makes it a scene
 // naming only that file, which says so when hsb does not read the format.
 bool is_data_file(const std::string& path);
 // That scene: its one key is data.file.

@@ -16,7 +16,7 @@
 
 #include <toml++/toml.h>
 
-#include "field/sym3.h"
+#include "base/vec3.h"
 #include "renderer/render/shading.h"
 #include "renderer/scene/scene_error.h"
 #include "renderer/scene/scene_keys.h"

@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "field/box3.h"
-#include "field/glyph_sources.h"
+#include "base/box3.h"
+#include "field/glyphs/glyph_sources.h"
 #include "renderer/surface/kernel.h"
 
 namespace hsb {

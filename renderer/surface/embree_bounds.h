@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "field/box3.h"
+#include "base/box3.h"
 
 namespace hsb {
 

@@ -3,7 +3,7 @@
 
 #include <embree3/rtcore.h>
 
-#include "field/sym3.h"
+#include "base/vec3.h"
 
 namespace hsb {
 

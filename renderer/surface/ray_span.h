@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-#include "field/sym3.h"
+#include "base/vec3.h"
 #include "renderer/surface/blob_field.h"
 #include "renderer/surface/instruction_set.h"
 

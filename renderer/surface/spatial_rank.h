@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "field/box3.h"
+#include "base/box3.h"
 #include "renderer/surface/blob_field.h"
 
 namespace hsb {

@@ -20,7 +20,7 @@
 #include <cstdlib>
 #include <random>
 
-#include "field/process_memory.h"
+#include "base/process_memory.h"
 #include "renderer/render/ray_scene.h"
 #include "renderer/render/render_image.h"
 #include "renderer/surface/instruction_set.h"

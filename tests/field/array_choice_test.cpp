@@ -11,7 +11,7 @@
 #include <vtkSmartPointer.h>
 #include <vtkXMLImageDataWriter.h>
 
-#include "field/vtk_data.h"
+#include "field/reading/vtk_data.h"
 #include "tests/temp_dir.h"
 
 namespace hsb {

@@ -1,6 +1,6 @@
 // Tensors and vectors stored one component per array are joined by their
 // names' suffixes, and nothing else is.
-#include "field/component_arrays.h"
+#include "field/reading/component_arrays.h"
 
 #include <gtest/gtest.h>
 

@@ -11,8 +11,8 @@
 #include <vtkSmartPointer.h>
 #include <vtkXMLImageDataWriter.h>
 
-#include "field/component_order.h"
-#include "field/vtk_data.h"
+#include "field/reading/component_order.h"
+#include "field/reading/vtk_data.h"
 #include "tests/temp_dir.h"
 
 namespace hsb {

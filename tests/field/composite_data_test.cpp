@@ -21,8 +21,8 @@
 #include <array>
 #include <fstream>
 
-#include "field/data_error.h"
-#include "field/vtk_data.h"
+#include "field/reading/data_error.h"
+#include "field/reading/vtk_data.h"
 #include "tests/temp_dir.h"
 
 namespace hsb {

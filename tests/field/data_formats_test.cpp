@@ -5,7 +5,7 @@
 
 #include <fstream>
 
-#include "field/data_formats.h"
+#include "field/reading/data_formats.h"
 #include "tests/temp_dir.h"
 
 namespace hsb {

@@ -1,7 +1,7 @@
 // Properties every decomposition must have, on random and on degenerate
 // tensors (repeated eigenvalues are where solvers usually go wrong).
 
-#include "field/eigensystem.h"
+#include "field/tensor/eigensystem.h"
 
 #include <gtest/gtest.h>
 

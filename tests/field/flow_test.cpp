@@ -8,12 +8,12 @@
 #include <filesystem>
 #include <fstream>
 
-#include "field/curve_sources.h"
-#include "field/data_error.h"
-#include "field/glyph_sources.h"
-#include "field/source_list.h"
-#include "field/trajectory.h"
-#include "field/vector_field.h"
+#include "field/glyphs/curve_sources.h"
+#include "field/glyphs/glyph_sources.h"
+#include "field/glyphs/source_list.h"
+#include "field/reading/data_error.h"
+#include "field/sampling/field.h"
+#include "field/tracing/trajectory.h"
 #include "tests/temp_dir.h"
 
 namespace hsb {

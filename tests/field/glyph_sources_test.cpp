@@ -1,7 +1,7 @@
 // Sources along trajectories: placement by arc length, eigenvalue → radius
 // mappings, orientation, colour scalars, and the whole pipeline.
 
-#include "field/glyph_sources.h"
+#include "field/glyphs/glyph_sources.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 #include <random>
 
 #include "field/glyph_pipeline.h"
-#include "field/uniform_grid.h"
+#include "field/sampling/uniform_grid.h"
 
 namespace hsb {
 namespace {

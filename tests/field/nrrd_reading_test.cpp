@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "field/data_error.h"
-#include "field/vtk_data.h"
+#include "field/reading/data_error.h"
+#include "field/reading/vtk_data.h"
 #include "tests/temp_dir.h"
 
 namespace hsb {

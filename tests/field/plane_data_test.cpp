@@ -17,8 +17,8 @@
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include "field/automatic_values.h"
-#include "field/data_error.h"
-#include "field/vtk_data.h"
+#include "field/reading/data_error.h"
+#include "field/reading/vtk_data.h"
 #include "tests/temp_dir.h"
 
 namespace hsb {

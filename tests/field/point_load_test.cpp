@@ -3,7 +3,7 @@
 // compressive under a downward load, and its Cartesian form must agree with
 // the textbook cylindrical form.
 
-#include "field/point_load.h"
+#include "field/sampling/point_load.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Tensor-line integration on fields whose trajectories are known in closed
 // form: circles, straight segments, and regions where it must stop.
 
-#include "field/trajectory.h"
+#include "field/tracing/trajectory.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Trilinear interpolation on the six components: exact at nodes and for
 // affine fields, nothing outside, and a faithful copy of a sampled field.
 
-#include "field/uniform_grid.h"
+#include "field/sampling/uniform_grid.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <limits>
 #include <random>
 
-#include "field/point_load.h"
+#include "field/sampling/point_load.h"
 
 namespace hsb {
 namespace {

@@ -22,11 +22,11 @@
 #include <filesystem>
 #include <random>
 
-#include "field/data_error.h"
-#include "field/eigensystem.h"
 #include "field/glyph_pipeline.h"
-#include "field/trajectory.h"
-#include "field/vtk_data.h"
+#include "field/reading/data_error.h"
+#include "field/reading/vtk_data.h"
+#include "field/tensor/eigensystem.h"
+#include "field/tracing/trajectory.h"
 #include "tests/temp_dir.h"
 
 namespace hsb {

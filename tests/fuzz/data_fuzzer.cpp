@@ -11,9 +11,9 @@
 #include <fstream>
 #include <string>
 
-#include "field/data_error.h"
-#include "field/memory_budget.h"
-#include "field/vtk_data.h"
+#include "base/memory_budget.h"
+#include "field/reading/data_error.h"
+#include "field/reading/vtk_data.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "field/data_error.h"
+#include "field/reading/data_error.h"
 #include "renderer/scene/scene_error.h"
 #include "renderer/scene/scene_spec.h"
 

@@ -7,8 +7,8 @@
 
 #include <filesystem>
 
-#include "field/data_formats.h"
-#include "field/data_info.h"
+#include "field/reading/data_formats.h"
+#include "field/reading/data_info.h"
 #include "renderer/app/export_job.h"
 #include "renderer/app/pinned_scene.h"
 #include "renderer/app/prepared_scene.h"

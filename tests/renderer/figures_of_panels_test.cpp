@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "field/data_error.h"
+#include "field/reading/data_error.h"
 #include "renderer/app/panel_figure.h"
 #include "renderer/app/prepared_scene.h"
 #include "renderer/app/render_job.h"

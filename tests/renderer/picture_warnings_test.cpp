@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "field/memory_budget.h"
+#include "base/memory_budget.h"
 #include "renderer/app/prepared_scene.h"
 
 namespace hsb {

@@ -1,0 +1,78 @@
+#include "field/glyphs/glyph_mapping.h"
+
+#include <cmath>
+
+namespace hsb {
+
+namespace {
+
+Vec3 unclamped_radii(const Vec3& magnitude, const GlyphMapping& mapping) {
+  const double s = mapping.scale;
+  switch (mapping.mapping) {
+    case RadiusMapping::linear:
+      return s * magnitude;
+    case RadiusMapping::sqrt:
+      return s * magnitude.cwiseSqrt();
+    case RadiusMapping::normalized: {
+      const double largest = magnitude.maxCoeff();
+      // A zero tensor has no shape to keep: draw it as a sphere of the
+      // normalised size rather than dividing by zero.
+      if (largest == 0.0) return Vec3::Constant(s);
+      return (s / largest) * magnitude;
+    }
+    case RadiusMapping::constant:
+      break;
+  }
+  return Vec3::Constant(s);
+}
+
+}  // namespace
+
+Vec3 map_radii(const Vec3& eigenvalues, const GlyphMapping& mapping) {
+  Vec3 radii = unclamped_radii(eigenvalues.cwiseAbs(), mapping);
+  // Uniform scaling keeps the ratios of the radii, which carry the tensor's
+  // shape; clamping each radius alone would turn large glyphs into spheres.
+  const double largest = radii.maxCoeff();
+  if (largest > mapping.ceiling) radii *= mapping.ceiling / largest;
+  return radii.cwiseMax(mapping.floor);
+}
+
+const char* color_scalar_name(ColorScalar c) {
+  switch (c) {
+    case ColorScalar::lambda1: return "lambda1";
+    case ColorScalar::lambda2: return "lambda2";
+    case ColorScalar::lambda3: return "lambda3";
+    case ColorScalar::mean: return "mean";
+    case ColorScalar::von_mises: return "von_mises";
+    case ColorScalar::speed: return "speed";
+    case ColorScalar::array: return "array";
+    case ColorScalar::arc_length: return "arc_length";
+  }
+  return "?";
+}
+
+double color_scalar(const Vec3& eigenvalues, ColorScalar which) {
+  const double l1 = eigenvalues(0), l2 = eigenvalues(1), l3 = eigenvalues(2);
+  switch (which) {
+    case ColorScalar::lambda1:
+      return l1;
+    case ColorScalar::lambda2:
+      return l2;
+    case ColorScalar::lambda3:
+      return l3;
+    case ColorScalar::mean:
+      return (l1 + l2 + l3) / 3.0;
+    case ColorScalar::von_mises:
+      // Invariant under rotation, so principal stresses suffice.
+      return std::sqrt(0.5 * ((l1 - l2) * (l1 - l2) + (l2 - l3) * (l2 - l3) +
+                              (l3 - l1) * (l3 - l1)));
+    case ColorScalar::speed:
+      return l1;
+    case ColorScalar::array:
+    case ColorScalar::arc_length:
+      return 0.0;
+  }
+  return l3;  // unreachable for valid enum values
+}
+
+}  // namespace hsb

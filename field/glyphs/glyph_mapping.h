@@ -1,0 +1,44 @@
+#pragma once
+// How eigenvalues become glyph radii and a colour scalar (paper §5).
+
+#include <limits>
+
+#include "field/tensor/eigensystem.h"
+
+namespace hsb {
+
+enum class RadiusMapping {
+  linear,      // r_k = s·|λ_k|                         (paper Fig. 5)
+  sqrt,        // r_k = s·√|λ_k|                        (paper Fig. 6)
+  normalized,  // r_k = s·|λ_k| / max_j |λ_j|: shape kept, size fixed (Fig. 7)
+  constant,    // r_k = s: spheres
+};
+
+struct GlyphMapping {
+  RadiusMapping mapping = RadiusMapping::linear;
+  double scale = 1.0;
+  // A glyph whose largest radius exceeds `ceiling` is scaled down as a whole,
+  // so it keeps its shape (a point load's singular neighbourhood would
+  // otherwise give glyphs larger than the domain). Then each radius is
+  // raised to at least `floor`, so no glyph is flat.
+  double floor = 1e-3;
+  double ceiling = std::numeric_limits<double>::infinity();
+};
+
+// The scalar that colours a glyph: of a tensor's eigenvalues; a flow's
+// speed; a scalar array of the data file, sampled at the glyph's centre;
+// the position along a curve (0 at its start, 1 at its end).
+enum class ColorScalar { lambda1, lambda2, lambda3, mean, von_mises, speed, array, arc_length };
+
+// Radii r_1, r_2, r_3 for eigenvalues λ1 ≥ λ2 ≥ λ3.
+Vec3 map_radii(const Vec3& eigenvalues, const GlyphMapping& mapping);
+
+// The name a scene file gives `which` ("lambda3", "speed"; "array" is
+// written "array:NAME" there).
+const char* color_scalar_name(ColorScalar which);
+
+// The scalars that follow from the eigenvalues (a flow source's are its
+// speed three times); 0 for array and arc_length, which the caller sets.
+double color_scalar(const Vec3& eigenvalues, ColorScalar which);
+
+}  // namespace hsb

@@ -1,0 +1,184 @@
+#include "field/reading/data_formats.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+
+namespace hsb {
+namespace {
+
+using R = VtkReaderKind;
+
+const char* const convert = "convert it to .vtu (meshio convert FILE out.vtu, or ParaView's Save Data)";
+
+std::vector<DataFormat> build_formats() {
+  return {
+      {"legacy VTK", {".vtk"}, "# vtk DataFile Version", R::legacy, ""},
+      {"VTK XML image data", {".vti"}, "ImageData", R::xml, ""},
+      {"VTK XML unstructured grid", {".vtu"}, "UnstructuredGrid", R::xml, ""},
+      {"VTK XML structured grid", {".vts"}, "StructuredGrid", R::xml, ""},
+      {"VTK XML rectilinear grid", {".vtr"}, "RectilinearGrid", R::xml, ""},
+      {"parallel VTK XML unstructured grid", {".pvtu"}, "PUnstructuredGrid", R::xml_pieces, ""},
+      {"parallel VTK XML image data", {".pvti"}, "PImageData", R::xml, ""},
+      {"parallel VTK XML structured grid", {".pvts"}, "PStructuredGrid", R::xml, ""},
+      {"parallel VTK XML rectilinear grid", {".pvtr"}, "PRectilinearGrid", R::xml, ""},
+      {"VTK XML multiblock data set", {".vtm", ".vtmb"}, "vtkMultiBlockDataSet", R::xml_pieces, ""},
+      {"ParaView time series", {".pvd"}, "Collection", R::series, ""},
+      {"VTK XML polygonal data", {".vtp"}, "PolyData", R::xml, ""},
+      // Known, not read yet: said as what they are.
+      {"VTK HDF", {".vtkhdf", ".hdf"}, "", R::none, convert},
+      {"NRRD", {".nrrd", ".nhdr"}, "NRRD000", R::nrrd, ""},
+      {"NIfTI", {".nii", ".nii.gz", ".hdr"}, "", R::nifti, ""},
+      {"MRtrix image", {".mif", ".mif.gz", ".mih"}, "mrtrix image", R::none, "convert it with mrconvert to NIfTI, then to .vti"},
+      {"Exodus II", {".e", ".exo", ".ex2", ".exii"}, "", R::exodus, ""},
+      {"Gmsh mesh", {".msh"}, "$MeshFormat", R::none, convert},
+      {"Abaqus input", {".inp"}, "*Heading", R::none, convert},
+      {"Abaqus output database", {".odb"}, "", R::none, "export the field output to .vtu (Abaqus/CAE or a VTK exporter)"},
+      {"MED (Code_Aster, Salome)", {".med", ".rmed"}, "", R::none, convert},
+      {"XDMF", {".xdmf", ".xmf"}, "Xdmf", R::none, convert},
+      {"HDF5", {".h5", ".hdf5"}, "\x89HDF\r\n\x1a\n", R::none, convert},
+      {"Gmsh or OpenFOAM results", {".pos", ".foam"}, "", R::none, convert},
+  };
+}
+
+std::string lower(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return text;
+}
+
+bool ends_with(const std::string& text, const std::string& end) {
+  return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
+}
+
+// The first bytes of a file ("" when it cannot be read).
+std::string head_of(const std::string& path, std::size_t bytes) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(bytes, '\0');
+  in.read(head.data(), std::streamsize(head.size()));
+  head.resize(std::size_t(std::max<std::streamsize>(0, in.gcount())));
+  return head;
+}
+
+// The type attribute of a VTK XML file's root element, if it has one.
+std::string vtk_xml_type(const std::string& head) {
+  const std::size_t root = head.find("<VTKFile");
+  if (root == std::string::npos) return "";
+  const std::size_t type = head.find("type=", root);
+  if (type == std::string::npos || type + 6 >= head.size()) return "";
+  const char quote = head[type + 5];
+  const std::size_t end = head.find(quote, type + 6);
+  return end == std::string::npos ? "" : head.substr(type + 6, end - type - 6);
+}
+
+}  // namespace
+
+const std::vector<DataFormat>& data_formats() {
+  static const std::vector<DataFormat> formats = build_formats();
+  return formats;
+}
+
+const DataFormat* format_by_extension(const std::string& path) {
+  const std::string name = lower(path);
+  const DataFormat* best = nullptr;
+  std::size_t longest = 0;
+  for (const DataFormat& f : data_formats())
+    for (const std::string& ext : f.extensions)
+      if (ext.size() > longest && ends_with(name, ext)) best = &f, longest = ext.size();
+  return best;
+}
+
+const DataFormat* format_by_content(const std::string& path) {
+  const std::string head = head_of(path, 1024);
+  if (head.empty()) return nullptr;
+  const std::string xml_type = vtk_xml_type(head);
+  if (!xml_type.empty()) {
+    for (const DataFormat& f : data_formats())
+      if (f.magic == xml_type) return &f;
+  }
+  if (head.find("<Xdmf") != std::string::npos) return format_by_extension(".xdmf");
+  // NIfTI-1 and -2 say so at a fixed place (bytes 344 and 4 of the header).
+  if ((head.size() >= 348 && (head.compare(344, 4, std::string("n+1\0", 4)) == 0 ||
+                              head.compare(344, 4, std::string("ni1\0", 4)) == 0)) ||
+      (head.size() >= 8 && (head.compare(4, 4, std::string("n+2\0", 4)) == 0 ||
+                            head.compare(4, 4, std::string("ni2\0", 4)) == 0)))
+    return format_by_extension(".nii");
+  // netCDF (classic Exodus II files).
+  if (head.rfind("CDF\x01", 0) == 0 || head.rfind("CDF\x02", 0) == 0) return format_by_extension(".exo");
+  for (const DataFormat& f : data_formats())
+    if (f.magic.size() > 1 && xml_type.empty() && head.rfind(f.magic, 0) == 0) return &f;
+  return nullptr;
+}
+
+std::string file_stem(const std::string& path) {
+  const std::string name = std::filesystem::path(path).filename().string();
+  if (const DataFormat* format = format_by_extension(path)) {
+    std::size_t longest = 0;
+    for (const std::string& e : format->extensions)
+      if (ends_with(lower(name), e)) longest = std::max(longest, e.size());
+    if (longest > 0 && longest < name.size()) return name.substr(0, name.size() - longest);
+  }
+  return std::filesystem::path(path).stem().string();
+}
+
+bool is_readable_data_file(const std::string& path) {
+  const DataFormat* f = format_by_extension(path);
+  return f && f->readable();
+}
+
+bool is_known_data_file(const std::string& path) {
+  if (format_by_extension(path)) return true;
+  const std::string ext = lower(path);
+  if (ends_with(ext, ".toml")) return false;
+  return format_by_content(path) != nullptr;
+}
+
+std::string readable_formats_text() {
+  std::string text;
+  for (const DataFormat& f : data_formats()) {
+    if (!f.readable()) continue;
+    text += (text.empty() ? "" : ", ") + f.name + " (";
+    for (std::size_t i = 0; i < f.extensions.size(); ++i) text += (i ? " " : "") + f.extensions[i];
+    text += ")";
+  }
+  return text;
+}
+
+std::string readable_extensions_text() {
+  std::string text;
+  for (const DataFormat& f : data_formats())
+    if (f.readable())
+      for (const std::string& ext : f.extensions) text += (text.empty() ? "" : " ") + ext;
+  return text;
+}
+
+std::string unreadable_format_message(const std::string& path) {
+  const DataFormat* by_name = format_by_extension(path);
+  const DataFormat* by_content = format_by_content(path);
+  // Exodus is netCDF, whose version 4 is HDF5 inside: its content is not another format.
+  if (by_name && by_name->reader == VtkReaderKind::exodus && by_content && by_content->name == "HDF5") by_content = nullptr;
+  // The content decides where it says anything; a readable name whose
+  // content says nothing is left to the reader's own checks.
+  const DataFormat* format = by_content ? by_content : by_name;
+  if (format && format->readable() && by_name && by_name->reader == format->reader) return "";
+  std::string text = path + ": ";
+  if (format) {
+    text += "a " + format->name + " file (by its " +
+            std::string(by_name == format && by_content == format ? "name and content"
+                        : by_content == format                     ? "content"
+                                                                   : "name") +
+            ")";
+    if (format->readable()) {
+      text += ", but named as something else: give it its format's extension (" + format->extensions.front() + ")";
+    } else {
+      std::string advice = format->advice;
+      if (const std::size_t at = advice.find("FILE"); at != std::string::npos) advice.replace(at, 4, path);
+      text += ", which hsb does not read: " + advice;
+    }
+  } else {
+    text += "not a data file hsb knows by its name or its first bytes";
+  }
+  return text + ". hsb reads " + readable_formats_text();
+}
+
+}  // namespace hsb

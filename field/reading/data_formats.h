@@ -1,0 +1,69 @@
+#pragma once
+// The data file formats hsb knows, in one place: each by its name, its
+// extensions and the first bytes of its content, and whether hsb reads it.
+// The scene reader, the command line's help, `hsb info` and the VTK reader
+// all ask here, so a file of a format hsb does not read is named as what it
+// is (a NRRD volume, a Gmsh mesh) with the list of what hsb reads, never
+// mistaken for a scene and refused as bad TOML.
+
+#include <string>
+#include <vector>
+
+namespace hsb {
+
+enum class VtkReaderKind {
+  none,      // not read (yet): named in messages only
+  legacy,    // vtkDataSetReader
+  xml,         // vtkXMLGenericDataObjectReader: one serial data set
+  xml_pieces,  // the same, for pieces or blocks merged into one grid
+  series,      // a list of data files by time step (.pvd)
+  exodus,      // vtkExodusIIReader: blocks merged into one grid, a time step
+  nrrd,        // field/reading/nrrd_reading.h
+  nifti,       // vtkNIFTIImageReader (field/reading/nifti_reading.h)
+};
+
+struct DataFormat {
+  std::string name;                     // "VTK XML unstructured grid"
+  std::vector<std::string> extensions;  // lower case, with the dot: ".vtu", ".nii.gz"
+  // What the file's first bytes hold: a prefix ("NRRD000"), or for XML
+  // files the type attribute of <VTKFile> ("UnstructuredGrid").
+  std::string magic;
+  VtkReaderKind reader = VtkReaderKind::none;
+  // For a format hsb does not read: how to get one it does.
+  std::string advice;
+  bool readable() const { return reader != VtkReaderKind::none; }
+};
+
+const std::vector<DataFormat>& data_formats();
+
+// The format `path`'s name ends in (the longest match: ".nii.gz" before
+// ".gz"), else nullptr.
+const DataFormat* format_by_extension(const std::string& path);
+
+// The format the first bytes of the file at `path` say, else nullptr (also
+// when it cannot be read).
+const DataFormat* format_by_content(const std::string& path);
+
+// `path`'s file name without its format's extension ("brain" for
+// "a/brain.nii.gz"), or without its last extension when no format has it.
+std::string file_stem(const std::string& path);
+
+// Whether `path` names a data file hsb reads, by its extension.
+bool is_readable_data_file(const std::string& path);
+
+// Whether `path` looks like data of any known format (by extension, else
+// by content), readable or not: such a file is never read as a scene.
+bool is_known_data_file(const std::string& path);
+
+// Why hsb cannot read `path` as data, in one line: its format, by
+// extension and by content, what to do about it, and the formats hsb
+// reads. "" when it reads it.
+std::string unreadable_format_message(const std::string& path);
+
+// "legacy VTK (.vtk), VTK XML image data (.vti), ...": what hsb reads.
+std::string readable_formats_text();
+
+// ".vtk .vti .vtu .vts .vtr": the extensions hsb reads, for help texts.
+std::string readable_extensions_text();
+
+}  // namespace hsb

@@ -1,0 +1,30 @@
+#pragma once
+// A data file read into one VTK data set, by the reader its format needs
+// (field/reading/data_formats.h), and checked for what no reader checks but
+// everything after relies on. Parallel pieces and multiblock blocks are
+// merged into one unstructured grid with their shared points joined; a
+// time series (.pvd) is read at one of its steps. Internal to field/.
+
+#include <string>
+
+#include <vtkAlgorithm.h>
+#include <vtkDataSet.h>
+#include <vtkSmartPointer.h>
+
+#include "field/reading/vtk_session.h"
+
+namespace hsb {
+
+// The data set in `path` (at time step `step` of a series: its index in
+// the series, -1 for the first); VTK's complaints end up in `vtk`. Throws
+// DataError naming the file.
+vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSession& vtk, int step = -1);
+
+// Runs `algorithm` in a child process first: VTK's filters trust the cells
+// they are given, so a degenerate mesh can make them read past their
+// buffers or loop. A crash or a hang in the child is one DataError naming
+// `path` and `what` ran on it. (Files themselves are parsed only in a
+// child: read_dataset.)
+void update_safely(vtkAlgorithm* algorithm, const std::string& path, const char* what);
+
+}  // namespace hsb

@@ -1,0 +1,120 @@
+#include "field/reading/nifti_reading.h"
+
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkMatrix3x3.h>
+#include <vtkMatrix4x4.h>
+#include <vtkNIFTIImageHeader.h>
+#include <vtkNIFTIImageReader.h>
+#include <vtkPointData.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "base/vec3.h"
+#include "field/reading/component_arrays.h"
+#include "field/reading/component_order.h"
+#include "field/reading/data_error.h"
+
+namespace hsb {
+namespace {
+
+constexpr int symmetric_matrix_intent = 1005;  // NIFTI_INTENT_SYMMATRIX
+
+}  // namespace
+
+vtkSmartPointer<vtkImageData> read_nifti(const std::string& path) {
+  auto reader = vtkSmartPointer<vtkNIFTIImageReader>::New();
+  if (!reader->CanReadFile(path.c_str()))
+    throw DataError(path + ": not a NIfTI file: no NIfTI-1 or NIfTI-2 header (magic \"n+1\", \"ni1\", \"n+2\") in it");
+  reader->SetFileName(path.c_str());
+  reader->TimeAsVectorOn();  // FSL's six volumes along the fourth dimension
+  reader->Update();
+  vtkImageData* read = reader->GetOutput();
+  vtkNIFTIImageHeader* header = reader->GetNIFTIHeader();
+  vtkDataArray* voxels = read && header ? read->GetPointData()->GetScalars() : nullptr;
+  if (!voxels || voxels->GetNumberOfTuples() == 0) throw DataError(path + ": VTK's NIfTI reader found no voxels in it");
+  const int values = voxels->GetNumberOfComponents();
+  if (values != 3 && values != 6 && values != 9)
+    throw DataError(path + ": its voxels hold " + std::to_string(values) +
+                    " values; a tensor volume has 6 (or 9, or 3 for vectors) along its fourth or fifth dimension");
+
+  // Where the voxels are: VTK's data coordinates (origin + index × spacing)
+  // through the sform, else the qform, into the scanner's space; a scale
+  // in the matrix goes into the spacing.
+  vtkMatrix4x4* to_space = header->GetSFormCode() > 0 && reader->GetSFormMatrix() ? reader->GetSFormMatrix()
+                                                                                   : reader->GetQFormMatrix();
+  Mat3 a = Mat3::Identity();
+  Vec3 shift = Vec3::Zero();
+  if (to_space)
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) a(r, c) = to_space->GetElement(r, c);
+      shift[r] = to_space->GetElement(r, 3);
+    }
+  const double* s = read->GetSpacing();
+  const double* o = read->GetOrigin();
+  Vec3 spacing;
+  Mat3 direction;
+  for (int c = 0; c < 3; ++c) {
+    const double length = a.col(c).norm();
+    if (!(length > 0) || !std::isfinite(length)) throw DataError(path + ": its sform/qform matrix is singular");
+    spacing[c] = std::fabs(s[c]) * length;
+    direction.col(c) = a.col(c) / length * (s[c] < 0 ? -1.0 : 1.0);
+  }
+  const Vec3 origin = a * Vec3(o[0], o[1], o[2]) + shift;
+
+  const double slope = reader->GetRescaleSlope() != 0.0 ? reader->GetRescaleSlope() : 1.0;
+  const double intercept = reader->GetRescaleIntercept();
+  const std::string descrip = header->GetDescrip() ? header->GetDescrip() : "";
+  const bool lower_triangle = values == 6 && header->GetIntentCode() == symmetric_matrix_intent;
+  const bool mrtrix = values == 6 && !lower_triangle && descrip.rfind("MRtrix", 0) == 0;
+  // A layout the file records is turned into VTK's here; FSL's is not recorded (below).
+  const ComponentOrder* recorded = lower_triangle ? component_order("nifti") : mrtrix ? component_order("mrtrix") : nullptr;
+
+  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  array->SetName(values == 3 ? "vectors" : "tensors");
+  array->SetNumberOfComponents(values);
+  array->SetNumberOfTuples(voxels->GetNumberOfTuples());
+  std::array<double, 9> v{};
+  for (vtkIdType i = 0; i < voxels->GetNumberOfTuples(); ++i) {
+    for (int c = 0; c < values; ++c) v[std::size_t(c)] = voxels->GetComponent(i, c) * slope + intercept;
+    if (recorded) {
+      const std::array<double, 6> six = components_in_order(tensor_in_order(v.data(), *recorded), *component_order("vtk"));
+      std::copy(six.begin(), six.end(), v.begin());
+    }
+    array->SetTuple(i, v.data());
+  }
+
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetExtent(read->GetExtent());
+  image->SetSpacing(spacing.data());
+  image->SetOrigin(origin.data());
+  auto matrix = vtkSmartPointer<vtkMatrix3x3>::New();
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) matrix->SetElement(r, c, direction(r, c));
+  image->SetDirectionMatrix(matrix);
+  if (values == 3) {
+    image->GetPointData()->SetVectors(array);
+    return image;
+  }
+  image->GetPointData()->SetTensors(array);
+  vtkFieldData* records = image->GetFieldData();
+  if (lower_triangle) {
+    record_component_order(records, "tensors", "NIfTI's symmetric-matrix intent: XX XY YY XZ YZ ZZ");
+  } else if (mrtrix) {
+    record_component_order(records, "tensors", "MRtrix's NIfTI (its description says so): XX YY ZZ XY XZ YZ");
+  } else if (values == 6) {
+    record_default_order(records, "tensors", "fsl",
+                         "six volumes without NIfTI's symmetric-matrix intent: FSL dtifit's layout");
+    // FSL's voxel axes: the file's own (VTK reversed the slices when qfac
+    // is −1), x flipped when the file's transform keeps handedness.
+    const double qfac = reader->GetQFac() < 0 ? -1.0 : 1.0;
+    const double flip_x = (a.determinant() * qfac) > 0 ? -1.0 : 1.0;
+    record_tensor_frame(records, "tensors", direction * Vec3(flip_x, 1.0, qfac).asDiagonal());
+  }
+  return image;
+}
+
+}  // namespace hsb

@@ -1,0 +1,406 @@
+#include "field/reading/nrrd_reading.h"
+
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkMatrix3x3.h>
+#include <vtkPointData.h>
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <map>
+#include <optional>
+#include <sstream>
+
+#include "base/input_file.h"
+#include "field/reading/component_arrays.h"
+#include "field/reading/component_order.h"
+#include "field/reading/data_error.h"
+#include "field/tensor/sym3.h"
+
+namespace hsb {
+namespace {
+
+// The most values a volume may declare: far beyond any scan, and the
+// guard that keeps a corrupt `sizes:` from asking for all memory.
+constexpr std::uint64_t most_values = std::uint64_t(1) << 31;
+
+// One `field: value` line of the header, with where it stood.
+struct HeaderField {
+  std::string value;
+  int line = 0;
+};
+
+struct Header {
+  std::map<std::string, HeaderField> fields;
+  std::streamoff data_offset = 0;  // where the data starts in the header's own file
+  const std::string* path = nullptr;
+
+  const HeaderField* find(const std::string& name) const {
+    auto it = fields.find(name);
+    return it == fields.end() ? nullptr : &it->second;
+  }
+  [[noreturn]] void fail(const HeaderField* field, const std::string& what) const {
+    throw DataError(*path + (field ? ":" + std::to_string(field->line) : std::string()) + ": " + what);
+  }
+  std::string value(const std::string& name, const std::string& otherwise) const {
+    const HeaderField* f = find(name);
+    return f ? f->value : otherwise;
+  }
+  long long integer(const std::string& name) const {
+    const HeaderField* f = find(name);
+    if (!f) return 0;
+    char* end = nullptr;
+    const long long v = std::strtoll(f->value.c_str(), &end, 10);
+    if (end == f->value.c_str() || *end != '\0' || v < -1 || v > (1LL << 40))
+      fail(f, "expected a whole number of at least -1 for \"" + name + "\", found \"" + f->value + "\"");
+    return v;
+  }
+};
+
+std::string trimmed(const std::string& text) {
+  const std::size_t first = text.find_first_not_of(" \t\r");
+  if (first == std::string::npos) return "";
+  return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
+}
+
+// The header: from "NRRD000x" to the first empty line (or the end of a
+// detached header). Key/value pairs (`key:=value`) and comments are skipped.
+Header read_header(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw DataError(path + ": cannot open it");
+  Header header;
+  header.path = &path;
+  std::string line;
+  std::getline(in, line);
+  if (line.rfind("NRRD000", 0) != 0)
+    throw DataError(path + ":1: not a NRRD file: it does not start with \"NRRD000\"");
+  for (int number = 2; std::getline(in, line); ++number) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) break;
+    if (line[0] == '#' || line.find(":=") != std::string::npos) continue;
+    const std::size_t colon = line.find(": ");
+    if (colon == std::string::npos)
+      throw DataError(path + ":" + std::to_string(number) + ": expected \"field: value\" in the NRRD header, found \"" +
+                      line.substr(0, 60) + "\"");
+    std::string name = line.substr(0, colon);
+    std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (name == "datafile") name = "data file";
+    header.fields[name] = {trimmed(line.substr(colon + 2)), number};
+  }
+  header.data_offset = in.eof() ? std::streamoff(-1) : std::streamoff(in.tellg());
+  return header;
+}
+
+// A number type: its size and how its bytes read.
+struct NumberType {
+  int bytes = 0;
+  enum { integer, unsigned_integer, floating } kind = floating;
+};
+
+NumberType number_type(const Header& h) {
+  const HeaderField* f = h.find("type");
+  if (!f) h.fail(nullptr, "the NRRD header has no \"type:\"");
+  static const std::map<std::string, NumberType> types = [] {
+    std::map<std::string, NumberType> t;
+    const auto add = [&](std::initializer_list<const char*> names, NumberType type) {
+      for (const char* n : names) t[n] = type;
+    };
+    using K = decltype(NumberType::kind);
+    add({"signed char", "int8", "int8_t"}, {1, K(NumberType::integer)});
+    add({"uchar", "unsigned char", "uint8", "uint8_t"}, {1, K(NumberType::unsigned_integer)});
+    add({"short", "short int", "signed short", "signed short int", "int16", "int16_t"}, {2, K(NumberType::integer)});
+    add({"ushort", "unsigned short", "unsigned short int", "uint16", "uint16_t"}, {2, K(NumberType::unsigned_integer)});
+    add({"int", "signed int", "int32", "int32_t"}, {4, K(NumberType::integer)});
+    add({"uint", "unsigned int", "uint32", "uint32_t"}, {4, K(NumberType::unsigned_integer)});
+    add({"longlong", "long long", "long long int", "signed long long", "signed long long int", "int64", "int64_t"},
+        {8, K(NumberType::integer)});
+    add({"ulonglong", "unsigned long long", "unsigned long long int", "uint64", "uint64_t"},
+        {8, K(NumberType::unsigned_integer)});
+    add({"float"}, {4, K(NumberType::floating)});
+    add({"double"}, {8, K(NumberType::floating)});
+    return t;
+  }();
+  auto it = types.find(f->value);
+  if (it == types.end()) h.fail(f, "NRRD type \"" + f->value + "\" is not a number type");
+  return it->second;
+}
+
+// The numbers of a list such as "7 12 10 8".
+std::vector<double> numbers(const Header& h, const HeaderField* f) {
+  std::istringstream in(f->value);
+  std::vector<double> out;
+  for (std::string word; in >> word;) {
+    char* end = nullptr;
+    const double v = std::strtod(word.c_str(), &end);
+    if (end == word.c_str() || *end != '\0') h.fail(f, "expected a number, found \"" + word + "\"");
+    out.push_back(v);
+  }
+  return out;
+}
+
+// The vectors of `space directions:` or `measurement frame:`: "(x,y,z)" or "none" each.
+std::vector<std::optional<Vec3>> vectors(const Header& h, const HeaderField* f) {
+  std::istringstream in(f->value);
+  std::vector<std::optional<Vec3>> out;
+  for (std::string word; in >> word;) {
+    if (word == "none") {
+      out.emplace_back();
+      continue;
+    }
+    Vec3 v;
+    char close = 0;
+    if (std::sscanf(word.c_str(), "(%lf,%lf,%lf%c", &v.x(), &v.y(), &v.z(), &close) != 4 || close != ')' ||
+        !v.allFinite())
+      h.fail(f, "expected a vector such as (1,0,0), found \"" + word + "\"");
+    out.emplace_back(v);
+  }
+  return out;
+}
+
+// The file the data is in: the header's own, or its `data file:`.
+std::string data_file(const Header& h, const std::string& path) {
+  const HeaderField* f = h.find("data file");
+  if (!f) return path;
+  if (f->value.rfind("LIST", 0) == 0 || f->value.find(' ') != std::string::npos)
+    h.fail(f, "a data file list or pattern is not read; give one data file");
+  return file_named_in(path, f->value);
+}
+
+// The data's bytes: `count` values of `type`, decoded as the header says.
+std::vector<double> read_values(const Header& h, const std::string& path, std::uint64_t count, NumberType type) {
+  const std::string encoding = h.value("encoding", "");
+  const std::string data_path = data_file(h, path);
+  const std::streamoff offset = data_path == path ? h.data_offset : 0;
+  if (offset < 0) {
+    h.fail(nullptr, "the NRRD header ends without its data (no empty line, and no \"data file:\")");
+  }
+  std::ifstream in(data_path, std::ios::binary);
+  if (!in || !std::filesystem::is_regular_file(data_path)) throw DataError(path + ": cannot open its data file " + data_path);
+  in.seekg(offset);
+  for (long long skip = h.integer("line skip"); skip > 0 && in; --skip) in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+  std::vector<char> raw((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const long long byte_skip = h.integer("byte skip");
+
+  // Nothing is reserved for what the header declares before the data
+  // shows it holds that much: a corrupt size must not take all memory.
+  std::vector<double> values;
+  if (encoding == "txt" || encoding == "text" || encoding == "ascii") {
+    const std::string text(raw.begin(), raw.end());
+    const char* at = text.c_str();
+    for (char* end = nullptr; values.size() < count; at = end) {
+      while (*at == ',' || std::isspace(static_cast<unsigned char>(*at))) ++at;
+      const double v = std::strtod(at, &end);
+      if (end == at) break;
+      values.push_back(v);
+    }
+    if (values.size() < count)
+      throw DataError(path + ": its ASCII data has " + std::to_string(values.size()) + " values; the header declares " +
+                      std::to_string(count));
+    return values;
+  }
+  const std::uint64_t bytes = count * std::uint64_t(type.bytes);
+  std::vector<unsigned char> decoded;
+  if (encoding == "raw") {
+    const std::uint64_t start = byte_skip == -1 ? (raw.size() >= bytes ? raw.size() - bytes : 0) : std::uint64_t(std::max(0LL, byte_skip));
+    if (raw.size() < start + bytes)
+      throw DataError(path + ": its raw data has " + std::to_string(raw.size() - std::min<std::uint64_t>(raw.size(), start)) +
+                      " bytes; the header declares " + std::to_string(bytes));
+    decoded.assign(raw.begin() + std::ptrdiff_t(start), raw.begin() + std::ptrdiff_t(start + bytes));
+  } else if (encoding == "gzip" || encoding == "gz") {
+    z_stream z{};
+    if (inflateInit2(&z, 15 + 32) != Z_OK) throw DataError(path + ": cannot start zlib");
+    z.next_in = reinterpret_cast<unsigned char*>(raw.data());
+    z.avail_in = uInt(std::min<std::size_t>(raw.size(), std::numeric_limits<uInt>::max()));
+    std::uint64_t done = 0;
+    int status = Z_OK;
+    while (done < bytes && status == Z_OK) {
+      // Grown as the data inflates, not to the declared size at once.
+      if (decoded.size() == done)
+        decoded.resize(std::size_t(std::min<std::uint64_t>(bytes, std::max<std::uint64_t>(2 * done, 1 << 20))));
+      z.next_out = decoded.data() + done;
+      z.avail_out = uInt(std::min<std::uint64_t>(decoded.size() - done, std::numeric_limits<uInt>::max()));
+      status = inflate(&z, Z_NO_FLUSH);
+      done = z.total_out;
+    }
+    inflateEnd(&z);
+    if (done < bytes)
+      throw DataError(path + ": its gzip data inflates to " + std::to_string(done) + " bytes; the header declares " +
+                      std::to_string(bytes) + (status == Z_DATA_ERROR ? " (the compressed data is corrupt)" : ""));
+  } else {
+    h.fail(h.find("encoding"), "NRRD encoding \"" + encoding + "\" is not read (raw, gzip and ascii are)");
+  }
+  const bool swap = type.bytes > 1 && h.value("endian", "little") == "big";
+  values.reserve(std::size_t(count));
+  for (std::uint64_t i = 0; i < count; ++i) {
+    unsigned char b[8];
+    std::memcpy(b, decoded.data() + i * std::uint64_t(type.bytes), std::size_t(type.bytes));
+    if (swap) std::reverse(b, b + type.bytes);
+    double v = 0.0;
+    switch (type.bytes * 4 + int(type.kind)) {
+#define HSB_AS(bytes_, kind_, T) \
+  case bytes_ * 4 + int(NumberType::kind_): { T t; std::memcpy(&t, b, sizeof t); v = double(t); break; }
+      HSB_AS(1, integer, std::int8_t) HSB_AS(1, unsigned_integer, std::uint8_t)
+      HSB_AS(2, integer, std::int16_t) HSB_AS(2, unsigned_integer, std::uint16_t)
+      HSB_AS(4, integer, std::int32_t) HSB_AS(4, unsigned_integer, std::uint32_t) HSB_AS(4, floating, float)
+      HSB_AS(8, integer, std::int64_t) HSB_AS(8, unsigned_integer, std::uint64_t) HSB_AS(8, floating, double)
+#undef HSB_AS
+      default: break;
+    }
+    values.push_back(v);
+  }
+  return values;
+}
+
+// What the values of one voxel are: how many, and how they make a tensor.
+struct VoxelLayout {
+  int values = 0;       // per voxel
+  bool masked = false;  // a confidence first
+  enum { symmetric, full, vector } kind = symmetric;
+  std::string said;     // for the record
+};
+
+VoxelLayout voxel_layout(const Header& h, int values) {
+  const HeaderField* kinds = h.find("kinds");
+  std::string kind;
+  if (kinds) std::istringstream(kinds->value) >> kind;
+  using K = decltype(VoxelLayout::kind);
+  if (kind == "3D-masked-symmetric-matrix" || (kind.empty() && values == 7))
+    return {7, true, K(VoxelLayout::symmetric), "a confidence, then XX XY XZ YY YZ ZZ (Teem's 3D-masked-symmetric-matrix)"};
+  if (kind == "3D-symmetric-matrix" || (kind.empty() && values == 6))
+    return {6, false, K(VoxelLayout::symmetric), "XX XY XZ YY YZ ZZ (NRRD's 3D-symmetric-matrix)"};
+  if (kind == "3D-masked-matrix" || (kind.empty() && values == 10))
+    return {10, true, K(VoxelLayout::full), "a confidence, then the 3×3 matrix row by row (NRRD's 3D-masked-matrix)"};
+  if (kind == "3D-matrix" || (kind.empty() && values == 9))
+    return {9, false, K(VoxelLayout::full), "the 3×3 matrix row by row (NRRD's 3D-matrix)"};
+  if (kind == "3-vector" || kind == "covariant-vector" || kind == "normal" || (kind.empty() && values == 3) ||
+      (kind == "vector" && values == 3))
+    return {3, false, K(VoxelLayout::vector), ""};
+  h.fail(kinds ? kinds : h.find("sizes"), "the first axis (" + std::to_string(values) + " values" +
+                                              (kind.empty() ? "" : ", kind " + kind) +
+                                              ") is no tensor or vector NRRD kind hsb reads (3D-masked-symmetric-matrix, "
+                                              "3D-symmetric-matrix, 3D-matrix, 3D-masked-matrix, 3-vector)");
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path) {
+  const Header h = read_header(path);
+  const NumberType type = number_type(h);
+  const HeaderField* dimension = h.find("dimension");
+  const HeaderField* sizes_field = h.find("sizes");
+  if (!dimension || !sizes_field) h.fail(nullptr, "the NRRD header lacks \"dimension:\" or \"sizes:\"");
+  const std::vector<double> sizes = numbers(h, sizes_field);
+  if (dimension->value == "3")
+    h.fail(dimension, "a volume of one value per voxel: no tensors or vectors (a 4-D NRRD with a first axis of 6, 7 or 9)");
+  if (dimension->value != "4" || sizes.size() != 4)
+    h.fail(sizes.size() != 4 ? sizes_field : dimension,
+           "expected dimension 4 with four sizes (values per voxel, then three space axes), found dimension " +
+               dimension->value + " with " + std::to_string(sizes.size()) + " sizes");
+  std::uint64_t count = 1;
+  for (double s : sizes) {
+    if (!(s >= 1 && s <= double(most_values)) || s != std::floor(s))
+      h.fail(sizes_field, "each size must be a whole number from 1 to 2^31, found " + sizes_field->value);
+    count *= std::uint64_t(s);
+    if (count > most_values) h.fail(sizes_field, "the volume declares more than 2^31 values: " + sizes_field->value);
+  }
+  const VoxelLayout layout = voxel_layout(h, int(sizes[0]));
+  if (layout.values != int(sizes[0]))
+    h.fail(sizes_field, "its kind has " + std::to_string(layout.values) + " values per voxel, its size is " +
+                            std::to_string(int(sizes[0])));
+  const std::array<int, 3> dims{int(sizes[1]), int(sizes[2]), int(sizes[3])};
+
+  // Where the voxels are: space directions (with an origin), else spacings.
+  Mat3 axes = Mat3::Identity();
+  Vec3 origin = Vec3::Zero();
+  if (const HeaderField* f = h.find("space directions")) {
+    const std::vector<std::optional<Vec3>> d = vectors(h, f);
+    if (d.size() != 4 || d[0] || !d[1] || !d[2] || !d[3])
+      h.fail(f, "expected \"none\" for the first axis and a vector for each space axis, found " + f->value);
+    axes << *d[1], *d[2], *d[3];
+    if (std::fabs(axes.determinant()) < 1e-300 * axes.cwiseAbs().maxCoeff())
+      h.fail(f, "the space directions are not independent: the voxels have no volume");
+    if (const HeaderField* o = h.find("space origin")) {
+      const std::vector<std::optional<Vec3>> p = vectors(h, o);
+      if (p.size() != 1 || !p[0]) h.fail(o, "expected one vector such as (0,0,0), found " + o->value);
+      origin = *p[0];
+    }
+  } else if (const HeaderField* f = h.find("spacings")) {
+    std::istringstream in(f->value);
+    std::vector<std::string> words{std::istream_iterator<std::string>(in), std::istream_iterator<std::string>()};
+    for (int a = 0; a < 3 && words.size() == 4; ++a) {
+      const double s = std::strtod(words[std::size_t(a + 1)].c_str(), nullptr);
+      if (!(s > 0) || !std::isfinite(s)) h.fail(f, "expected positive spacings for the space axes, found " + f->value);
+      axes(a, a) = s;
+    }
+  }
+  Vec3 spacing;
+  Mat3 direction;
+  for (int a = 0; a < 3; ++a) {
+    spacing[a] = axes.col(a).norm();
+    direction.col(a) = axes.col(a) / spacing[a];
+  }
+  Mat3 frame = Mat3::Identity();
+  if (const HeaderField* f = h.find("measurement frame")) {
+    const std::vector<std::optional<Vec3>> m = vectors(h, f);
+    if (m.size() != 3 || !m[0] || !m[1] || !m[2]) h.fail(f, "expected three vectors, found " + f->value);
+    frame << *m[0], *m[1], *m[2];
+  }
+
+  const std::vector<double> values = read_values(h, path, count, type);
+  const vtkIdType voxels = vtkIdType(count / std::uint64_t(layout.values));
+  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  array->SetName(layout.kind == VoxelLayout::vector ? "vectors" : "tensors");
+  const int out_components = layout.kind == VoxelLayout::vector ? 3 : layout.kind == VoxelLayout::full ? 9 : 6;
+  array->SetNumberOfComponents(out_components);
+  array->SetNumberOfTuples(voxels);
+  for (vtkIdType i = 0; i < voxels; ++i) {
+    const double* v = values.data() + std::size_t(i) * std::size_t(layout.values);
+    if (layout.kind == VoxelLayout::vector) {
+      const Vec3 w = frame * Vec3(v[0], v[1], v[2]);
+      array->SetTuple3(i, w.x(), w.y(), w.z());
+      continue;
+    }
+    const double* t = v + (layout.masked ? 1 : 0);
+    Mat3 m = layout.kind == VoxelLayout::full ? Mat3(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(t))
+                                              : tensor_in_order(t, *component_order("teem")).matrix();
+    m = frame * m * frame.transpose();
+    if (layout.masked && !(v[0] >= 0.5)) m.setConstant(std::nan(""));  // Teem: below 0.5 is outside the mask
+    if (out_components == 9) {
+      for (int c = 0; c < 9; ++c) array->SetComponent(i, c, m(c / 3, c % 3));
+    } else {
+      array->SetTuple(i, components_in_order(Sym3::symmetric_part(m), *component_order("vtk")).data());
+    }
+  }
+
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(dims[0], dims[1], dims[2]);
+  image->SetSpacing(spacing.x(), spacing.y(), spacing.z());
+  image->SetOrigin(origin.x(), origin.y(), origin.z());
+  auto matrix = vtkSmartPointer<vtkMatrix3x3>::New();
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) matrix->SetElement(r, c, direction(r, c));
+  image->SetDirectionMatrix(matrix);
+  if (layout.kind == VoxelLayout::vector) {
+    image->GetPointData()->SetVectors(array);
+  } else {
+    image->GetPointData()->SetTensors(array);
+    record_component_order(image->GetFieldData(), array->GetName(), "NRRD, " + layout.said);
+  }
+  return image;
+}
+
+std::vector<std::string> nrrd_files(const std::string& path) {
+  const std::string data = data_file(read_header(path), path);
+  return data == path ? std::vector<std::string>{path} : std::vector<std::string>{path, data};
+}
+
+}  // namespace hsb

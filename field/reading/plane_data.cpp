@@ -1,0 +1,182 @@
+#include "field/reading/plane_data.h"
+
+#include <vtkCell.h>
+#include <vtkCellData.h>
+#include <vtkCellType.h>
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIdList.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "field/reading/component_arrays.h"
+#include "field/reading/component_order.h"
+#include "field/reading/data_error.h"
+#include "field/tensor/sym3.h"
+
+namespace hsb {
+namespace {
+
+const char* const plane_record = "hsb plane of 2-D data";
+
+// The tensor of `t` (6 in VTK's order, or 9) made planar about `axis`:
+// the out-of-plane normal the mean of the in-plane ones, no out-of-plane shear.
+Mat3 planar(const Mat3& t, int axis) {
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  Mat3 m = t;
+  m(axis, axis) = 0.5 * (t(u, u) + t(v, v));
+  m(axis, u) = m(u, axis) = m(axis, v) = m(v, axis) = 0.0;
+  return m;
+}
+
+// The tensor of 9 components (row by row) or 6 in VTK's order.
+Mat3 from_components(const double* c, int count) {
+  if (count == 9) return Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(c);
+  return tensor_in_order(c, *component_order("vtk")).matrix();
+}
+
+// Every tensor array of `attributes` made planar; in the z plane, a
+// 3-component array named as stress or strain read as (xx, yy, xy).
+void make_planar(vtkDataSetAttributes* attributes, vtkFieldData* records, int axis) {
+  std::vector<vtkSmartPointer<vtkDataArray>> arrays;  // before any is replaced
+  for (int i = 0; i < attributes->GetNumberOfArrays(); ++i)
+    if (vtkDataArray* array = attributes->GetArray(i); array && array->GetName()) arrays.emplace_back(array);
+  for (vtkDataArray* array : arrays) {
+    const int count = array->GetNumberOfComponents();
+    const bool plane_tensor = count == 3 && axis == 2 && tensor_name_rank(array->GetName()) < 2;
+    if (count != 6 && count != 9 && !plane_tensor) continue;
+    auto out = vtkSmartPointer<vtkDoubleArray>::New();
+    out->SetName(array->GetName());
+    out->SetNumberOfComponents(count == 9 ? 9 : 6);
+    out->SetNumberOfTuples(array->GetNumberOfTuples());
+    double c[9];
+    for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t) {
+      array->GetTuple(t, c);
+      if (plane_tensor) {  // xx, yy, xy → VTK's six
+        const double xy = c[2];
+        c[2] = 0.0, c[3] = xy, c[4] = 0.0, c[5] = 0.0;
+      }
+      const Mat3 m = planar(from_components(c, plane_tensor ? 6 : count), axis);
+      if (count == 9) {
+        for (int k = 0; k < 9; ++k) out->SetComponent(t, k, m(k / 3, k % 3));
+      } else {
+        out->SetTuple(t, components_in_order(Sym3::symmetric_part(m), *component_order("vtk")).data());
+      }
+    }
+    const bool active = attributes->GetTensors() == array;
+    attributes->RemoveArray(array->GetName());
+    attributes->AddArray(out);
+    if (active) attributes->SetTensors(out);
+    if (plane_tensor) record_component_order(records, out->GetName(), "three components of a plane tensor: XX YY XY");
+  }
+}
+
+}  // namespace
+
+std::optional<PlaneOfData> find_plane(vtkDataSet* data, const std::string& path) {
+  bool two_d = false;
+  for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c) {
+    const int dimension = data->GetCell(c)->GetCellDimension();
+    if (dimension == 3) return std::nullopt;
+    two_d = two_d || dimension == 2;
+  }
+  if (!two_d) return std::nullopt;
+  double b[6];
+  data->GetBounds(b);
+  const Vec3 size(b[1] - b[0], b[3] - b[2], b[5] - b[4]);
+  const double flat = 1e-9 * size.norm();
+  int axis = -1, flat_axes = 0;
+  for (int a = 0; a < 3; ++a)
+    if (size[a] <= flat) axis = a, ++flat_axes;
+  if (flat_axes != 1 || !(size.norm() > 0))
+    throw DataError(path + ": its cells are 2-D (no volume) but do not lie in one plane x, y or z = const " +
+                    (flat_axes > 1 ? "(they lie on a line)" : "(the mesh is a curved or oblique surface)") +
+                    ": 2-D results are read in an axis plane");
+  PlaneOfData plane;
+  plane.axis = axis;
+  plane.coordinate = 0.5 * (b[2 * axis] + b[2 * axis + 1]);
+  // Thin next to the plane, thick enough for a cell locator's tolerance.
+  plane.thickness = 0.01 * size.norm();
+  return plane;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> extruded(vtkDataSet* data, const PlaneOfData& plane) {
+  const vtkIdType n = data->GetNumberOfPoints();
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(2 * n);
+  for (vtkIdType i = 0; i < n; ++i) {
+    double p[3];
+    data->GetPoint(i, p);
+    for (int side = 0; side < 2; ++side) {
+      p[plane.axis] = plane.coordinate + (side ? 0.5 : -0.5) * plane.thickness;
+      points->SetPoint(i + side * n, p);
+    }
+  }
+  auto slab = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  slab->SetPoints(points);
+  slab->GetFieldData()->DeepCopy(data->GetFieldData());
+  slab->GetPointData()->CopyAllocate(data->GetPointData(), 2 * n);
+  for (vtkIdType i = 0; i < n; ++i) {
+    slab->GetPointData()->CopyData(data->GetPointData(), i, i);
+    slab->GetPointData()->CopyData(data->GetPointData(), i, i + n);
+  }
+  slab->GetCellData()->CopyAllocate(data->GetCellData(), data->GetNumberOfCells());
+  auto ids = vtkSmartPointer<vtkIdList>::New();
+  auto triangles = vtkSmartPointer<vtkIdList>::New();
+  auto corners = vtkSmartPointer<vtkPoints>::New();
+  // Each face turned to run counter-clockwise about the normal, as VTK's
+  // wedge and hexahedron have their first face towards their second.
+  const int u = (plane.axis + 1) % 3, v = (plane.axis + 2) % 3;
+  const auto add = [&](int type, std::vector<vtkIdType> face, vtkIdType from) {
+    double area = 0.0;
+    for (std::size_t k = 0; k < face.size(); ++k) {
+      double a[3], b[3];
+      data->GetPoint(face[k], a), data->GetPoint(face[(k + 1) % face.size()], b);
+      area += a[u] * b[v] - b[u] * a[v];
+    }
+    if (area < 0.0) std::reverse(face.begin() + 1, face.end());
+    std::vector<vtkIdType> cell(face);
+    for (vtkIdType id : face) cell.push_back(id + n);
+    const vtkIdType made = slab->InsertNextCell(type, vtkIdType(cell.size()), cell.data());
+    slab->GetCellData()->CopyData(data->GetCellData(), from, made);
+  };
+  for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c) {
+    vtkCell* cell = data->GetCell(c);
+    if (cell->GetCellDimension() != 2) continue;
+    const int type = data->GetCellType(c);
+    if (type == VTK_TRIANGLE || type == VTK_QUAD || type == VTK_PIXEL) {
+      data->GetCellPoints(c, ids);
+      std::vector<vtkIdType> face(ids->GetPointer(0), ids->GetPointer(0) + ids->GetNumberOfIds());
+      if (type == VTK_PIXEL) std::swap(face[2], face[3]);  // a pixel's corners go in rows
+      add(type == VTK_TRIANGLE ? VTK_WEDGE : VTK_HEXAHEDRON, face, c);
+      continue;
+    }
+    // Polygons, strips and quadratic faces: the wedges of their triangles.
+    if (!cell->Triangulate(0, triangles, corners)) continue;
+    for (vtkIdType t = 0; t + 2 < triangles->GetNumberOfIds(); t += 3)
+      add(VTK_WEDGE, {triangles->GetId(t), triangles->GetId(t + 1), triangles->GetId(t + 2)}, c);
+  }
+  make_planar(slab->GetPointData(), slab->GetFieldData(), plane.axis);
+  make_planar(slab->GetCellData(), slab->GetFieldData(), plane.axis);
+  auto record = vtkSmartPointer<vtkDoubleArray>::New();
+  record->SetName(plane_record);
+  for (double v : {double(plane.axis), plane.coordinate, plane.thickness}) record->InsertNextValue(v);
+  slab->GetFieldData()->AddArray(record);
+  return slab;
+}
+
+std::optional<PlaneOfData> plane_of(vtkDataSet* data) {
+  auto* record = vtkDoubleArray::SafeDownCast(data->GetFieldData()->GetAbstractArray(plane_record));
+  if (!record || record->GetNumberOfValues() != 3) return std::nullopt;
+  PlaneOfData plane{int(record->GetValue(0)), record->GetValue(1), record->GetValue(2)};
+  if (plane.axis < 0 || plane.axis > 2 || !std::isfinite(plane.coordinate) || !(plane.thickness > 0)) return std::nullopt;
+  return plane;
+}
+
+}  // namespace hsb

@@ -1,0 +1,542 @@
+#include "field/reading/vtk_data.h"
+
+#include <vtkCellData.h>
+#include <vtkCellDataToPointData.h>
+#include <vtkCellTypes.h>
+#include <vtkDataArray.h>
+#include <vtkDataSet.h>
+#include <vtkDataSetReader.h>
+#include <vtkDataSetSurfaceFilter.h>
+#include <vtkImageData.h>
+#include <vtkMatrix3x3.h>
+#include <vtkPointData.h>
+#include <vtkPolyDataNormals.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkCell.h>
+#include <vtkCellType.h>
+#include <vtkGenericCell.h>
+#include <vtkCellArray.h>
+#include <vtkIdList.h>
+#include <vtkPoints.h>
+#include <vtkTriangleFilter.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLGenericDataObjectReader.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "base/child_process.h"
+#include "base/input_file.h"
+#include "field/reading/component_arrays.h"
+#include "field/reading/component_order.h"
+#include "field/reading/data_error.h"
+#include "field/reading/dataset_reading.h"
+#include "field/reading/plane_data.h"
+#include "field/reading/vtk_session.h"
+#include "field/sampling/mesh_field.h"
+#include "field/sampling/mesh_locator.h"
+#include "field/sampling/uniform_grid.h"
+#include "field/tensor/eigenvalue_range.h"
+
+namespace hsb {
+namespace {
+
+
+std::string list_arrays(vtkDataSet* data) {
+  std::ostringstream out;
+  auto list = [&](vtkDataSetAttributes* attributes, const char* where) {
+    out << where << " data: ";
+    if (attributes->GetNumberOfArrays() == 0) out << "none";
+    for (int i = 0; i < attributes->GetNumberOfArrays(); ++i) {
+      vtkAbstractArray* a = attributes->GetAbstractArray(i);
+      out << (i ? ", " : "") << (a->GetName() ? a->GetName() : "(unnamed)") << " ("
+          << a->GetNumberOfComponents() << " components)";
+    }
+  };
+  list(data->GetPointData(), "point");
+  out << "; ";
+  list(data->GetCellData(), "cell");
+  return out.str();
+}
+
+struct ChosenArray {
+  vtkDataArray* array = nullptr;
+  bool on_points = true;
+  std::string name;
+  int components = 0;
+  std::string note;  // how it was chosen among others, for the user; "" when there was no choice
+};
+
+// Every array of 6 or 9 components, point data first (as `association`
+// allows), the active tensors of each ahead of the rest.
+std::vector<ChosenArray> tensor_candidates(vtkDataSet* data, TensorAssociation association) {
+  std::vector<ChosenArray> found;
+  for (const bool points : {true, false}) {
+    if ((points && association == TensorAssociation::cell) || (!points && association == TensorAssociation::point))
+      continue;
+    vtkDataSetAttributes* a = points ? data->GetPointData() : static_cast<vtkDataSetAttributes*>(data->GetCellData());
+    std::vector<vtkDataArray*> arrays;
+    if (vtkDataArray* active = a->GetTensors()) arrays.push_back(active);
+    for (int i = 0; i < a->GetNumberOfArrays(); ++i)
+      if (vtkDataArray* array = a->GetArray(i); array && array != a->GetTensors()) arrays.push_back(array);
+    for (vtkDataArray* array : arrays)
+      if (array->GetNumberOfComponents() == 6 || array->GetNumberOfComponents() == 9)
+        found.push_back({array, points, array->GetName() ? array->GetName() : "(unnamed)", array->GetNumberOfComponents(), ""});
+  }
+  return found;
+}
+
+// Among several arrays of tensors: the active tensors (point data, then
+// cell data), else the first whose name says stress, else strain, else
+// the first; with a note naming the others.
+ChosenArray pick_tensors(vtkDataSet* data, TensorAssociation association) {
+  const std::vector<ChosenArray> candidates = tensor_candidates(data, association);
+  if (candidates.empty()) return {};
+  const auto active = [&](const ChosenArray& c) {
+    return c.array == (c.on_points ? data->GetPointData()->GetTensors() : data->GetCellData()->GetTensors());
+  };
+  auto best = std::find_if(candidates.begin(), candidates.end(), active);
+  if (best == candidates.end())
+    best = std::min_element(candidates.begin(), candidates.end(), [](const ChosenArray& a, const ChosenArray& b) {
+      return tensor_name_rank(a.name) < tensor_name_rank(b.name);
+    });
+  ChosenArray chosen = *best;
+  // The same quantity at the cells as well as at the points is no choice
+  // worth a word: point data is drawn (interpolated, not piecewise).
+  std::string others;
+  int named = 1;
+  for (const ChosenArray& c : candidates)
+    if (c.name != chosen.name) {
+      others += (others.empty() ? "\"" : ", \"") + c.name + "\" (" + std::to_string(c.components) + " components, " +
+                (c.on_points ? "point" : "cell") + " data)";
+      ++named;
+    }
+  if (!others.empty()) {
+    chosen.note = "of " + std::to_string(named) + " arrays of tensors, \"" + chosen.name + "\" (" +
+                  (chosen.on_points ? "point" : "cell") + " data) is drawn, " +
+                  (active(chosen) ? std::string("the active tensors")
+                   : tensor_name_rank(chosen.name) == 0 ? std::string("its name says stress")
+                   : tensor_name_rank(chosen.name) == 1 ? std::string("its name says strain (none says stress)")
+                                                        : std::string("the first (no name says stress or strain)")) +
+                  "; also in the file: " + others + ". data.array names another";
+  }
+  return chosen;
+}
+
+// The one array of `allowed` components among `attributes`' arrays; null
+// when there is none or more than one.
+vtkDataArray* only_array_of(vtkDataSetAttributes* attributes, std::initializer_list<int> allowed) {
+  vtkDataArray* found = nullptr;
+  for (int i = 0; i < attributes->GetNumberOfArrays(); ++i) {
+    vtkDataArray* a = attributes->GetArray(i);
+    if (!a || std::find(allowed.begin(), allowed.end(), a->GetNumberOfComponents()) == allowed.end()) continue;
+    if (found) return nullptr;
+    found = a;
+  }
+  return found;
+}
+
+// `name` among the point data, then the cell data (as `association` allows).
+ChosenArray named_array(vtkDataSet* data, const std::string& name, TensorAssociation association) {
+  ChosenArray chosen;
+  if (association != TensorAssociation::cell) chosen.array = data->GetPointData()->GetArray(name.c_str());
+  if (!chosen.array && association != TensorAssociation::point) {
+    chosen.array = data->GetCellData()->GetArray(name.c_str());
+    chosen.on_points = false;
+  }
+  if (chosen.array) {
+    chosen.name = name;
+    chosen.components = chosen.array->GetNumberOfComponents();
+  }
+  return chosen;
+}
+
+const char* where_looked(TensorAssociation association) {
+  return association == TensorAssociation::point  ? " in its point data"
+         : association == TensorAssociation::cell ? " in its cell data"
+                                                   : "";
+}
+
+// The array the field is made of. Named: that array, whose components say
+// what it is (6 or 9: tensors, 3: vectors). Not named: tensors by
+// pick_tensors(); only when the file has no array of 6 or 9 components
+// (and unless tensors were asked for), the active vectors, else the only
+// array of 3, with a note that the picture is of a flow.
+ChosenArray choose_field_array(vtkDataSet* data, const VtkFileSpec& spec) {
+  const TensorAssociation assoc = spec.association;
+  ChosenArray chosen;
+  if (!spec.array.empty()) {
+    chosen = named_array(data, spec.array, assoc);
+    if (!chosen.array)
+      throw DataError(spec.path + ": no array named \"" + spec.array + "\" (data.array)" + where_looked(assoc) + "; the file has " +
+                      list_arrays(data));
+  } else {
+    const auto pick_vectors = [&]() {
+      for (const bool points : {true, false}) {
+        if ((points && assoc == TensorAssociation::cell) || (!points && assoc == TensorAssociation::point)) continue;
+        vtkDataSetAttributes* a = points ? data->GetPointData() : static_cast<vtkDataSetAttributes*>(data->GetCellData());
+        vtkDataArray* found = a->GetVectors() ? a->GetVectors() : only_array_of(a, {3});
+        if (found) return ChosenArray{found, points, found->GetName() ? found->GetName() : "(unnamed)",
+                                      found->GetNumberOfComponents(), ""};
+      }
+      return ChosenArray{};
+    };
+    if (spec.kind != FieldKind::vector) chosen = pick_tensors(data, assoc);
+    if (!chosen.array && spec.kind != FieldKind::tensor) {
+      chosen = pick_vectors();
+      if (chosen.array && spec.kind == FieldKind::automatic)
+        chosen.note = "the file has no array of 6 or 9 components: its vectors \"" + chosen.name +
+                      "\" are drawn as a flow (streamballs along streamlines); data.field = \"vector\" says so";
+    }
+    if (!chosen.array) {
+      const std::string what = spec.kind == FieldKind::tensor ? "no active tensors and no single array of 6 or 9 components"
+                               : spec.kind == FieldKind::vector
+                                   ? "no active vectors and no single array of 3 components"
+                                   : "no tensors (active, or a single array of 6 or 9 components) and no vectors "
+                                     "(active, or a single array of 3)";
+      throw DataError(spec.path + ": " + what + where_looked(assoc) + "; the file has " + list_arrays(data));
+    }
+  }
+  const int c = chosen.components;
+  const bool tensor = c == 6 || c == 9;
+  if ((spec.kind == FieldKind::tensor && !tensor) || (spec.kind == FieldKind::vector && c != 3) || (!tensor && c != 3))
+    throw DataError(spec.path + ": array \"" + chosen.name + "\" has " + std::to_string(c) + " components; " +
+                    (spec.kind == FieldKind::vector ? "a vector needs 3"
+                     : spec.kind == FieldKind::tensor ? "a tensor needs 9, or 6 (XX, YY, ZZ, XY, YZ, XZ)"
+                                                      : "a tensor needs 9, or 6 (XX, YY, ZZ, XY, YZ, XZ); a vector 3"));
+  return chosen;
+}
+
+// The order the scene says the six components come in.
+// The order the six components of `chosen` come in: the one the file
+// records (then already VTK's: field/reading/component_arrays.h), else the
+// scene's, else the one its format implies, else VTK's.
+const ComponentOrder& order_of(const VtkFileSpec& spec, vtkDataSet* data, const ChosenArray& chosen) {
+  const std::string recorded = recorded_component_order(data, chosen.name);
+  if (!recorded.empty() && !spec.components.empty() && spec.components != "vtk")
+    throw DataError(spec.path + ": array \"" + chosen.name + "\" says which component is which (" + recorded +
+                    "): data.components = \"" + spec.components + "\" does not apply; leave it out");
+  std::string name = "vtk";
+  if (recorded.empty() && !spec.components.empty()) name = spec.components;
+  else if (recorded.empty()) name = recorded_default_order(data, chosen.name).order;
+  const ComponentOrder* order = component_order(name.empty() ? "vtk" : name);
+  if (!order) throw DataError(spec.path + ": no component order \"" + name + "\" (data.components)");
+  return *order;
+}
+
+// The values of a vector or scalar array, checked for finiteness.
+template <class T>
+std::vector<T> read_values(const ChosenArray& chosen, const std::string& path) {
+  const vtkIdType n = chosen.array->GetNumberOfTuples();
+  const int components = chosen.array->GetNumberOfComponents();
+  std::vector<T> out(static_cast<std::size_t>(n));
+  double t[3] = {0, 0, 0};
+  for (vtkIdType i = 0; i < n; ++i) {
+    chosen.array->GetTuple(i, t);
+    for (int c = 0; c < components; ++c)
+      if (!std::isfinite(t[c])) {
+        std::ostringstream message;
+        message << path << ": array \"" << chosen.name << "\" has a non-finite value (" << t[c] << ") at "
+                << (chosen.on_points ? "point " : "cell ") << i << ", component " << c;
+        throw DataError(message.str());
+      }
+    if constexpr (std::is_same_v<T, Vec3>)
+      out[std::size_t(i)] = Vec3(t[0], t[1], t[2]);
+    else
+      out[std::size_t(i)] = t[0];
+  }
+  return out;
+}
+
+// Tensors of `array`, checked for finiteness, symmetrised when given as 9
+// components (with one warning for the largest asymmetry found).
+std::vector<Sym3> read_tensors(const ChosenArray& chosen, const std::string& path, const ComponentOrder& order,
+                               std::vector<std::string>& warnings) {
+  vtkDataArray* array = chosen.array;
+  const char* item = chosen.on_points ? "point" : "cell";
+  const vtkIdType n = array->GetNumberOfTuples();
+  const int components = array->GetNumberOfComponents();
+  std::vector<Sym3> tensors(static_cast<std::size_t>(n));
+  double worst = 0.0, worst_norm = 0.0;
+  vtkIdType worst_at = -1;
+  double t[9];
+  vtkIdType missing = 0;
+  for (vtkIdType i = 0; i < n; ++i) {
+    array->GetTuple(i, t);
+    // NaN is "no data" (outside a brain mask, a failed fit): the tensor is
+    // kept as NaN and the fields sample nothing where it counts.
+    if (std::any_of(t, t + components, [](double v) { return std::isnan(v); })) {
+      tensors[std::size_t(i)] = Sym3{NAN, NAN, NAN, NAN, NAN, NAN};
+      ++missing;
+      continue;
+    }
+    for (int c = 0; c < components; ++c) {
+      if (!std::isfinite(t[c])) {
+        std::ostringstream message;
+        message << path << ": array \"" << chosen.name << "\" has a non-finite value (" << t[c] << ") at "
+                << item << " " << i << ", component " << c;
+        throw DataError(message.str());
+      }
+    }
+    Sym3& s = tensors[std::size_t(i)];
+    if (components == 6) {
+      s = tensor_in_order(t, order);
+      continue;
+    }
+    // Row- or column-major does not matter: the symmetric part is the same.
+    Mat3 m;
+    for (int k = 0; k < 9; ++k) m(k / 3, k % 3) = t[k];
+    s = Sym3::symmetric_part(m);
+    const double asymmetry = (m - m.transpose()).cwiseAbs().maxCoeff();
+    if (asymmetry > worst) {
+      worst = asymmetry;
+      worst_at = i;
+      worst_norm = m.norm();
+    }
+  }
+  if (missing == n)
+    throw DataError(path + ": array \"" + chosen.name + "\" holds no data: every " + item + "'s tensor is NaN");
+  if (missing > 0) {
+    std::ostringstream message;
+    message << path << ": " << missing << " of " << n << " " << item << "s have no tensor (NaN in array \""
+            << chosen.name << "\"): no data there, as outside the data set";
+    warnings.push_back(message.str());
+  }
+  if (worst_at >= 0) {
+    std::ostringstream message;
+    message << path << ": array \"" << chosen.name << "\" is not symmetric; using its symmetric part "
+            << "(T + Tᵀ)/2. Largest asymmetry |T_ij − T_ji| = " << worst << " at " << item << " "
+            << worst_at << " (where |T| = " << worst_norm << ")";
+    warnings.push_back(message.str());
+  }
+  return tensors;
+}
+
+// The tensors of `chosen` in the data's space: in their order, and
+// turned from the axes they were written in where the file says (FSL's).
+std::vector<Sym3> tensors_of(const ChosenArray& chosen, const VtkFileSpec& spec, vtkDataSet* data,
+                             std::vector<std::string>& warnings) {
+  const ComponentOrder& order = order_of(spec, data, chosen);
+  std::vector<Sym3> tensors = read_tensors(chosen, spec.path, order, warnings);
+  // An order no file states, only its writer implies: said, as a choice the scene can overrule.
+  if (const DefaultOrder implied = recorded_default_order(data, chosen.name);
+      chosen.components == 6 && spec.components.empty() && !implied.why.empty())
+    warnings.push_back(spec.path + ": array \"" + chosen.name + "\" read in the order " + order.layout + " (\"" +
+                       order.name + "\"): " + implied.why + "; data.components names another");
+  if (const std::optional<Mat3> frame = recorded_tensor_frame(data, chosen.name))
+    for (Sym3& t : tensors)
+      if (t.is_finite()) t = Sym3::symmetric_part(*frame * t.matrix() * frame->transpose());
+  return tensors;
+}
+
+// The point-data version of a cell array, by VTK's averaging filter.
+ChosenArray averaged_onto_points(vtkDataSet* data, const ChosenArray& cells, const std::string& path,
+                                 vtkSmartPointer<vtkDataSet>& keep_alive) {
+  vtkSmartPointer<vtkDataSet> only_this = vtkSmartPointer<vtkDataSet>::Take(data->NewInstance());
+  only_this->CopyStructure(data);
+  only_this->GetCellData()->AddArray(cells.array);
+  auto filter = vtkSmartPointer<vtkCellDataToPointData>::New();
+  filter->SetInputData(only_this);
+  update_safely(filter, path, "cell-to-point averaging");
+  keep_alive = vtkDataSet::SafeDownCast(filter->GetOutputDataObject(0));
+  return {keep_alive->GetPointData()->GetArray(cells.array->GetName()), true, cells.name};
+}
+
+// Image data a uniform grid can stand for: a volume (two nodes or more on
+// every axis) with an invertible direction matrix, turned or not.
+bool is_image_volume(vtkDataSet* data) {
+  auto* image = vtkImageData::SafeDownCast(data);
+  if (!image) return false;
+  const int* dims = image->GetDimensions();
+  return dims[0] >= 2 && dims[1] >= 2 && dims[2] >= 2 && std::fabs(image->GetDirectionMatrix()->Determinant()) > 1e-12;
+}
+
+// The data set's outer surface as triangles with vertex normals. Edges
+// sharper than 40° split the normals, so a cylinder's faceted wall shades
+// smoothly while its rim stays a rim.
+TriangleMesh boundary_surface(vtkDataSet* data, const std::string& path) {
+  auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
+  surface->SetInputData(data);
+  auto triangles = vtkSmartPointer<vtkTriangleFilter>::New();
+  triangles->SetInputConnection(surface->GetOutputPort());
+  triangles->PassVertsOff();
+  triangles->PassLinesOff();
+  auto normals = vtkSmartPointer<vtkPolyDataNormals>::New();
+  normals->SetInputConnection(triangles->GetOutputPort());
+  normals->SetFeatureAngle(40.0);
+  normals->SplittingOn();
+  normals->ConsistencyOn();
+  normals->AutoOrientNormalsOff();  // a hollow body has no single outside
+  normals->ComputePointNormalsOn();
+  normals->ComputeCellNormalsOff();
+  update_safely(normals, path, "surface extraction");
+  vtkPolyData* poly = normals->GetOutput();
+  vtkDataArray* point_normals = poly->GetPointData()->GetNormals();
+  TriangleMesh mesh;
+  mesh.vertices.reserve(std::size_t(poly->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i) {
+    double p[3];
+    poly->GetPoint(i, p);
+    mesh.vertices.emplace_back(p[0], p[1], p[2]);
+    if (point_normals) {
+      point_normals->GetTuple(i, p);
+      mesh.normals.emplace_back(p[0], p[1], p[2]);
+    }
+  }
+  vtkCellArray* polys = poly->GetPolys();
+  polys->InitTraversal();
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  while (polys->GetNextCell(count, ids)) {
+    if (count == 3) mesh.triangles.push_back({std::uint32_t(ids[0]), std::uint32_t(ids[1]), std::uint32_t(ids[2])});
+  }
+  return mesh;
+}
+
+}  // namespace
+
+namespace {
+
+// The scalar array `name` for colouring: one component (a vector's
+// magnitude when it has three).
+std::unique_ptr<ScalarField> color_field(vtkDataSet* data, const VtkFileSpec& spec,
+                                         const std::shared_ptr<const MeshLocator>& locator) {
+  const ChosenArray chosen = named_array(data, spec.color_array, TensorAssociation::automatic);
+  if (!chosen.array)
+    throw DataError(spec.path + ": no array named \"" + spec.color_array + "\" to colour by; the file has " +
+                    list_arrays(data));
+  const ValueLocation where = chosen.on_points ? ValueLocation::points : ValueLocation::cells;
+  if (chosen.components == 1)
+    return std::make_unique<MeshField<double>>(locator, read_values<double>(chosen, spec.path), where);
+  if (chosen.components == 3) {
+    std::vector<double> magnitude;
+    for (const Vec3& v : read_values<Vec3>(chosen, spec.path)) magnitude.push_back(v.norm());
+    return std::make_unique<MeshField<double>>(locator, std::move(magnitude), where);
+  }
+  throw DataError(spec.path + ": array \"" + chosen.name + "\" has " + std::to_string(chosen.components) +
+                  " components; colouring needs a scalar (1) or a vector (3, by its magnitude)");
+}
+
+}  // namespace
+
+VtkData load_vtk_data(const VtkFileSpec& spec) {
+  const VtkSession vtk;
+  const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path, vtk, spec.step);
+  VtkData out;
+  ChosenArray chosen = choose_field_array(data, spec);
+  if (!chosen.note.empty()) out.warnings.push_back(spec.path + ": " + chosen.note);
+  // One locator for every array of the data set (all share its cells).
+  std::shared_ptr<const MeshLocator> locator;
+  const auto mesh_locator = [&] {
+    if (!locator) locator = std::make_shared<MeshLocator>(data.Get());
+    return locator;
+  };
+  if (chosen.components == 3) {
+    out.vectors = std::make_unique<MeshField<Vec3>>(mesh_locator(), read_values<Vec3>(chosen, spec.path),
+                                                    chosen.on_points ? ValueLocation::points : ValueLocation::cells);
+  } else {
+    vtkSmartPointer<vtkDataSet> averaged;
+    std::vector<Sym3> tensors = tensors_of(chosen, spec, data, out.warnings);
+    if (!chosen.on_points && spec.cell_tensors == CellTensors::averaged) {
+      // The checks and warnings above name cells, which the user can find;
+      // the averaged copy would only repeat them for points.
+      chosen = averaged_onto_points(data, chosen, spec.path, averaged);
+      std::vector<std::string> repeated;
+      tensors = tensors_of(chosen, spec, data, repeated);
+    }
+    if (chosen.on_points && is_image_volume(data)) {
+      auto* image = vtkImageData::SafeDownCast(data);
+      const int* extent = image->GetExtent();
+      const double* origin = image->GetOrigin();
+      const double* spacing = image->GetSpacing();
+      Mat3 direction;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) direction(i, j) = image->GetDirectionMatrix()->GetElement(i, j);
+      // The first node: the extent may start away from index 0.
+      const Vec3 first = Vec3(origin[0], origin[1], origin[2]) +
+                         direction * Vec3(extent[0] * spacing[0], extent[2] * spacing[1], extent[4] * spacing[2]);
+      const int* dims = image->GetDimensions();
+      out.field = std::make_unique<UniformGridField>(first, Vec3(spacing[0], spacing[1], spacing[2]),
+                                                     std::array<int, 3>{dims[0], dims[1], dims[2]},
+                                                     std::move(tensors), direction);
+    } else {
+      out.field = std::make_unique<MeshField<Sym3>>(mesh_locator(), std::move(tensors),
+                                              chosen.on_points ? ValueLocation::points : ValueLocation::cells);
+    }
+  }
+  if (!spec.color_array.empty()) out.color = color_field(data, spec, mesh_locator());
+  out.boundary = boundary_surface(data, spec.path);
+  if (const std::optional<PlaneOfData> plane = plane_of(data)) out.plane_axis = plane->axis;
+  return out;
+}
+
+std::string describe_vtk_file(const VtkFileSpec& spec) {
+  // Before the session: reading the series takes one of its own.
+  const std::vector<double> times = series_times(spec.path);
+  const VtkSession vtk;
+  const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path, vtk, spec.step);
+  std::ostringstream out;
+  double b[6];
+  data->GetBounds(b);
+  if (!times.empty()) {
+    out << spec.path << ": a time series of " << times.size() << " steps, at times";
+    for (double t : times) out << " " << t;
+    out << "; step " << std::max(spec.step, 0) << " (data.step) is described\n";
+  }
+  out << spec.path << ": " << data->GetClassName() << "\n";
+  out << "  bounds    x [" << b[0] << ", " << b[1] << "]  y [" << b[2] << ", " << b[3] << "]  z [" << b[4]
+      << ", " << b[5] << "]\n";
+  out << "  points    " << data->GetNumberOfPoints() << "\n";
+  out << "  cells     " << data->GetNumberOfCells();
+  std::map<std::string, vtkIdType> types;
+  for (vtkIdType i = 0; i < data->GetNumberOfCells(); ++i)
+    ++types[vtkCellTypes::GetClassNameFromTypeId(data->GetCellType(i))];
+  const char* separator = ": ";
+  for (const auto& [name, count] : types) {
+    out << separator << count << " " << name;
+    separator = ", ";
+  }
+  out << "\n  arrays    " << list_arrays(data) << "\n";
+  if (const std::optional<PlaneOfData> plane = plane_of(data))
+    out << "  plane     a 2-D result in " << "xyz"[plane->axis] << " = " << plane->coordinate << ", made a slab "
+        << plane->thickness << " thick; its tensors' out-of-plane entries set planar (the in-plane mean, no shear)\n";
+
+  const ChosenArray chosen = choose_field_array(data, spec);
+  const char* where = chosen.on_points ? "point" : "cell";
+  if (!chosen.note.empty()) out << "  chosen    " << chosen.note << "\n";
+  if (chosen.components == 3) {
+    double lo = INFINITY, hi = 0.0;
+    for (const Vec3& v : read_values<Vec3>(chosen, spec.path)) lo = std::min(lo, v.norm()), hi = std::max(hi, v.norm());
+    out << "  vectors   \"" << chosen.name << "\" (3 components, " << where << " data)\n";
+    out << "  speed     [" << lo << ", " << hi << "]\n";
+    return out.str();
+  }
+  std::vector<std::string> warnings;
+  const std::vector<Sym3> tensors = tensors_of(chosen, spec, data, warnings);
+  EigenvalueRange range;
+  for (const Sym3& s : tensors)
+    if (s.is_finite()) range.add(s);
+  out << "  tensors   \"" << chosen.name << "\" (" << chosen.components << " components, " << where << " data)\n";
+  const std::string recorded = recorded_component_order(data, chosen.name);
+  if (!recorded.empty()) {
+    out << "  order     recorded in the file: " << recorded << "\n";
+  } else if (chosen.components == 6) {
+    const ComponentOrder& order = order_of(spec, data, chosen);
+    out << "  order     " << order.layout << " (data.components = \"" << order.name << "\": " << order.tools << ")";
+    if (const DefaultOrder implied = recorded_default_order(data, chosen.name); spec.components.empty() && !implied.why.empty())
+      out << "; " << implied.why;
+    out << "\n";
+  }
+  if (recorded_tensor_frame(data, chosen.name)) out << "  frame     tensors turned from the file's voxel axes into its space\n";
+  for (const std::string& w : warnings) out << "  note      " << w.substr(w.find(": ") + 2) << "\n";
+  out << range;
+  for (const std::string& w : warnings) out << "  warning: " << w << "\n";
+  return out.str();
+}
+
+}  // namespace hsb

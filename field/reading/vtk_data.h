@@ -1,0 +1,91 @@
+#pragma once
+// Tensor data from VTK files: legacy .vtk (ASCII or binary) and XML .vti,
+// .vtu, .vts, .vtr (ASCII, binary, appended, zlib-compressed), read by VTK's
+// own readers. No VTK type appears in this header.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "field/glyphs/triangle_mesh.h"
+#include "field/sampling/field.h"
+
+namespace hsb {
+
+enum class TensorAssociation {
+  automatic,  // point data if the array is there, else cell data
+  point,
+  cell,
+};
+
+// How cell-data tensors are sampled.
+enum class CellTensors {
+  constant,  // piecewise constant: the tensor of the containing cell
+  averaged,  // averaged onto the points (VTK's cell-data-to-point-data), then
+             // interpolated like point data
+};
+
+// What the data file is read as.
+enum class FieldKind {
+  automatic,  // tensors if the file has them, else vectors
+  tensor,
+  vector,
+};
+
+struct VtkFileSpec {
+  std::string path;
+  std::string array;  // "" = the active tensors (or vectors), or the only such array
+  TensorAssociation association = TensorAssociation::automatic;
+  CellTensors cell_tensors = CellTensors::constant;
+  FieldKind kind = FieldKind::automatic;
+  std::string color_array;  // a scalar array to colour by; "" = none
+  int step = -1;            // of a time series: the step's index (-1: the first)
+  // The order of 6 components (field/reading/component_order.h); "" = the order
+  // the file records (field/reading/component_arrays.h), else VTK's.
+  std::string components;
+};
+
+struct VtkData {
+  std::unique_ptr<TensorField> field;     // tensor data; or
+  std::unique_ptr<VectorField> vectors;   // vector data
+  std::unique_ptr<ScalarField> color;     // VtkFileSpec::color_array, when named
+  TriangleMesh boundary;              // the data set's outer surface
+  // A 2-D result (field/reading/plane_data.h): the axis of its plane's normal.
+  std::optional<int> plane_axis;
+  std::vector<std::string> warnings;  // e.g. a non-symmetric tensor array
+};
+
+// Reads the file and its tensors, or its vectors (3 components, read as
+// they are), and the colour array. Tensors with 9 components are replaced by
+// their symmetric part (paper eq. 2), with one warning giving the largest
+// asymmetry; 6 components are read in VTK's order XX, YY, ZZ, XY, YZ, XZ.
+// Throws DataError naming the file (and point or cell) for an unreadable
+// file, a missing array (listing those present), a wrong component count or
+// a non-finite value. Uniform image data with point tensors is sampled
+// trilinearly; any other data set through a cell locator and the cells' own
+// interpolation functions.
+VtkData load_vtk_data(const VtkFileSpec& spec);
+
+// Each VTK step first runs in a child process (a corrupt file crashes or
+// hangs VTK's readers); a child that takes longer than `seconds` plus a
+// second per megabyte of file calls the file corrupt. 30 s unless set: the
+// data fuzzer sets a few, so that a file that hangs VTK costs it little.
+void set_trial_read_seconds(double seconds);
+
+// The times of the steps of a time series (a .pvd), in order; none for a
+// data file of one step. Throws DataError for a series it cannot read.
+// Like data_files_read(), it opens a VTK session of its own: not to be
+// called while holding one.
+std::vector<double> series_times(const std::string& path);
+
+// Every file reading `path` (at `step` of a series) reads: itself, and a
+// series' step, a parallel file's pieces, a multiblock file's blocks.
+// Throws DataError for a series it cannot read.
+std::vector<std::string> data_files_read(const std::string& path, int step = -1);
+
+// What `hsb info` prints for a data file: kind, bounds, cell types and
+// counts, arrays, and the range of each eigenvalue of the chosen tensors.
+std::string describe_vtk_file(const VtkFileSpec& spec);
+
+}  // namespace hsb

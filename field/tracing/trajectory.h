@@ -1,0 +1,85 @@
+#pragma once
+// Stress trajectories (tensor lines), curves tangent to one eigenvector
+// family, dx/ds = e_k(x); and streamlines of a vector field, dx/ds = v/|v|.
+// One integrator serves both (design §10): eigenvectors have no sign, so
+// each sample is flipped to agree with the direction of travel; a flow's
+// vectors are signed and never flipped, so a streamline never turns back
+// at a sink.
+
+#include <functional>
+#include <vector>
+
+#include "field/sampling/field.h"
+
+namespace hsb {
+
+enum class EigenFamily { major = 0, medium = 1, minor = 2 };
+
+// Why one end of a trajectory stopped.
+enum class StopReason { boundary, max_length, degenerate, low_magnitude, max_steps, closed };
+
+// Which way from the seed a curve is traced.
+enum class TraceDirection { both, forward, backward };
+
+struct TrajectoryOptions {
+  EigenFamily family = EigenFamily::major;
+  double step = 0.01;        // RK4 step, in arc length
+  double max_length = 10.0;  // per direction from the seed
+  // Stop where the followed eigenvalue's gap to its nearest neighbour is
+  // below this fraction of max|λ| (the eigenvector is undefined there).
+  double degeneracy_tolerance = 1e-3;
+  // Stop where the tensor's Frobenius norm falls below this (0: never).
+  double min_magnitude = 0.0;
+  int max_steps = 100000;  // per direction; a guard, not a control
+  TraceDirection direction = TraceDirection::both;
+  // Eigenvectors are sign-free; a flow's vectors are not (streamlines).
+  bool signed_directions = false;
+};
+
+struct Trajectory {
+  // Ordered from the backward end through the seed to the forward end.
+  std::vector<Vec3> points;
+  std::size_t seed_index = 0;
+  StopReason backward_stop = StopReason::max_length;
+  StopReason forward_stop = StopReason::max_length;
+
+  double length() const;
+};
+
+// What integration sees at one point: the followed eigenvector (unit,
+// arbitrary sign), or the reason integration must stop there.
+struct DirectionSample {
+  bool ok = false;
+  Vec3 direction = Vec3::Zero();
+  StopReason stop = StopReason::boundary;
+};
+using DirectionSampler = std::function<DirectionSample(const Vec3&)>;
+
+// The eigenvector of `options.family` at `x`: stops at the domain boundary,
+// at degenerate eigenvalues and below the magnitude threshold.
+DirectionSample eigen_direction(const TensorField& field, const Vec3& x,
+                                const TrajectoryOptions& options);
+
+// The direction of the vector field at `x` (unit): stops at the domain
+// boundary and where the speed falls below options.min_magnitude or to
+// zero (stagnation).
+DirectionSample flow_direction(const VectorField& field, const Vec3& x, const TrajectoryOptions& options);
+
+// The integrator itself, over any direction sampler (tests feed it
+// directions with deliberately random signs). With signed directions a
+// curve that comes back to its seed (a closed streamline of a steady
+// flow) stops there, closed, instead of running round again.
+Trajectory trace_directions(const DirectionSampler& sampler, const Vec3& seed,
+                            const TrajectoryOptions& options);
+
+// Integrates both directions from `seed` with RK4. Every stage's sampled
+// eigenvector is flipped to agree with the current direction of travel, so
+// the arbitrary sign of eigenvectors never reverses the curve. A step that
+// would leave the domain is shortened so the curve ends on the boundary.
+// A seed outside the domain or at a stopping point gives a single point.
+Trajectory trace_trajectory(const TensorField& field, const Vec3& seed,
+                            const TrajectoryOptions& options);
+// The same for a vector field: a streamline (signed directions).
+Trajectory trace_streamline(const VectorField& field, const Vec3& seed, const TrajectoryOptions& options);
+
+}  // namespace hsb
