@@ -8,7 +8,6 @@
 #include <vtkFieldData.h>
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
-#include <vtkStringArray.h>
 
 #include <algorithm>
 #include <array>
@@ -17,6 +16,7 @@
 #include <optional>
 
 #include "field/reading/component_order.h"
+#include "field/reading/file_records.h"
 
 namespace hsb {
 namespace {
@@ -38,11 +38,6 @@ constexpr Suffix vector_suffixes[] = {{"x", {0, -1}}, {"y", {1, -1}}, {"z", {2, 
 const std::string record_prefix = "hsb component order: ";
 const std::string default_prefix = "hsb default component order: ";
 const std::string frame_prefix = "hsb tensor frame: ";
-
-vtkStringArray* string_record(vtkDataSet* data, const std::string& key) {
-  auto* record = vtkStringArray::SafeDownCast(data->GetFieldData()->GetAbstractArray(key.c_str()));
-  return record && record->GetNumberOfValues() > 0 ? record : nullptr;
-}
 
 // Whether `name` ends in `suffix`, case aside.
 bool ends_in(const std::string& name, const char* suffix) {
@@ -172,30 +167,23 @@ void join_component_arrays(vtkDataSetAttributes* attributes, vtkFieldData* recor
 }
 
 void record_component_order(vtkFieldData* records, const std::string& name, const std::string& how) {
-  auto record = vtkSmartPointer<vtkStringArray>::New();
-  record->SetName((record_prefix + name).c_str());
-  record->InsertNextValue(how);
-  records->AddArray(record);
+  add_record(records, record_prefix + name, {how});
 }
 
 std::string recorded_component_order(vtkDataSet* data, const std::string& name) {
-  vtkStringArray* record = string_record(data, record_prefix + name);
-  return record ? record->GetValue(0) : std::string();
+  const std::vector<std::string> record = record_of(data, record_prefix + name);
+  return record.empty() ? std::string() : record.front();
 }
 
 void record_default_order(vtkFieldData* records, const std::string& name, const std::string& order,
                           const std::string& why) {
-  auto record = vtkSmartPointer<vtkStringArray>::New();
-  record->SetName((default_prefix + name).c_str());
-  record->InsertNextValue(order);
-  record->InsertNextValue(why);
-  records->AddArray(record);
+  add_record(records, default_prefix + name, {order, why});
 }
 
 DefaultOrder recorded_default_order(vtkDataSet* data, const std::string& name) {
-  vtkStringArray* record = string_record(data, default_prefix + name);
-  if (!record || record->GetNumberOfValues() < 2) return {};
-  return {record->GetValue(0), record->GetValue(1)};
+  const std::vector<std::string> record = record_of(data, default_prefix + name);
+  if (record.size() < 2) return {};
+  return {record[0], record[1]};
 }
 
 void record_writer_orders(vtkDataSet* data) {

@@ -5,40 +5,78 @@
 #include <filesystem>
 #include <fstream>
 
+#include "field/reading/format_reader.h"
+
 namespace hsb {
 namespace {
 
-using R = VtkReaderKind;
-
 const char* const convert = "convert it to .vtu (meshio convert FILE out.vtu, or ParaView's Save Data)";
+
+// The type attribute of a VTK XML file's root element, if it has one.
+std::string vtk_xml_type(const std::string& head) {
+  const std::size_t root = head.find("<VTKFile");
+  if (root == std::string::npos) return "";
+  const std::size_t type = head.find("type=", root);
+  if (type == std::string::npos || type + 6 >= head.size()) return "";
+  const char quote = head[type + 5];
+  const std::size_t end = head.find(quote, type + 6);
+  return end == std::string::npos ? "" : head.substr(type + 6, end - type - 6);
+}
+
+bool starts(const std::string& head, const char* magic) { return head.rfind(magic, 0) == 0; }
+
+// The content probes, one a signature.
+template <const char* Type>
+bool vtk_xml(const std::string& head) { return vtk_xml_type(head) == Type; }
+constexpr char image_data[] = "ImageData", unstructured_grid[] = "UnstructuredGrid",
+               structured_grid[] = "StructuredGrid", rectilinear_grid[] = "RectilinearGrid",
+               p_image_data[] = "PImageData", p_unstructured_grid[] = "PUnstructuredGrid",
+               p_structured_grid[] = "PStructuredGrid", p_rectilinear_grid[] = "PRectilinearGrid",
+               multiblock[] = "vtkMultiBlockDataSet", collection[] = "Collection", poly_data[] = "PolyData";
+bool legacy_vtk(const std::string& head) { return starts(head, "# vtk DataFile Version"); }
+bool nrrd(const std::string& head) { return starts(head, "NRRD000"); }
+// NIfTI-1 and -2 say so at a fixed place (bytes 344 and 4 of the header).
+bool nifti(const std::string& head) {
+  return (head.size() >= 348 && (head.compare(344, 4, std::string("n+1\0", 4)) == 0 ||
+                                 head.compare(344, 4, std::string("ni1\0", 4)) == 0)) ||
+         (head.size() >= 8 && (head.compare(4, 4, std::string("n+2\0", 4)) == 0 ||
+                               head.compare(4, 4, std::string("ni2\0", 4)) == 0));
+}
+bool mrtrix(const std::string& head) { return starts(head, "mrtrix image"); }
+// Classic netCDF: the container of Exodus II files.
+bool netcdf(const std::string& head) { return starts(head, "CDF\x01") || starts(head, "CDF\x02"); }
+bool gmsh(const std::string& head) { return starts(head, "$MeshFormat"); }
+bool abaqus_input(const std::string& head) { return starts(head, "*Heading"); }
+bool xdmf(const std::string& head) { return starts(head, "Xdmf") || head.find("<Xdmf") != std::string::npos; }
+bool hdf5(const std::string& head) { return starts(head, "\x89HDF\r\n\x1a\n"); }
 
 std::vector<DataFormat> build_formats() {
   return {
-      {"legacy VTK", {".vtk"}, "# vtk DataFile Version", R::legacy, ""},
-      {"VTK XML image data", {".vti"}, "ImageData", R::xml, ""},
-      {"VTK XML unstructured grid", {".vtu"}, "UnstructuredGrid", R::xml, ""},
-      {"VTK XML structured grid", {".vts"}, "StructuredGrid", R::xml, ""},
-      {"VTK XML rectilinear grid", {".vtr"}, "RectilinearGrid", R::xml, ""},
-      {"parallel VTK XML unstructured grid", {".pvtu"}, "PUnstructuredGrid", R::xml_pieces, ""},
-      {"parallel VTK XML image data", {".pvti"}, "PImageData", R::xml, ""},
-      {"parallel VTK XML structured grid", {".pvts"}, "PStructuredGrid", R::xml, ""},
-      {"parallel VTK XML rectilinear grid", {".pvtr"}, "PRectilinearGrid", R::xml, ""},
-      {"VTK XML multiblock data set", {".vtm", ".vtmb"}, "vtkMultiBlockDataSet", R::xml_pieces, ""},
-      {"ParaView time series", {".pvd"}, "Collection", R::series, ""},
-      {"VTK XML polygonal data", {".vtp"}, "PolyData", R::xml, ""},
+      {"legacy VTK", {".vtk"}, legacy_vtk, &legacy_vtk_reader},
+      {"VTK XML image data", {".vti"}, vtk_xml<image_data>, &vtk_xml_reader},
+      {"VTK XML unstructured grid", {".vtu"}, vtk_xml<unstructured_grid>, &vtk_xml_reader},
+      {"VTK XML structured grid", {".vts"}, vtk_xml<structured_grid>, &vtk_xml_reader},
+      {"VTK XML rectilinear grid", {".vtr"}, vtk_xml<rectilinear_grid>, &vtk_xml_reader},
+      {"parallel VTK XML unstructured grid", {".pvtu"}, vtk_xml<p_unstructured_grid>, &vtk_pieces_reader},
+      {"parallel VTK XML image data", {".pvti"}, vtk_xml<p_image_data>, &vtk_xml_reader},
+      {"parallel VTK XML structured grid", {".pvts"}, vtk_xml<p_structured_grid>, &vtk_xml_reader},
+      {"parallel VTK XML rectilinear grid", {".pvtr"}, vtk_xml<p_rectilinear_grid>, &vtk_xml_reader},
+      {"VTK XML multiblock data set", {".vtm", ".vtmb"}, vtk_xml<multiblock>, &vtk_multiblock_reader},
+      {"ParaView time series", {".pvd"}, vtk_xml<collection>, &vtk_series_reader},
+      {"VTK XML polygonal data", {".vtp"}, vtk_xml<poly_data>, &vtk_xml_reader},
+      {"NRRD", {".nrrd", ".nhdr"}, nrrd, &nrrd_reader},
+      {"NIfTI", {".nii", ".nii.gz", ".hdr"}, nifti, &nifti_reader},
+      {"Exodus II", {".e", ".exo", ".ex2", ".exii"}, netcdf, &exodus_reader, "", "HDF5"},
       // Known, not read yet: said as what they are.
-      {"VTK HDF", {".vtkhdf", ".hdf"}, "", R::none, convert},
-      {"NRRD", {".nrrd", ".nhdr"}, "NRRD000", R::nrrd, ""},
-      {"NIfTI", {".nii", ".nii.gz", ".hdr"}, "", R::nifti, ""},
-      {"MRtrix image", {".mif", ".mif.gz", ".mih"}, "mrtrix image", R::none, "convert it with mrconvert to NIfTI, then to .vti"},
-      {"Exodus II", {".e", ".exo", ".ex2", ".exii"}, "", R::exodus, ""},
-      {"Gmsh mesh", {".msh"}, "$MeshFormat", R::none, convert},
-      {"Abaqus input", {".inp"}, "*Heading", R::none, convert},
-      {"Abaqus output database", {".odb"}, "", R::none, "export the field output to .vtu (Abaqus/CAE or a VTK exporter)"},
-      {"MED (Code_Aster, Salome)", {".med", ".rmed"}, "", R::none, convert},
-      {"XDMF", {".xdmf", ".xmf"}, "Xdmf", R::none, convert},
-      {"HDF5", {".h5", ".hdf5"}, "\x89HDF\r\n\x1a\n", R::none, convert},
-      {"Gmsh or OpenFOAM results", {".pos", ".foam"}, "", R::none, convert},
+      {"VTK HDF", {".vtkhdf", ".hdf"}, nullptr, nullptr, convert},
+      {"MRtrix image", {".mif", ".mif.gz", ".mih"}, mrtrix, nullptr, "convert it with mrconvert to NIfTI"},
+      {"Gmsh mesh", {".msh"}, gmsh, nullptr, convert},
+      {"Abaqus input", {".inp"}, abaqus_input, nullptr, convert},
+      {"Abaqus output database", {".odb"}, nullptr, nullptr, "export the field output to .vtu (Abaqus/CAE or a VTK exporter)"},
+      {"MED (Code_Aster, Salome)", {".med", ".rmed"}, nullptr, nullptr, convert},
+      {"XDMF", {".xdmf", ".xmf"}, xdmf, nullptr, convert},
+      {"HDF5", {".h5", ".hdf5"}, hdf5, nullptr, convert},
+      {"Gmsh or OpenFOAM results", {".pos", ".foam"}, nullptr, nullptr, convert},
   };
 }
 
@@ -58,17 +96,6 @@ std::string head_of(const std::string& path, std::size_t bytes) {
   in.read(head.data(), std::streamsize(head.size()));
   head.resize(std::size_t(std::max<std::streamsize>(0, in.gcount())));
   return head;
-}
-
-// The type attribute of a VTK XML file's root element, if it has one.
-std::string vtk_xml_type(const std::string& head) {
-  const std::size_t root = head.find("<VTKFile");
-  if (root == std::string::npos) return "";
-  const std::size_t type = head.find("type=", root);
-  if (type == std::string::npos || type + 6 >= head.size()) return "";
-  const char quote = head[type + 5];
-  const std::size_t end = head.find(quote, type + 6);
-  return end == std::string::npos ? "" : head.substr(type + 6, end - type - 6);
 }
 
 }  // namespace
@@ -91,22 +118,8 @@ const DataFormat* format_by_extension(const std::string& path) {
 const DataFormat* format_by_content(const std::string& path) {
   const std::string head = head_of(path, 1024);
   if (head.empty()) return nullptr;
-  const std::string xml_type = vtk_xml_type(head);
-  if (!xml_type.empty()) {
-    for (const DataFormat& f : data_formats())
-      if (f.magic == xml_type) return &f;
-  }
-  if (head.find("<Xdmf") != std::string::npos) return format_by_extension(".xdmf");
-  // NIfTI-1 and -2 say so at a fixed place (bytes 344 and 4 of the header).
-  if ((head.size() >= 348 && (head.compare(344, 4, std::string("n+1\0", 4)) == 0 ||
-                              head.compare(344, 4, std::string("ni1\0", 4)) == 0)) ||
-      (head.size() >= 8 && (head.compare(4, 4, std::string("n+2\0", 4)) == 0 ||
-                            head.compare(4, 4, std::string("ni2\0", 4)) == 0)))
-    return format_by_extension(".nii");
-  // netCDF (classic Exodus II files).
-  if (head.rfind("CDF\x01", 0) == 0 || head.rfind("CDF\x02", 0) == 0) return format_by_extension(".exo");
   for (const DataFormat& f : data_formats())
-    if (f.magic.size() > 1 && xml_type.empty() && head.rfind(f.magic, 0) == 0) return &f;
+    if (f.probe && f.probe(head)) return &f;
   return nullptr;
 }
 
@@ -155,8 +168,8 @@ std::string readable_extensions_text() {
 std::string unreadable_format_message(const std::string& path) {
   const DataFormat* by_name = format_by_extension(path);
   const DataFormat* by_content = format_by_content(path);
-  // Exodus is netCDF, whose version 4 is HDF5 inside: its content is not another format.
-  if (by_name && by_name->reader == VtkReaderKind::exodus && by_content && by_content->name == "HDF5") by_content = nullptr;
+  // Content in the container a format's files come in is not another format.
+  if (by_name && by_content && by_name->container == by_content->name) by_content = nullptr;
   // The content decides where it says anything; a readable name whose
   // content says nothing is left to the reader's own checks.
   const DataFormat* format = by_content ? by_content : by_name;

@@ -1,6 +1,6 @@
 #pragma once
 // The data file formats hsb knows, in one place: each by its name, its
-// extensions and the first bytes of its content, and whether hsb reads it.
+// extensions, a probe of its first bytes, and the reader that reads it.
 // The scene reader, the command line's help, `hsb info` and the VTK reader
 // all ask here, so a file of a format hsb does not read is named as what it
 // is (a NRRD volume, a Gmsh mesh) with the list of what hsb reads, never
@@ -11,27 +11,22 @@
 
 namespace hsb {
 
-enum class VtkReaderKind {
-  none,      // not read (yet): named in messages only
-  legacy,    // vtkDataSetReader
-  xml,         // vtkXMLGenericDataObjectReader: one serial data set
-  xml_pieces,  // the same, for pieces or blocks merged into one grid
-  series,      // a list of data files by time step (.pvd)
-  exodus,      // vtkExodusIIReader: blocks merged into one grid, a time step
-  nrrd,        // field/reading/nrrd_reading.h
-  nifti,       // vtkNIFTIImageReader (field/reading/nifti_reading.h)
-};
+struct FormatReader;  // how it is read: field/reading/format_reader.h (VTK inside)
 
 struct DataFormat {
   std::string name;                     // "VTK XML unstructured grid"
   std::vector<std::string> extensions;  // lower case, with the dot: ".vtu", ".nii.gz"
-  // What the file's first bytes hold: a prefix ("NRRD000"), or for XML
-  // files the type attribute of <VTKFile> ("UnstructuredGrid").
-  std::string magic;
-  VtkReaderKind reader = VtkReaderKind::none;
+  // Whether a file's first bytes (up to 1 KiB) are this format's; null for
+  // a format without a signature.
+  bool (*probe)(const std::string& head) = nullptr;
+  // How hsb reads it; null: not read (yet), named in messages only.
+  const FormatReader* reader = nullptr;
   // For a format hsb does not read: how to get one it does.
   std::string advice;
-  bool readable() const { return reader != VtkReaderKind::none; }
+  // A format whose signature this one's files carry (Exodus is netCDF,
+  // whose version 4 is HDF5 inside): such content is no other format.
+  std::string container;
+  bool readable() const { return reader != nullptr; }
 };
 
 const std::vector<DataFormat>& data_formats();

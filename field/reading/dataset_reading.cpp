@@ -1,21 +1,14 @@
 #include "field/reading/dataset_reading.h"
 
-#include <vtkAppendFilter.h>
 #include <vtkCell.h>
 #include <vtkCellData.h>
 #include <vtkDataSetAttributes.h>
 #include <vtkCellTypes.h>
-#include <vtkCompositeDataIterator.h>
-#include <vtkCompositeDataSet.h>
-#include <vtkDataSetReader.h>
 #include <vtkGenericCell.h>
 #include <vtkIdList.h>
-#include <vtkMergePoints.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkUnstructuredGrid.h>
-#include <vtkXMLDataElement.h>
-#include <vtkXMLDataParser.h>
 #include <vtkXMLDataSetWriter.h>
 #include <vtkXMLGenericDataObjectReader.h>
 
@@ -23,24 +16,21 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iomanip>
-#include <iterator>
 #include <map>
 #include <sstream>
 
 #include "base/child_process.h"
 #include "base/input_file.h"
 #include "base/partial_file.h"
+#include "field/reading/block_merging.h"
 #include "field/reading/component_arrays.h"
 #include "field/reading/data_error.h"
 #include "field/reading/data_formats.h"
-#include "field/reading/exodus_reading.h"
-#include "field/reading/nifti_reading.h"
-#include "field/reading/nrrd_reading.h"
+#include "field/reading/format_reader.h"
 #include "field/reading/plane_data.h"
 #include "field/reading/vtk_data.h"
 
@@ -48,32 +38,6 @@ namespace hsb {
 namespace {
 
 double trial_base_seconds = 30.0;
-
-// A file of random bytes, or of another format, gets a clear message
-// before VTK's readers see it: legacy files start with their version
-// line, XML files with "<?xml" or "<VTKFile", Exodus files with netCDF's
-// or HDF5's signature. (NRRD and NIfTI are read by readers that check
-// their own headers.)
-void check_header(const std::string& path, const DataFormat& format) {
-  std::ifstream in(path, std::ios::binary);
-  std::string head(256, '\0');
-  in.read(head.data(), std::streamsize(head.size()));
-  head.resize(std::size_t(in.gcount()));
-  if (format.reader == VtkReaderKind::exodus) {
-    if (head.rfind("CDF", 0) != 0 && head.rfind("\x89HDF\r\n\x1a\n", 0) != 0)
-      throw DataError(path + ": not an Exodus II file: it is neither netCDF (\"CDF\") nor HDF5 inside");
-    return;
-  }
-  if (format.reader == VtkReaderKind::legacy) {
-    if (head.rfind("# vtk DataFile Version", 0) != 0)
-      throw DataError(path + ": not a legacy VTK file: its first line is not \"# vtk DataFile Version x.y\"");
-    return;
-  }
-  std::size_t start = head.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;  // a UTF-8 byte-order mark
-  start = head.find_first_not_of(" \t\r\n", start);
-  if (start == std::string::npos || (head.compare(start, 5, "<?xml") != 0 && head.compare(start, 8, "<VTKFile") != 0))
-    throw DataError(path + ": not a VTK XML file: it does not start with \"<?xml\" or \"<VTKFile\"");
-}
 
 // VTK's cells index their points by their type's count: a hexahedron
 // listed with three points, or a biquadratic wedge with eight, is read past
@@ -193,184 +157,15 @@ void check_volume(vtkDataSet* data, const std::string& path) {
   throw DataError(message.str());
 }
 
-// Pieces (.pvtu) and blocks (.vtm) as one unstructured grid, their ghost
-// cells left out. Arrays that not every block has are dropped (VTK's
-// append keeps the common ones).
-vtkSmartPointer<vtkDataSet> merged(vtkDataObject* read, const std::string& path) {
-  auto append = vtkSmartPointer<vtkAppendFilter>::New();
-  int blocks = 0;
-  const auto add = [&](vtkDataSet* block) {
-    if (!block || block->GetNumberOfCells() == 0) return;
-    // Ghost cells are a piece's copies of its neighbours' cells, for the
-    // parallel filters that wrote it: here they would be cells twice over.
-    auto* grid = vtkUnstructuredGrid::SafeDownCast(block);
-    if (grid && grid->GetCellGhostArray()) {
-      auto copy = vtkSmartPointer<vtkUnstructuredGrid>::New();
-      copy->DeepCopy(grid);
-      copy->RemoveGhostCells();
-      copy->GetCellData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
-      append->AddInputData(copy);
-    } else {
-      append->AddInputData(block);
-    }
-    ++blocks;
-  };
-  if (auto* composite = vtkCompositeDataSet::SafeDownCast(read)) {
-    vtkSmartPointer<vtkCompositeDataIterator> it = vtkSmartPointer<vtkCompositeDataIterator>::Take(composite->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem()) add(vtkDataSet::SafeDownCast(it->GetCurrentDataObject()));
-  } else {
-    add(vtkDataSet::SafeDownCast(read));
-  }
-  if (blocks == 0) throw DataError(path + ": none of its blocks holds a data set with cells");
-  append->Update();
-  return vtkDataSet::SafeDownCast(append->GetOutputDataObject(0));
-}
-
-// `grid` with the points at the same place joined into one, as pieces
-// share them: otherwise each piece's faces at its neighbours read as the
-// body's boundary, and a trajectory stops at them. The cells must name
-// existing points (check_cells).
-vtkSmartPointer<vtkUnstructuredGrid> joined(vtkUnstructuredGrid* grid) {
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataTypeToDouble();
-  auto locator = vtkSmartPointer<vtkMergePoints>::New();
-  locator->InitPointInsertion(points, grid->GetBounds(), grid->GetNumberOfPoints());
-  auto out = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  out->GetPointData()->CopyAllocate(grid->GetPointData(), grid->GetNumberOfPoints());
-  std::vector<vtkIdType> to(std::size_t(grid->GetNumberOfPoints()));
-  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) {
-    vtkIdType id = 0;
-    if (locator->InsertUniquePoint(grid->GetPoint(i), id)) out->GetPointData()->CopyData(grid->GetPointData(), i, id);
-    to[std::size_t(i)] = id;
-  }
-  out->SetPoints(points);
-  out->Allocate(grid->GetNumberOfCells());
-  auto ids = vtkSmartPointer<vtkIdList>::New();
-  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
-    grid->GetCellPoints(c, ids);
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k) ids->SetId(k, to[std::size_t(ids->GetId(k))]);
-    out->InsertNextCell(grid->GetCellType(c), ids);
-  }
-  out->GetCellData()->ShallowCopy(grid->GetCellData());
-  out->GetFieldData()->ShallowCopy(grid->GetFieldData());
-  return out;
-}
-
-// A time series' data sets: (time, file) in the order of time.
-std::vector<std::pair<double, std::string>> series_files(const std::string& path) {
-  auto parser = vtkSmartPointer<vtkXMLDataParser>::New();
-  parser->SetFileName(path.c_str());
-  vtkXMLDataElement* collection = parser->Parse() ? parser->GetRootElement() : nullptr;
-  if (collection) collection = collection->FindNestedElementWithName("Collection");
-  if (!collection) throw DataError(path + ": not a ParaView time series: no <Collection> in its <VTKFile>");
-  std::vector<std::pair<double, std::string>> steps;
-  for (int i = 0; i < collection->GetNumberOfNestedElements(); ++i) {
-    vtkXMLDataElement* data_set = collection->GetNestedElement(i);
-    const char* file = data_set->GetAttribute("file");
-    if (std::string(data_set->GetName()) != "DataSet" || !file) continue;
-    double time = double(steps.size());
-    data_set->GetScalarAttribute("timestep", time);
-    // Parts of one step beyond the first are not read: a series of one
-    // part each is what ParaView writes for a single data set.
-    if (const char* part = data_set->GetAttribute("part"); part && std::string(part) != "0") continue;
-    steps.emplace_back(time, file_named_in(path, file));
-  }
-  std::stable_sort(steps.begin(), steps.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  if (steps.empty()) throw DataError(path + ": its <Collection> lists no <DataSet file=...>");
-  return steps;
-}
-
-// A legacy file written with the type names of VTK's 5.1 format that
-// VTK 9.1's reader does not know (meshio, and so SfePy, write
-// "vtktypeint32" for an int array) copied with the older names of the same
-// types, to `copy`; false when the file has none. Only whole words that
-// end a header line are renamed, and only in files of version 5, the only
-// ones that have them: no other file is read twice.
-bool with_known_type_names(const std::string& path, const std::string& copy) {
-  static const std::pair<const char*, const char*> names[] = {
-      {" vtktypeint8\n", " signed_char\n"}, {" vtktypeuint8\n", " unsigned_char\n"},
-      {" vtktypeint16\n", " short\n"},      {" vtktypeuint16\n", " unsigned_short\n"},
-      {" vtktypeint32\n", " int\n"},        {" vtktypeuint32\n", " unsigned_int\n"},
-      {" vtktypefloat32\n", " float\n"},    {" vtktypefloat64\n", " double\n"}};
-  std::ifstream in(path, std::ios::binary);
-  std::string version;
-  std::getline(in, version);
-  if (version.rfind("# vtk DataFile Version 5", 0) != 0) return false;
-  in.seekg(0);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (text.find(" vtktype") == std::string::npos) return false;
-  bool renamed = false;
-  for (const auto& [from, to] : names)
-    for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + std::strlen(to))) {
-      text.replace(at, std::strlen(from), to);
-      renamed = true;
-    }
-  if (renamed) std::ofstream(copy, std::ios::binary) << text;
-  return renamed;
-}
-
-// The one data set the file at `path` holds, before any check.
-vtkSmartPointer<vtkDataSet> read_one(const std::string& path, const DataFormat& format, const VtkSession& vtk,
-                                     int step) {
+// The file read by its format's reader, checked and made whole: what runs
+// in the child.
+vtkSmartPointer<vtkDataSet> read_checked(const std::string& path, const FormatReader& reader,
+                                         const ReadRequest& request, const VtkSession& vtk) {
   // A file of another known format under this one's name is said as what it is.
   if (const std::string other = unreadable_format_message(path); !other.empty()) throw DataError(other);
-  if (format.reader == VtkReaderKind::nrrd) return read_nrrd(path);
-  if (format.reader == VtkReaderKind::nifti) return read_nifti(path);
-  check_header(path, format);
-  if (format.reader == VtkReaderKind::exodus) {
-    const vtkSmartPointer<vtkDataObject> read = read_exodus(path, step);
-    if (const std::string error = vtk.first_error(); !error.empty())
-      throw DataError(path + ": cannot read it as Exodus II: " + error);
-    return merged(read, path);
-  }
-  vtkSmartPointer<vtkAlgorithm> reader;
-  const PartialFile renamed((std::filesystem::temp_directory_path() / ("hsb-types-" + std::to_string(::getpid()) + ".vtk")).string());
-  if (format.reader == VtkReaderKind::legacy) {
-    auto legacy = vtkSmartPointer<vtkDataSetReader>::New();
-    legacy->SetFileName(with_known_type_names(path, renamed.path()) ? renamed.path().c_str() : path.c_str());
-    legacy->ReadAllTensorsOn();
-    legacy->ReadAllScalarsOn();
-    legacy->ReadAllVectorsOn();
-    legacy->ReadAllFieldsOn();
-    reader = legacy;
-  } else {
-    auto xml = vtkSmartPointer<vtkXMLGenericDataObjectReader>::New();
-    xml->SetFileName(path.c_str());
-    reader = xml;
-  }
-  reader->Update();
-  vtkDataObject* read = reader->GetOutputDataObject(0);
-  // A reader's warning is a file it could not read as declared (a
-  // truncated array reads as garbage, with only a warning): an error here.
-  const auto complaint = [&] {
-    std::string error = vtk.first_error();
-    return error.empty() ? vtk.first_warning() : error;
-  };
-  if (const std::string error = complaint(); !error.empty())
-    throw DataError(path + ": cannot read it as a VTK data set: " + error);
-  vtkSmartPointer<vtkDataSet> data =
-      format.reader == VtkReaderKind::xml_pieces ? merged(read, path)
-                                                  : vtkSmartPointer<vtkDataSet>(vtkDataSet::SafeDownCast(read));
-  if (const std::string error = complaint(); !error.empty() || !data || data->GetNumberOfPoints() == 0)
-    throw DataError(path + ": cannot read it as a VTK data set: " + (error.empty() ? "no points in it" : error));
-  return data;
-}
-
-// The files that `element` and the elements in it name (a piece's Source,
-// a block's or a step's file), as named in the file `from`.
-void named_files(vtkXMLDataElement* element, const std::string& from, std::vector<std::string>& out) {
-  for (const char* attribute : {"Source", "file"})
-    if (const char* file = element->GetAttribute(attribute)) out.push_back(file_named_in(from, file));
-  for (int i = 0; i < element->GetNumberOfNestedElements(); ++i) named_files(element->GetNestedElement(i), from, out);
-}
-
-// The file read, checked and made whole: what runs in the child.
-vtkSmartPointer<vtkDataSet> read_checked(const std::string& path, const DataFormat& format, const VtkSession& vtk,
-                                         int step) {
-  vtkSmartPointer<vtkDataSet> data = read_one(path, format, vtk, step);
+  vtkSmartPointer<vtkDataSet> data = reader.read(path, request, vtk);
   check_cells(data, path);
-  if (format.reader == VtkReaderKind::xml_pieces || format.reader == VtkReaderKind::exodus)
-    data = joined(vtkUnstructuredGrid::SafeDownCast(data));
+  if (reader.joins_pieces) data = joined(vtkUnstructuredGrid::SafeDownCast(data));
   join_component_arrays(data->GetPointData(), data->GetFieldData());
   join_component_arrays(data->GetCellData(), data->GetFieldData());
   record_writer_orders(data);
@@ -427,12 +222,12 @@ void run_on_file_in_child(const std::string& path, const char* what, const std::
 // (the data fuzzer found all four; a write the child survives would go
 // unseen in a trial run). The child writes what it read, checked, as a
 // plain VTK XML file of VTK's own making, which this process then reads.
-vtkSmartPointer<vtkDataSet> read_in_child(const std::string& path, const DataFormat& format, const VtkSession& vtk,
-                                          int step) {
+vtkSmartPointer<vtkDataSet> read_in_child(const std::string& path, const FormatReader& reader,
+                                          const ReadRequest& request, const VtkSession& vtk) {
   const PartialFile clean(
       (std::filesystem::temp_directory_path() / ("hsb-read-" + std::to_string(::getpid()) + ".vtkxml")).string());
   run_on_file_in_child(path, "reader", [&] {
-    const vtkSmartPointer<vtkDataSet> data = read_checked(path, format, vtk, step);
+    const vtkSmartPointer<vtkDataSet> data = read_checked(path, reader, request, vtk);
     auto writer = vtkSmartPointer<vtkXMLDataSetWriter>::New();
     writer->SetInputData(data);
     writer->SetFileName(clean.path().c_str());
@@ -442,55 +237,61 @@ vtkSmartPointer<vtkDataSet> read_in_child(const std::string& path, const DataFor
     if (!writer->Write()) std::filesystem::remove(clean.path());
   });
   // No child to be had (or it could not write): read it here after all.
-  if (!std::filesystem::exists(clean.path())) return read_checked(path, format, vtk, step);
-  auto reader = vtkSmartPointer<vtkXMLGenericDataObjectReader>::New();
-  reader->SetFileName(clean.path().c_str());
-  reader->Update();
-  vtkSmartPointer<vtkDataSet> data = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
+  if (!std::filesystem::exists(clean.path())) return read_checked(path, reader, request, vtk);
+  auto copy = vtkSmartPointer<vtkXMLGenericDataObjectReader>::New();
+  copy->SetFileName(clean.path().c_str());
+  copy->Update();
+  vtkSmartPointer<vtkDataSet> data = vtkDataSet::SafeDownCast(copy->GetOutputDataObject(0));
   if (!data) throw DataError(path + ": cannot read back what VTK read of it");
   return data;
 }
 
-// The times of an Exodus file's steps, asked of VTK in a child process
-// like every parse of a user's file; none for a file of one step.
-std::vector<double> exodus_steps(const std::string& path) {
-  const VtkSession vtk;
+// What `hook` says of the user's file `path`, worked out in a child
+// process like every parse of it, one line an answer.
+std::vector<std::string> lines_in_child(const std::string& path, const std::function<std::vector<std::string>()>& hook) {
   const PartialFile said(
-      (std::filesystem::temp_directory_path() / ("hsb-times-" + std::to_string(::getpid()) + ".txt")).string());
-  run_on_file_in_child(path, "Exodus reader", [&] {
+      (std::filesystem::temp_directory_path() / ("hsb-said-" + std::to_string(::getpid()) + ".txt")).string());
+  run_on_file_in_child(path, "reader", [&] {
     std::ofstream out(said.path());
-    for (double t : exodus_times(path)) out << std::setprecision(17) << t << "\n";
+    for (const std::string& line : hook()) out << line << "\n";
   });
-  std::vector<double> times;
   std::ifstream in(said.path());
-  if (!in) times = exodus_times(path);  // no child to be had
-  for (double t; in >> t;) times.push_back(t);
-  if (times.size() < 2) times.clear();
-  return times;
+  if (!in) return hook();  // no child to be had
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+const FormatReader* reader_of(const std::string& path) {
+  const DataFormat* format = format_by_extension(path);
+  return format ? format->reader : nullptr;
+}
+
+// A series' file of step `step`.
+std::string step_file_of(const std::string& path, const FormatReader& series, int step) {
+  const std::vector<std::string> file = lines_in_child(path, [&] { return std::vector{series.step_file(path, step)}; });
+  if (file.size() != 1) throw DataError(path + ": cannot read which file holds step " + std::to_string(step));
+  return file.front();
 }
 
 }  // namespace
 
 std::vector<std::string> data_files_read(const std::string& path, int step) {
-  const DataFormat* format = format_by_extension(path);
-  if (format && format->reader == VtkReaderKind::series) {
-    std::vector<std::string> files{path};
-    const VtkSession vtk;
-    const std::vector<std::pair<double, std::string>> steps = series_files(path);
-    if (std::size_t(std::max(step, 0)) < steps.size()) {
-      const std::vector<std::string> inner = data_files_read(steps[std::size_t(std::max(step, 0))].second, -1);
-      files.insert(files.end(), inner.begin(), inner.end());
-    }
-    return files;
-  }
-  if (format && format->reader == VtkReaderKind::nrrd) return nrrd_files(path);
   std::vector<std::string> files{path};
-  if (format && format->reader == VtkReaderKind::xml_pieces) {
+  const FormatReader* reader = reader_of(path);
+  if (!reader) return files;
+  std::string step_file;
+  {
     const VtkSession vtk;
-    auto parser = vtkSmartPointer<vtkXMLDataParser>::New();
-    parser->SetFileName(path.c_str());
-    if (parser->Parse() && parser->GetRootElement())
-      named_files(parser->GetRootElement(), path, files);
+    if (reader->parts) {
+      const std::vector<std::string> parts = lines_in_child(path, [&] { return reader->parts(path); });
+      files.insert(files.end(), parts.begin(), parts.end());
+    }
+    if (reader->step_file) step_file = step_file_of(path, *reader, step);
+  }
+  if (!step_file.empty() && reader_of(step_file) != reader) {
+    const std::vector<std::string> inner = data_files_read(step_file, -1);
+    files.insert(files.end(), inner.begin(), inner.end());
   }
   return files;
 }
@@ -500,37 +301,42 @@ void update_safely(vtkAlgorithm* algorithm, const std::string& path, const char*
   algorithm->Update();
 }
 
-
 void set_trial_read_seconds(double seconds) { trial_base_seconds = seconds; }
 
 std::vector<double> series_times(const std::string& path) {
-  const DataFormat* format = format_by_extension(path);
-  if (format && format->reader == VtkReaderKind::exodus) return exodus_steps(path);
-  if (!format || format->reader != VtkReaderKind::series) return {};
+  const FormatReader* reader = reader_of(path);
+  if (!reader || !reader->times) return {};
   const VtkSession vtk;
   std::vector<double> times;
-  for (const auto& [time, file] : series_files(path)) times.push_back(time);
+  for (const std::string& line : lines_in_child(path, [&] {
+         std::vector<std::string> lines;
+         for (double t : reader->times(path)) {
+           std::ostringstream text;
+           text << std::setprecision(17) << t;
+           lines.push_back(text.str());
+         }
+         return lines;
+       }))
+    times.push_back(std::strtod(line.c_str(), nullptr));
   return times;
 }
 
-vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSession& vtk, int step) {
+vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSession& vtk, const ReadRequest& request) {
   if (const std::string why = unreadable_input(path); !why.empty()) throw DataError(path + ": " + why);
   const DataFormat* format = format_by_extension(path);
-  if (format && format->reader == VtkReaderKind::series) {
-    const std::vector<std::pair<double, std::string>> steps = series_files(path);
-    if (step >= int(steps.size()))
-      throw DataError(path + ": data.step " + std::to_string(step) + " is beyond its " + std::to_string(steps.size()) +
-                      " steps (0 to " + std::to_string(steps.size() - 1) + ")");
-    const std::string& file = steps[std::size_t(std::max(step, 0))].second;
-    const DataFormat* inner = format_by_extension(file);
-    if (inner && inner->reader == VtkReaderKind::series)
-      throw DataError(path + ": its step names another series, " + file);
-    return read_dataset(file, vtk, -1);
-  }
   if (!format || !format->readable()) throw DataError(unreadable_format_message(path));
-  if (step > 0 && format->reader != VtkReaderKind::exodus)
+  const FormatReader& reader = *format->reader;
+  if (reader.step_file) {
+    const std::string file = step_file_of(path, reader, request.step);
+    if (reader_of(file) == &reader) throw DataError(path + ": its step names another series, " + file);
+    return read_dataset(file, vtk, {-1, request.block});
+  }
+  if (request.step > 0 && !reader.times)
     throw DataError(path + ": data.step applies only to a time series (.pvd, or Exodus with time steps)");
-  return read_in_child(path, *format, vtk, step);
+  if (!request.block.empty() && !reader.has_blocks)
+    throw DataError(path + ": data.block applies only to files of blocks (.vtm, Exodus); this is a " + format->name +
+                    " file");
+  return read_in_child(path, reader, request, vtk);
 }
 
 }  // namespace hsb

@@ -1,9 +1,10 @@
 #pragma once
-// A data file read into one VTK data set, by the reader its format needs
-// (field/reading/data_formats.h), and checked for what no reader checks but
-// everything after relies on. Parallel pieces and multiblock blocks are
-// merged into one unstructured grid with their shared points joined; a
-// time series (.pvd) is read at one of its steps. Internal to field/.
+// A data file read into one VTK data set, by the reader its format's entry
+// in the registry names (field/reading/data_formats.h, format_reader.h),
+// and checked for what no reader checks but everything after relies on.
+// Parallel pieces and blocks are merged into one unstructured grid with
+// their shared points joined, or one block read alone; a time series is
+// read at one of its steps. Internal to field/.
 
 #include <string>
 
@@ -11,14 +12,15 @@
 #include <vtkDataSet.h>
 #include <vtkSmartPointer.h>
 
+#include "field/reading/format_reader.h"
 #include "field/reading/vtk_session.h"
 
 namespace hsb {
 
-// The data set in `path` (at time step `step` of a series: its index in
-// the series, -1 for the first); VTK's complaints end up in `vtk`. Throws
-// DataError naming the file.
-vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSession& vtk, int step = -1);
+// The data set in `path`, at the request's time step and block; VTK's
+// complaints end up in `vtk`. Throws DataError naming the file.
+vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSession& vtk,
+                                         const ReadRequest& request = {});
 
 // Runs `algorithm` in a child process first: VTK's filters trust the cells
 // they are given, so a degenerate mesh can make them read past their

@@ -1,4 +1,16 @@
-#include "field/reading/exodus_reading.h"
+// Exodus II results (Sierra, MOOSE, Cubit, SEACAS, VTK's own writer),
+// through VTK's vtkExodusIIReader: every element block, every nodal and
+// element variable, at one time step, on the undeformed mesh (a stress
+// belongs to the configuration it was computed on, and the picture of
+// each step keeps one frame).
+//
+// VTK's reader "gloms" variables by their names into arrays, and gets
+// tensors wrong: stressXX, stressXY, stressXZ, stressYY, stressYZ, stressZZ
+// become a vector "stressX" and three scalars. So the glomming is undone
+// here, each array split back into the variables the file names, and
+// field/reading/component_arrays.h joins them by a rule that knows tensors.
+// Internal to field/; the file is parsed only in a child process
+// (field/reading/dataset_reading.h).
 
 #include <vtkCellData.h>
 #include <vtkCompositeDataIterator.h>
@@ -14,9 +26,12 @@
 #include <vtk_exodusII.h>
 
 #include <algorithm>
+#include <fstream>
 #include <map>
 
+#include "field/reading/block_merging.h"
 #include "field/reading/data_error.h"
+#include "field/reading/format_reader.h"
 
 namespace hsb {
 namespace {
@@ -112,7 +127,7 @@ void unglom(vtkDataSetAttributes* attributes, const std::map<std::string, std::v
   }
 }
 
-vtkSmartPointer<vtkExodusIIReader> exodus_reader(const std::string& path) {
+vtkSmartPointer<vtkExodusIIReader> opened_reader(const std::string& path) {
   auto reader = vtkSmartPointer<vtkExodusIIReader>::New();
   reader->SetFileName(path.c_str());
   if (!reader->CanReadFile(path.c_str())) throw DataError(path + ": not an Exodus II file (netCDF or HDF5) VTK can open");
@@ -120,10 +135,11 @@ vtkSmartPointer<vtkExodusIIReader> exodus_reader(const std::string& path) {
   return reader;
 }
 
-}  // namespace
-
+// The blocks of the file at time step `step` (−1: the first), each variable
+// its own one-component array. Throws DataError for a file the reader
+// refuses or a step beyond the file's.
 vtkSmartPointer<vtkDataObject> read_exodus(const std::string& path, int step) {
-  const vtkSmartPointer<vtkExodusIIReader> reader = exodus_reader(path);
+  const vtkSmartPointer<vtkExodusIIReader> reader = opened_reader(path);
   reader->SetAllArrayStatus(vtkExodusIIReader::NODAL, 1);
   reader->SetAllArrayStatus(vtkExodusIIReader::ELEM_BLOCK, 1);
   reader->SetApplyDisplacements(0);
@@ -158,13 +174,40 @@ vtkSmartPointer<vtkDataObject> read_exodus(const std::string& path, int step) {
   return read;
 }
 
+// Exodus II is netCDF, classic or version 4 (HDF5 inside): a file of random
+// bytes gets a clear message before VTK's reader sees it.
+void check_exodus_header(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(8, '\0');
+  in.read(head.data(), std::streamsize(head.size()));
+  head.resize(std::size_t(std::max<std::streamsize>(0, in.gcount())));
+  if (head.rfind("CDF", 0) != 0 && head.rfind("\x89HDF\r\n\x1a\n", 0) != 0)
+    throw DataError(path + ": not an Exodus II file: it is neither netCDF (\"CDF\") nor HDF5 inside");
+}
+
+vtkSmartPointer<vtkDataSet> read_exodus_data(const std::string& path, const ReadRequest& request,
+                                             const VtkSession& vtk) {
+  check_exodus_header(path);
+  const vtkSmartPointer<vtkDataObject> read = read_exodus(path, request.step);
+  if (const std::string error = vtk.first_error(); !error.empty())
+    throw DataError(path + ": cannot read it as Exodus II: " + error);
+  return merged(read, path, request.block);
+}
+
+// The times of the file's steps, in order; none for a file of one step
+// (or none: a mesh without results).
 std::vector<double> exodus_times(const std::string& path) {
-  const vtkSmartPointer<vtkExodusIIReader> reader = exodus_reader(path);
+  const vtkSmartPointer<vtkExodusIIReader> reader = opened_reader(path);
   vtkInformation* info = reader->GetOutputInformation(0);
   vtkInformationDoubleVectorKey* key = vtkStreamingDemandDrivenPipeline::TIME_STEPS();
   if (!info || !info->Has(key)) return {};
   const double* times = info->Get(key);
+  if (info->Length(key) < 2) return {};
   return std::vector<double>(times, times + info->Length(key));
 }
+
+}  // namespace
+
+const FormatReader exodus_reader{read_exodus_data, nullptr, nullptr, exodus_times, true, true};
 
 }  // namespace hsb

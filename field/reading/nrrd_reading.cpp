@@ -1,6 +1,23 @@
-#include "field/reading/nrrd_reading.h"
+// NRRD volumes (Teem's `tend`, 3D Slicer, ITK), read by hsb itself: VTK's
+// vtkNrrdReader takes neither Teem's tensor kinds nor `space directions`.
+// What is read:
+//  - a header in the file (.nrrd) or apart from its data (.nhdr with
+//    `data file:`); raw, ASCII or gzip-compressed data, either endianness,
+//    any of NRRD's number types;
+//  - three space axes placed by `space origin` and `space directions`
+//    (or by `spacings`), so an oblique volume stays oblique;
+//  - a first axis of kind 3D-masked-symmetric-matrix (Teem's seven values:
+//    a confidence, then XX XY XZ YY YZ ZZ; a confidence below 0.5 is no
+//    data), 3D-symmetric-matrix (six), 3D-matrix (nine, row by row),
+//    3D-masked-matrix (ten) or 3-vector; without a kind, its count of
+//    values says which;
+//  - the `measurement frame`: tensors are turned from it into the space.
+// The tensors come out in VTK's order, with the layout they were read
+// from recorded (field/reading/component_arrays.h). Internal to field/; the file
+// is parsed only in a child process (field/reading/dataset_reading.h).
 
 #include <vtkDoubleArray.h>
+#include <vtkImageData.h>
 #include <vtkFieldData.h>
 #include <vtkMatrix3x3.h>
 #include <vtkPointData.h>
@@ -24,6 +41,7 @@
 #include "field/reading/component_arrays.h"
 #include "field/reading/component_order.h"
 #include "field/reading/data_error.h"
+#include "field/reading/format_reader.h"
 #include "field/tensor/sym3.h"
 
 namespace hsb {
@@ -290,8 +308,8 @@ VoxelLayout voxel_layout(const Header& h, int values) {
                                               "3D-symmetric-matrix, 3D-matrix, 3D-masked-matrix, 3-vector)");
 }
 
-}  // namespace
-
+// The volume in `path`. Throws DataError naming the file and the header
+// line for anything it cannot read as described.
 vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path) {
   const Header h = read_header(path);
   const NumberType type = number_type(h);
@@ -398,9 +416,18 @@ vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path) {
   return image;
 }
 
-std::vector<std::string> nrrd_files(const std::string& path) {
-  const std::string data = data_file(read_header(path), path);
-  return data == path ? std::vector<std::string>{path} : std::vector<std::string>{path, data};
+vtkSmartPointer<vtkDataSet> read_nrrd_data(const std::string& path, const ReadRequest&, const VtkSession&) {
+  return read_nrrd(path);
 }
+
+// A detached header's data file.
+std::vector<std::string> nrrd_parts(const std::string& path) {
+  const std::string data = data_file(read_header(path), path);
+  return data == path ? std::vector<std::string>{} : std::vector<std::string>{data};
+}
+
+}  // namespace
+
+const FormatReader nrrd_reader{read_nrrd_data, nullptr, nrrd_parts};
 
 }  // namespace hsb

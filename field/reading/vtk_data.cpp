@@ -32,6 +32,7 @@
 
 #include "base/child_process.h"
 #include "base/input_file.h"
+#include "field/reading/block_merging.h"
 #include "field/reading/component_arrays.h"
 #include "field/reading/component_order.h"
 #include "field/reading/data_error.h"
@@ -426,7 +427,7 @@ std::unique_ptr<ScalarField> color_field(vtkDataSet* data, const VtkFileSpec& sp
 
 VtkData load_vtk_data(const VtkFileSpec& spec) {
   const VtkSession vtk;
-  const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path, vtk, spec.step);
+  const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path, vtk, {spec.step, spec.block});
   VtkData out;
   ChosenArray chosen = choose_field_array(data, spec);
   if (!chosen.note.empty()) out.warnings.push_back(spec.path + ": " + chosen.note);
@@ -479,7 +480,7 @@ std::string describe_vtk_file(const VtkFileSpec& spec) {
   // Before the session: reading the series takes one of its own.
   const std::vector<double> times = series_times(spec.path);
   const VtkSession vtk;
-  const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path, vtk, spec.step);
+  const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path, vtk, {spec.step, spec.block});
   std::ostringstream out;
   double b[6];
   data->GetBounds(b);
@@ -502,6 +503,16 @@ std::string describe_vtk_file(const VtkFileSpec& spec) {
     separator = ", ";
   }
   out << "\n  arrays    " << list_arrays(data) << "\n";
+  if (const std::vector<BlockOfFile> blocks = recorded_blocks(data); !blocks.empty()) {
+    out << "  blocks    " << blocks.size() << " with cells:";
+    std::string read;
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
+      out << (i ? ", " : " ") << i << " \"" << blocks[i].name << "\" (" << blocks[i].cells << " cells)";
+      if (blocks[i].read) read = blocks[i].name;
+    }
+    if (spec.block.empty()) out << "; all merged (data.block reads one)\n";
+    else out << "; only \"" << read << "\" read (data.block)\n";
+  }
   if (const std::optional<PlaneOfData> plane = plane_of(data))
     out << "  plane     a 2-D result in " << "xyz"[plane->axis] << " = " << plane->coordinate << ", made a slab "
         << plane->thickness << " thick; its tensors' out-of-plane entries set planar (the in-plane mean, no shear)\n";

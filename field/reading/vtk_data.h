@@ -41,6 +41,7 @@ struct VtkFileSpec {
   FieldKind kind = FieldKind::automatic;
   std::string color_array;  // a scalar array to colour by; "" = none
   int step = -1;            // of a time series: the step's index (-1: the first)
+  std::string block;        // of a file of blocks: one, by name or index ("": all, merged)
   // The order of 6 components (field/reading/component_order.h); "" = the order
   // the file records (field/reading/component_arrays.h), else VTK's.
   std::string components;

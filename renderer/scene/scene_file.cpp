@@ -81,6 +81,7 @@ void read_data(TableReader& data, DataSpec& spec, const std::string& base_dir) {
                                                         {"point", TensorAssociation::point},
                                                         {"cell", TensorAssociation::cell}});
     spec.file.step = data.optional_integer("step").value_or(-1);
+    spec.file.block = data.string("block");
     std::vector<std::pair<std::string, std::string>> orders;
     for (const ComponentOrder& o : component_orders()) orders.emplace_back(o.name, o.name);
     // Absent: the order the file records, else VTK's (field/reading/vtk_data.h).
@@ -90,7 +91,7 @@ void read_data(TableReader& data, DataSpec& spec, const std::string& base_dir) {
     refuse_keys(data, {"bounds", "load", "poisson_ratio", "singular_radius"}, "point_load");
   } else {
     if (file) data.fail_at("file", "applies only to data.kind = \"vtk\"");
-    refuse_keys(data, {"array", "association", "cell_tensors", "components", "field", "step"}, "vtk");
+    refuse_keys(data, {"array", "association", "block", "cell_tensors", "components", "field", "step"}, "vtk");
     PointLoadSpec& load = spec.point_load;
     const std::vector<double> b = data.numbers("bounds");
     load.bounds = Box3{Vec3(b[0], b[2], b[4]), Vec3(b[1], b[3], b[5])};

@@ -131,6 +131,8 @@ std::vector<KeySchema> build_keys() {
           .derived("the active tensors, else one whose name says stress, then strain, else the first; vectors only without tensors"),
       Key("data.step", T::integer, "the step of a time series (.pvd, or Exodus with time steps) to read, from 0").range(0, std::numeric_limits<int>::max())
           .derived("every step, one image each"),
+      Key("data.block", T::string, "one block of a file of blocks (.vtm, Exodus), by name or index from 0")
+          .derived("all blocks, merged"),
       Key("data.components", T::choice, "the order of a 6-component array's tensor components")
           .choices(component_order_names())
           .derived("the order the file records (components named apart, NRRD's and NIfTI's layouts), else \"vtk\""),

@@ -13,6 +13,11 @@ info() { "$hsb" info "$1" 2>&1 | grep '^#' || fail "info $1: $("$hsb" info "$1" 
 out=$(info kirsch_plate_blocks.vtm)
 grep -q 'tensors   "stress" (9 components' <<<"$out" || fail "the multiblock file's stress not chosen: $out"
 grep -q 'also in the file: "strain"' <<<"$out" || fail "the other tensor not named: $out"
+grep -q 'blocks    2 with cells: 0 "left" (808 cells), 1 "right" (824 cells)' <<<"$out" || fail "the blocks not listed: $out"
+out=$("$hsb" info kirsch_plate_blocks.vtm --set data.block=right 2>&1)
+grep -q 'cells     824:' <<<"$out" && grep -q 'only "right" read' <<<"$out" || fail "data.block not read alone: $out"
+out=$("$hsb" info kirsch_plate_blocks.vtm --set data.block=middle 2>&1) && fail "a block the file lacks was read"
+grep -q 'names none of its 2 blocks with cells: 0 "left", 1 "right"' <<<"$out" || fail "the missing block not said: $out"
 out=$(info lame_cylinder.pvtu)
 grep -q 'cells     4558: 4558 vtkTetra' <<<"$out" || fail "the pieces not merged: $out"
 out=$(info sfepy_bracket.vtk)

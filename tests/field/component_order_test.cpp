@@ -51,10 +51,11 @@ TEST(ComponentOrder, EachPresetReadsItsOwnLayoutAndNoOther) {
   for (const ComponentOrder& order : component_orders()) {
     const std::string path = written_in(order);
     EXPECT_EQ((read(path, order.name).matrix() - distinct.matrix()).norm(), 0.0) << order.name;
-    for (const ComponentOrder& other : component_orders())
-      if (other.layout != order.layout)
-        EXPECT_GT((read(path, other.name).matrix() - distinct.matrix()).norm(), 1.0)
-            << order.name << " read as " << other.name;
+    for (const ComponentOrder& other : component_orders()) {
+      if (other.layout == order.layout) continue;
+      EXPECT_GT((read(path, other.name).matrix() - distinct.matrix()).norm(), 1.0)
+          << order.name << " read as " << other.name;
+    }
   }
 }
 

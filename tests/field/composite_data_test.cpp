@@ -8,7 +8,9 @@
 #include <vtkCellData.h>
 #include <vtkDataSetAttributes.h>
 #include <vtkDoubleArray.h>
+#include <vtkCompositeDataSet.h>
 #include <vtkImageData.h>
+#include <vtkInformation.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkPointData.h>
 #include <vtkExodusIIWriter.h>
@@ -143,6 +145,59 @@ TEST(CompositeData, BlocksReadAsOneBody) {
   EXPECT_EQ(data.boundary.triangles.size(), one.boundary.triangles.size());
 }
 
+// data.block reads one block of a multiblock file, by its name or its
+// index; a name that is none of them is an error listing them.
+TEST(CompositeData, OneBlockIsReadWhenTheSceneNamesIt) {
+  auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+  blocks->SetNumberOfBlocks(2);
+  blocks->SetBlock(0, tet_body(1.0, 0.0, 5));  // x ∈ [0, 1]
+  blocks->SetBlock(1, tet_body(1.0, 1.0, 5));  // x ∈ [1, 2]
+  blocks->GetMetaData(0u)->Set(vtkCompositeDataSet::NAME(), "left");
+  blocks->GetMetaData(1u)->Set(vtkCompositeDataSet::NAME(), "right");
+  const std::string path = (test_temp_dir("composite") / "named_blocks.vtm").string();
+  auto writer = vtkSmartPointer<vtkXMLMultiBlockDataWriter>::New();
+  writer->SetInputData(blocks);
+  writer->SetFileName(path.c_str());
+  writer->Write();
+  const Vec3 in_left(0.3, 0.4, 0.6), in_right(1.7, 0.2, 0.9);
+
+  VtkFileSpec spec{path};
+  const std::string described = describe_vtk_file(spec);
+  EXPECT_NE(described.find("blocks    2 with cells: 0 \"left\" (320 cells), 1 \"right\" (320 cells); all merged"),
+            std::string::npos)
+      << described;
+  for (const std::string& right : {"right", "1"}) {
+    spec.block = right;
+    const VtkData data = load_vtk_data(spec);
+    ASSERT_TRUE(data.field);
+    EXPECT_FALSE(data.field->sample(in_left)) << right;
+    ASSERT_TRUE(data.field->sample(in_right)) << right;
+    EXPECT_LT((data.field->sample(in_right)->matrix() - linear_tensor(in_right, 1.0).matrix()).norm(), 1e-9);
+    EXPECT_NEAR(data.field->bounds().lo.x(), 1.0, 1e-6);
+  }
+  spec.block = "left";
+  EXPECT_TRUE(load_vtk_data(spec).field->sample(in_left));
+  EXPECT_NE(describe_vtk_file(spec).find("only \"left\" read (data.block)"), std::string::npos);
+  spec.block = "middle";
+  try {
+    load_vtk_data(spec);
+    FAIL() << "read a block the file does not have";
+  } catch (const DataError& e) {
+    EXPECT_NE(std::string(e.what()).find("data.block \"middle\" names none of its 2 blocks with cells: 0 \"left\", 1 \"right\""),
+              std::string::npos)
+        << e.what();
+  }
+  // A file of one data set has no blocks to pick.
+  spec = VtkFileSpec{write_vtu(tet_body(), "one_block.vtu")};
+  spec.block = "0";
+  try {
+    load_vtk_data(spec);
+    FAIL() << "picked a block of a file without blocks";
+  } catch (const DataError& e) {
+    EXPECT_NE(std::string(e.what()).find("data.block applies only to files of blocks"), std::string::npos) << e.what();
+  }
+}
+
 TEST(CompositeData, ATimeSeriesIsReadAtTheStepAskedFor) {
   const std::string a = write_vtu(tet_body(1.0), "series_0.vtu");
   const std::string b = write_vtu(tet_body(5.0), "series_1.vtu");
@@ -171,9 +226,9 @@ TEST(CompositeData, ATimeSeriesIsReadAtTheStepAskedFor) {
 }
 
 // `grid`'s tensors as six scalar arrays named `names` (for XX, YY, ZZ,
-// XY, YZ, XZ), added in the order `file_order` gives, written as Exodus II.
-std::string write_exodus_components(vtkUnstructuredGrid* grid, const std::array<std::string, 6>& names,
-                                    const std::array<int, 6>& file_order, const std::string& file) {
+// XY, YZ, XZ), added in the order `file_order` gives.
+void split_into_components(vtkUnstructuredGrid* grid, const std::array<std::string, 6>& names,
+                           const std::array<int, 6>& file_order) {
   vtkDataArray* stress = grid->GetPointData()->GetArray("stress");
   for (int c : file_order) {
     auto part = vtkSmartPointer<vtkDoubleArray>::New();
@@ -183,13 +238,19 @@ std::string write_exodus_components(vtkUnstructuredGrid* grid, const std::array<
     grid->GetPointData()->AddArray(part);
   }
   grid->GetPointData()->RemoveArray("stress");
+}
+
+// `data` (a grid, or blocks of grids) written as Exodus II.
+std::string write_exodus(vtkDataObject* data, const std::string& file) {
   const std::string path = (test_temp_dir("composite") / file).string();
   auto writer = vtkSmartPointer<vtkExodusIIWriter>::New();
-  writer->SetInputData(grid);
+  writer->SetInputData(data);
   writer->SetFileName(path.c_str());
   writer->Write();
   return path;
 }
+
+const std::array<std::string, 6> sierra_names{"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_zx"};
 
 // Exodus II as Sierra writes it (stress_xx, ..., stress_zx) and as a
 // writer that lists the upper triangle row by row (stressXX, stressXY,
@@ -198,9 +259,11 @@ std::string write_exodus_components(vtkUnstructuredGrid* grid, const std::array<
 TEST(CompositeData, ExodusComponentVariablesReadAsOneTensor) {
   const std::array<int, 6> sierra{0, 1, 2, 3, 4, 5}, upper_rows{0, 3, 5, 1, 4, 2};
   for (const auto& [names, order] :
-       {std::pair{std::array<std::string, 6>{"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_zx"}, sierra},
+       {std::pair{sierra_names, sierra},
         std::pair{std::array<std::string, 6>{"stressXX", "stressYY", "stressZZ", "stressXY", "stressYZ", "stressXZ"}, upper_rows}}) {
-    VtkFileSpec spec{write_exodus_components(tet_body(), names, order, names[0] + ".exo")};
+    const vtkSmartPointer<vtkUnstructuredGrid> body = tet_body();
+    split_into_components(body, names, order);
+    VtkFileSpec spec{write_exodus(body, names[0] + ".exo")};
     const std::string described = describe_vtk_file(spec);
     SCOPED_TRACE(described);
     EXPECT_NE(described.find("tensors   \"stress\" (6 components"), std::string::npos);
@@ -214,6 +277,24 @@ TEST(CompositeData, ExodusComponentVariablesReadAsOneTensor) {
     spec.step = 3;  // the file has one step
     EXPECT_THROW(load_vtk_data(spec), DataError);
   }
+}
+
+// An Exodus file's element blocks, merged or one alone.
+TEST(CompositeData, OneExodusElementBlockIsReadWhenTheSceneNamesIt) {
+  auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+  blocks->SetNumberOfBlocks(2);
+  for (unsigned i : {0u, 1u}) {
+    const vtkSmartPointer<vtkUnstructuredGrid> half = tet_body(1.0, double(i), 5);  // x ∈ [i, i + 1]
+    split_into_components(half, sierra_names, {0, 1, 2, 3, 4, 5});
+    blocks->SetBlock(i, half);
+  }
+  VtkFileSpec spec{write_exodus(blocks, "two_blocks.exo")};
+  expect_linear_field(load_vtk_data(spec));
+  spec.block = "1";
+  const VtkData right = load_vtk_data(spec);
+  EXPECT_FALSE(right.field->sample(Vec3(0.3, 0.4, 0.6)));
+  EXPECT_TRUE(right.field->sample(Vec3(1.7, 0.2, 0.9)));
+  EXPECT_NE(describe_vtk_file(spec).find("blocks    2 with cells"), std::string::npos);
 }
 
 // meshio's Exodus writer makes files whose variables the Exodus library

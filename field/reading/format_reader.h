@@ -1,0 +1,59 @@
+#pragma once
+// How hsb reads one data format: the hooks behind an entry of the format
+// registry (field/reading/data_formats.h). Each reader defines its own
+// FormatReader beside its code; dataset_reading.cpp calls only these hooks,
+// so adding a format is one reader and one registry line. Internal to
+// field/: it names VTK types.
+
+#include <string>
+#include <vector>
+
+#include <vtkDataSet.h>
+#include <vtkSmartPointer.h>
+
+#include "field/reading/vtk_session.h"
+
+namespace hsb {
+
+// What a scene asks of a file beyond its name.
+struct ReadRequest {
+  int step = -1;      // a time step's index (-1: the first)
+  std::string block;  // one block of a multiblock or Exodus file ("": all, merged)
+};
+
+// The hooks are called with a VtkSession held, and those that parse the
+// user's file (all but step_file's arithmetic) in a child process
+// (dataset_reading.cpp): VTK's parsers trust what a file declares.
+struct FormatReader {
+  // The data set in `path`, read as the request asks (pieces and blocks
+  // merged into one grid), before the checks every format gets. Checks
+  // the file's own signature first. Runs in a child process. Throws
+  // DataError naming the file. Null for a series, whose steps are files
+  // of other formats (step_file).
+  vtkSmartPointer<vtkDataSet> (*read)(const std::string& path, const ReadRequest& request, const VtkSession& vtk) =
+      nullptr;
+  // A series only: the file holding step `step` (-1: the first).
+  std::string (*step_file)(const std::string& path, int step) = nullptr;
+  // The other files the data is made of (pieces, blocks, a detached data
+  // file), for --skip-existing's hashing; null: none.
+  std::vector<std::string> (*parts)(const std::string& path) = nullptr;
+  // The times of its steps in order, none for data of one step; null: the
+  // format has no steps.
+  std::vector<double> (*times)(const std::string& path) = nullptr;
+  // Pieces or blocks whose shared points are joined into one after reading.
+  bool joins_pieces = false;
+  // data.block picks one of its blocks.
+  bool has_blocks = false;
+};
+
+// The readers, each defined beside its code.
+extern const FormatReader legacy_vtk_reader;      // vtk_formats.cpp
+extern const FormatReader vtk_xml_reader;         // vtk_formats.cpp
+extern const FormatReader vtk_pieces_reader;      // vtk_formats.cpp
+extern const FormatReader vtk_multiblock_reader;  // vtk_formats.cpp
+extern const FormatReader vtk_series_reader;      // vtk_formats.cpp
+extern const FormatReader exodus_reader;          // exodus_reading.cpp
+extern const FormatReader nrrd_reader;            // nrrd_reading.cpp
+extern const FormatReader nifti_reader;           // nifti_reading.cpp
+
+}  // namespace hsb
