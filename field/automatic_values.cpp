@@ -10,6 +10,9 @@ namespace {
 // mapped magnitudes that is drawn at that size.
 constexpr double kMagnitudeGlyph = 1.0 / 50.0;
 constexpr double kFixedGlyph = 1.0 / 100.0;
+// The same as a fraction of the gap between glyphs at data points.
+constexpr double kMagnitudeGap = 0.45;
+constexpr double kFixedGap = 0.3;
 constexpr double kReferencePercentile = 0.9;
 constexpr double kCeilingOverReference = 3.0;
 constexpr double kFloorUnderReference = 1.0 / 20.0;
@@ -52,10 +55,23 @@ SeedSpec automatic_seeds(const Box3& domain, std::optional<int> plane_axis) {
   return seeds;
 }
 
+int automatic_stride(std::size_t sites) { return int(std::max<std::size_t>(1, (sites + 19999) / 20000)); }
+
+double site_gap(const Box3& domain, std::size_t count) {
+  const double d = domain.diagonal();
+  double measure = 1.0;
+  int dimensions = 0;
+  for (int k = 0; k < 3; ++k)
+    if (domain.size()[k] > 1e-6 * d) measure *= domain.size()[k], ++dimensions;
+  if (dimensions == 0 || count < 2) return d > 0.0 ? d : 1.0;
+  return std::pow(measure / double(count), 1.0 / dimensions);
+}
+
 GlyphMapping automatic_glyph_mapping(const GlyphSizeSpec& spec, const std::vector<Vec3>& eigenvalues,
-                                     const Box3& domain, double glyph_extent) {
+                                     const Box3& domain, double glyph_extent, std::optional<double> gap) {
   const bool by_magnitude = maps_magnitude(spec.mapping);
-  const double reference_size = domain.diagonal() * (by_magnitude ? kMagnitudeGlyph : kFixedGlyph);
+  const double reference_size = gap ? *gap * (by_magnitude ? kMagnitudeGap : kFixedGap)
+                                    : domain.diagonal() * (by_magnitude ? kMagnitudeGlyph : kFixedGlyph);
 
   double reference_radius = 1.0;  // at scale 1
   if (by_magnitude) {

@@ -5,6 +5,8 @@
 // data set in millimetres and pascals gets the same picture as one in unit
 // cubes. scenes/README.md states the same rules for users.
 
+#include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "field/glyph_pipeline.h"
@@ -26,10 +28,21 @@ double automatic_spacing(const Box3& domain, RadiusMapping mapping);
 // grid over its plane, in the middle of the slab's thickness.
 SeedSpec automatic_seeds(const Box3& domain, std::optional<int> plane_axis = std::nullopt);
 
+// Glyphs at the data's points (glyphs.placement = "points"): every
+// stride-th point, at most 20,000 glyphs (a field of more is a texture,
+// not glyphs one can read).
+int automatic_stride(std::size_t sites);
+// The mean distance between neighbouring glyphs of `count` spread evenly
+// over `domain`, in as many dimensions as it has extent (a plane's points
+// over its area, a line's along it).
+double site_gap(const Box3& domain, std::size_t count);
+
 // The glyph size, for every mapping. Sizes are isolated glyphs' largest
 // semi-axes, glyph_extent times the largest radius (see build_glyph_scene).
 //  - The reference glyph is G = D/50 for the magnitude mappings (linear,
-//    sqrt), D/100 for the fixed-size ones (normalized, constant).
+//    sqrt), D/100 for the fixed-size ones (normalized, constant). For
+//    glyphs at data points `gap` apart (site_gap), G = 0.45 gap and
+//    0.3 gap: neighbours of the reference size just touch.
 //  - scale: a magnitude mapping's reference is the 90th percentile, over
 //    all sources, of the mapped largest eigenvalue magnitude: that glyph
 //    has size G. At the automatic spacing glyphs of about half that
@@ -49,6 +62,7 @@ SeedSpec automatic_seeds(const Box3& domain, std::optional<int> plane_axis = std
 // singular points whose few extreme values would shrink every other glyph
 // to nothing. `eigenvalues` are the sources' (zero tensors are ignored).
 GlyphMapping automatic_glyph_mapping(const GlyphSizeSpec& spec, const std::vector<Vec3>& eigenvalues,
-                                     const Box3& domain, double glyph_extent);
+                                     const Box3& domain, double glyph_extent,
+                                     std::optional<double> gap = std::nullopt);
 
 }  // namespace hsb

@@ -1,6 +1,7 @@
 #include "field/glyph_pipeline.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -27,13 +28,15 @@ LoadedField make_field(const DataSpec& spec) {
     loaded.boundary = std::move(data.boundary);
     loaded.plane_axis = data.plane_axis;
     loaded.warnings = std::move(data.warnings);
+    loaded.sites = std::move(data.sites);
+    loaded.no_volume = std::move(data.no_volume);
     if (const auto* mesh = dynamic_cast<const MeshField<Vec3>*>(loaded.vectors.get()))
       for (const Vec3& v : mesh->values()) loaded.max_speed = std::max(loaded.max_speed, v.norm());
   } else {
     loaded.field = std::make_unique<PointLoadField>(spec.point_load);
   }
   const auto& dims = spec.sample_grid;
-  if (loaded.field && std::all_of(dims.begin(), dims.end(), [](int d) { return d >= 2; })) {
+  if (loaded.field && loaded.no_volume.empty() && std::all_of(dims.begin(), dims.end(), [](int d) { return d >= 2; })) {
     // A tensor a node while sampling, and as much again while the grid is
     // moved into place.
     const double nodes = double(dims[0]) * double(dims[1]) * double(dims[2]);
@@ -128,6 +131,10 @@ const char* stop_name(StopReason r) {
 
 // An empty or nearly empty picture deserves a reason.
 void warn_about_the_result(GlyphScene& scene, std::size_t seeds) {
+  if (scene.sources.empty() && scene.placement == SourcePlacement::at_data_points) {
+    scene.warnings.push_back("no glyph sources: no data point (of those glyphs.stride keeps) has a value there");
+    return;
+  }
   if (scene.sources.empty()) {
     scene.warnings.push_back("no glyph sources: none of the " + std::to_string(seeds) +
                              " seeds lies inside the data set where it can be sampled");
@@ -170,11 +177,46 @@ ColorScalar resolve_color(const GlyphPipelineSpec& spec, const LoadedField& load
   if (!flow && c == ColorScalar::speed)
     throw DataError((file.empty() ? std::string("the point load") : file) +
                     ": glyphs.color_by = \"speed\" needs a flow (vectors); this data holds tensors");
-  if (c == ColorScalar::array && !loaded.color)
+  if (c == ColorScalar::array && !loaded.color && loaded.sites.colors.empty())
     throw DataError("glyphs.color_by = \"array:NAME\" needs a data file that holds that array");
   if (c == ColorScalar::arc_length)
     throw DataError("glyphs.color_by = \"arc_length\" is for sources along a curve (glyphs.placement = \"curve\")");
   return c;
+}
+
+// Where the sources go: as the scene says, but data without volume has
+// nothing to trace in or sample at seeds, so its glyphs stand at its
+// points, said in a warning.
+SourcePlacement resolved_placement(const GlyphPipelineSpec& spec, const LoadedField& loaded,
+                                   std::vector<std::string>& warnings) {
+  if (loaded.no_volume.empty() || spec.placement == SourcePlacement::at_data_points) return spec.placement;
+  warnings.push_back(spec.data.file.path + ": " + loaded.no_volume + ": a glyph at each of its " +
+                     std::to_string(loaded.sites.positions.size()) + " points instead (glyphs.placement = \"points\")");
+  return SourcePlacement::at_data_points;
+}
+
+// A glyph at every stride-th site, from the value there (a tensor glyph or
+// a streamball), coloured by the chosen scalar or the colour array there.
+// Sites without a finite value (or colour) get none.
+std::vector<GlyphSource> sources_at_sites(const DataSites& sites, std::size_t stride, ColorScalar color) {
+  std::vector<GlyphSource> sources;
+  const bool flow = !sites.vectors.empty();
+  for (std::size_t i = 0; i < sites.positions.size(); i += stride) {
+    GlyphSource source;
+    if (flow) {
+      if (!sites.vectors[i].allFinite()) continue;
+      source = make_flow_source(sites.positions[i], sites.vectors[i], color);
+    } else {
+      if (i >= sites.tensors.size() || !sites.tensors[i].is_finite()) continue;
+      source = make_source(sites.positions[i], sites.tensors[i], color);
+    }
+    if (color == ColorScalar::array) {
+      if (i >= sites.colors.size() || !std::isfinite(sites.colors[i])) continue;
+      source.scalar = sites.colors[i];
+    }
+    sources.push_back(source);
+  }
+  return sources;
 }
 
 // Sources the scene itself gives (a curve, a list): no data set, sizes as
@@ -217,6 +259,7 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
     return given;
   }
   DataSpec data = spec.data;
+  data.file.sites = spec.placement == SourcePlacement::at_data_points;
   if (data.kind == DataKind::point_load && !data.point_load.singular_radius)
     data.point_load.singular_radius = default_singular_radius(data.point_load.bounds);
   LoadedField loaded = make_field(data);
@@ -230,11 +273,15 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   scene.boundary = std::move(loaded.boundary);
   scene.plane_axis = loaded.plane_axis;
   scene.warnings = std::move(loaded.warnings);
+  scene.placement = resolved_placement(spec, loaded, scene.warnings);
   scene.values = resolve_lengths(spec, scene.domain, loaded);
   if (data.kind == DataKind::point_load) scene.values.singular_radius = data.point_load.singular_radius;
   const GlyphValues& values = scene.values;
-  check_seed_and_trajectory_memory(values, spec.placement);
-  const std::vector<Vec3> seeds = all_seeds(values.seeds, scene.domain);
+  std::vector<Vec3> seeds;
+  if (scene.placement != SourcePlacement::at_data_points) {
+    check_seed_and_trajectory_memory(values, scene.placement);
+    seeds = all_seeds(values.seeds, scene.domain);
+  }
 
   // The source at a point: a tensor glyph or a streamball, coloured by the
   // chosen scalar or by the colour array there.
@@ -255,7 +302,20 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
     return source;
   };
 
-  if (spec.placement == SourcePlacement::at_seeds) {
+  std::optional<double> gap;  // between glyphs at data points
+  if (scene.placement == SourcePlacement::at_data_points) {
+    const std::size_t sites = loaded.sites.positions.size();
+    if (data.kind != DataKind::vtk_file)
+      throw DataError("glyphs.placement = \"points\" needs a data file: the point load has no data points");
+    scene.values.stride = spec.stride.value_or(automatic_stride(sites));
+    const std::size_t shown = (sites + std::size_t(scene.values.stride) - 1) / std::size_t(scene.values.stride);
+    std::ostringstream what;
+    what << "the glyphs (one at each of " << shown << " data points, glyphs.stride " << scene.values.stride << ")";
+    scene.memory_estimate = resident_bytes() + double(shown) * kBytesPerSource;
+    check_memory(scene.memory_estimate, what.str(), "raise glyphs.stride");
+    scene.sources = sources_at_sites(loaded.sites, std::size_t(scene.values.stride), color);
+    gap = site_gap(scene.domain, shown);
+  } else if (scene.placement == SourcePlacement::at_seeds) {
     scene.memory_estimate = resident_bytes() + double(seeds.size()) * kBytesPerSource;
     for (const Vec3& seed : seeds)
       if (std::optional<GlyphSource> s = make(seed)) scene.sources.push_back(std::move(*s));
@@ -286,7 +346,7 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   std::vector<Vec3> eigenvalues;
   eigenvalues.reserve(scene.sources.size());
   for (const GlyphSource& s : scene.sources) eigenvalues.push_back(s.eigenvalues);
-  scene.values.mapping = automatic_glyph_mapping(spec.size, eigenvalues, scene.domain, glyph_extent);
+  scene.values.mapping = automatic_glyph_mapping(spec.size, eigenvalues, scene.domain, glyph_extent, gap);
   size_sources(scene.sources, scene.values.mapping);
   if (flow && spec.stretch != 1.0) stretch_sources(scene.sources, spec.stretch);
   if (scene.plane_axis)

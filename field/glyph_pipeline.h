@@ -85,6 +85,7 @@ struct GlyphSizeSpec {
 enum class SourcePlacement {
   along_trajectories,  // hyperstreamballs: sources spaced along tensor lines (streamballs: streamlines)
   at_seeds,            // one glyph per seed point: classic ellipsoid glyphs
+  at_data_points,      // one glyph at each data point (or cell centre), with a stride: the discrete glyph field
   curve,               // along a curve the scene gives, one fixed shape (no data)
   list,                // as listed in a CSV file (no data)
 };
@@ -95,6 +96,7 @@ struct GlyphPipelineSpec {
   TrajectorySpec trajectory;
   SourcePlacement placement = SourcePlacement::along_trajectories;
   std::optional<double> spacing;  // arc length between sources
+  std::optional<int> stride;      // placement points: every stride-th data point
   GlyphSizeSpec size;
   // Automatic: λ3 (the paper's figures) for tensors, the speed for a flow.
   // ColorScalar::array colours by data.file.color_array.
@@ -113,11 +115,13 @@ struct GlyphValues {
   SeedSpec seeds;
   TrajectoryOptions trajectory;
   double spacing = 0.0;
+  int stride = 1;  // placement points
   GlyphMapping mapping;
 };
 
 struct GlyphScene {
   Box3 domain;
+  SourcePlacement placement = SourcePlacement::along_trajectories;  // resolved: data without volume takes points
   bool flow = false;  // made from a vector field (streamballs), not tensors
   ColorScalar color = ColorScalar::lambda3;  // what `scalar` holds, resolved
   std::vector<Trajectory> trajectories;
@@ -140,6 +144,8 @@ struct LoadedField {
   std::optional<TriangleMesh> boundary;
   std::optional<int> plane_axis;  // a 2-D result (field/reading/vtk_data.h)
   std::vector<std::string> warnings;
+  DataSites sites;        // the data's values where they stand (placement points, data without volume)
+  std::string no_volume;  // why the data has no volume to trace in ("": it has)
 };
 
 // Builds (or reads) the data set described by `spec`. Throws DataError for

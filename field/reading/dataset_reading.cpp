@@ -7,6 +7,7 @@
 #include <vtkGenericCell.h>
 #include <vtkIdList.h>
 #include <vtkPointData.h>
+#include <vtkPolyData.h>
 #include <vtkPoints.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLDataSetWriter.h>
@@ -30,6 +31,7 @@
 #include "field/reading/component_arrays.h"
 #include "field/reading/data_error.h"
 #include "field/reading/data_formats.h"
+#include "field/reading/file_records.h"
 #include "field/reading/format_reader.h"
 #include "field/reading/plane_data.h"
 #include "field/reading/vtk_data.h"
@@ -38,6 +40,8 @@ namespace hsb {
 namespace {
 
 double trial_base_seconds = 30.0;
+
+const std::string no_volume_key = "hsb no volume";
 
 // VTK's cells index their points by their type's count: a hexahedron
 // listed with three points, or a biquadratic wedge with eight, is read past
@@ -113,12 +117,16 @@ void check_cells(vtkDataSet* data, const std::string& path) {
       }
     }
   }
-  if (data->GetNumberOfCells() == 0)
+  if (data->GetNumberOfCells() == 0 && !vtkPolyData::SafeDownCast(data) && !vtkUnstructuredGrid::SafeDownCast(data))
     throw DataError(path + ": the data set has no cells: there is no volume to sample tensors in");
 }
 
 // Some volume to sample in: one cell with volume is enough (2-D results
-// are made a slab first: field/reading/plane_data.h).
+// in an axis plane are made a slab first: field/reading/plane_data.h).
+// Data without 3-D cells (a point cloud, lines, a curved shell) has no
+// volume to trace in but still a value at each point: that is recorded
+// (volume_record), and its picture is a glyph at each point. 3-D cells
+// that are all flat are a broken mesh, an error.
 void check_volume(vtkDataSet* data, const std::string& path) {
   const vtkIdType cells = data->GetNumberOfCells();
   // One cell with volume is enough: degenerate cells among good ones are
@@ -131,8 +139,10 @@ void check_volume(vtkDataSet* data, const std::string& path) {
   auto ids = vtkSmartPointer<vtkIdList>::New();
   auto corners = vtkSmartPointer<vtkPoints>::New();
   vtkIdType three_d = 0;
+  int highest = 0;
   for (vtkIdType i = 0; i < cells; ++i) {
     vtkCell* cell = data->GetCell(i);
+    highest = std::max(highest, cell->GetCellDimension());
     if (cell->GetCellDimension() != 3) continue;
     ++three_d;
     if (!cell->Triangulate(0, ids, corners)) continue;
@@ -146,14 +156,15 @@ void check_volume(vtkDataSet* data, const std::string& path) {
     }
   }
   std::ostringstream message;
-  if (three_d == 0 && data->GetNumberOfCells() > 0 && data->GetCell(0)->GetCellDimension() < 2) {
-    message << path << ": its " << cells << " cells are points or lines, with no area or volume: tensors are "
-            << "sampled in 3-D cells, or 2-D cells in a plane (a point cloud of tensors has nothing to trace in)";
-    throw DataError(message.str());
+  if (three_d == 0) {
+    if (cells == 0) message << "it has points but no cells";
+    else message << "its " << cells << " cells are " << (highest < 2 ? "points or lines" : "surfaces not in an axis plane");
+    message << ", with no volume to trace trajectories in";
+    add_record(data->GetFieldData(), no_volume_key, {message.str()});
+    return;
   }
-  message << path << ": none of its " << cells << " cells has any volume ("
-          << (three_d ? std::to_string(three_d) + " are 3D cells, all flat" : std::string("none is a 3D cell"))
-          << "): tensors are sampled inside 3D cells";
+  message << path << ": none of its " << cells << " cells has any volume (" << three_d
+          << " are 3D cells, all flat): tensors are sampled inside 3D cells";
   throw DataError(message.str());
 }
 
@@ -169,7 +180,7 @@ vtkSmartPointer<vtkDataSet> read_checked(const std::string& path, const FormatRe
   join_component_arrays(data->GetPointData(), data->GetFieldData());
   join_component_arrays(data->GetCellData(), data->GetFieldData());
   record_writer_orders(data);
-  if (const std::optional<PlaneOfData> plane = find_plane(data, path)) data = extruded(data, *plane);
+  if (const std::optional<PlaneOfData> plane = find_plane(data)) data = extruded(data, *plane);
   check_volume(data, path);
   return data;
 }
@@ -294,6 +305,11 @@ std::vector<std::string> data_files_read(const std::string& path, int step) {
     files.insert(files.end(), inner.begin(), inner.end());
   }
   return files;
+}
+
+std::string no_volume_reason(vtkDataSet* data) {
+  const std::vector<std::string> record = record_of(data, no_volume_key);
+  return record.empty() ? std::string() : record.front();
 }
 
 void update_safely(vtkAlgorithm* algorithm, const std::string& path, const char* what) {

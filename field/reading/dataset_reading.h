@@ -22,6 +22,11 @@ namespace hsb {
 vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSession& vtk,
                                          const ReadRequest& request = {});
 
+// Why the data set has no volume to sample in between its points (a point
+// cloud, lines, a curved shell: its values stand at its points only); ""
+// for one that has.
+std::string no_volume_reason(vtkDataSet* data);
+
 // Runs `algorithm` in a child process first: VTK's filters trust the cells
 // they are given, so a degenerate mesh can make them read past their
 // buffers or loop. A crash or a hang in the child is one DataError naming

@@ -16,7 +16,6 @@
 
 #include "field/reading/component_arrays.h"
 #include "field/reading/component_order.h"
-#include "field/reading/data_error.h"
 #include "field/tensor/sym3.h"
 
 namespace hsb {
@@ -78,14 +77,10 @@ void make_planar(vtkDataSetAttributes* attributes, vtkFieldData* records, int ax
 
 }  // namespace
 
-std::optional<PlaneOfData> find_plane(vtkDataSet* data, const std::string& path) {
-  bool two_d = false;
-  for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c) {
-    const int dimension = data->GetCell(c)->GetCellDimension();
-    if (dimension == 3) return std::nullopt;
-    two_d = two_d || dimension == 2;
-  }
-  if (!two_d) return std::nullopt;
+std::optional<PlaneOfData> find_plane(vtkDataSet* data) {
+  for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c)
+    if (data->GetCell(c)->GetCellDimension() == 3) return std::nullopt;
+  if (data->GetNumberOfPoints() < 3) return std::nullopt;
   double b[6];
   data->GetBounds(b);
   const Vec3 size(b[1] - b[0], b[3] - b[2], b[5] - b[4]);
@@ -93,10 +88,9 @@ std::optional<PlaneOfData> find_plane(vtkDataSet* data, const std::string& path)
   int axis = -1, flat_axes = 0;
   for (int a = 0; a < 3; ++a)
     if (size[a] <= flat) axis = a, ++flat_axes;
-  if (flat_axes != 1 || !(size.norm() > 0))
-    throw DataError(path + ": its cells are 2-D (no volume) but do not lie in one plane x, y or z = const " +
-                    (flat_axes > 1 ? "(they lie on a line)" : "(the mesh is a curved or oblique surface)") +
-                    ": 2-D results are read in an axis plane");
+  // A curved or oblique surface (a shell), or one on a line: no plane to
+  // make a slab of; its values are drawn at its points (no volume).
+  if (flat_axes != 1 || !(size.norm() > 0)) return std::nullopt;
   PlaneOfData plane;
   plane.axis = axis;
   plane.coordinate = 0.5 * (b[2 * axis] + b[2 * axis + 1]);
@@ -105,7 +99,34 @@ std::optional<PlaneOfData> find_plane(vtkDataSet* data, const std::string& path)
   return plane;
 }
 
-vtkSmartPointer<vtkUnstructuredGrid> extruded(vtkDataSet* data, const PlaneOfData& plane) {
+namespace {
+
+// `data`'s arrays made planar, and the plane recorded.
+template <class D>
+vtkSmartPointer<D> made_planar(vtkSmartPointer<D> data, const PlaneOfData& plane) {
+  make_planar(data->GetPointData(), data->GetFieldData(), plane.axis);
+  make_planar(data->GetCellData(), data->GetFieldData(), plane.axis);
+  auto record = vtkSmartPointer<vtkDoubleArray>::New();
+  record->SetName(plane_record);
+  for (double v : {double(plane.axis), plane.coordinate, plane.thickness}) record->InsertNextValue(v);
+  data->GetFieldData()->AddArray(record);
+  return data;
+}
+
+bool has_2d_cells(vtkDataSet* data) {
+  for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c)
+    if (data->GetCell(c)->GetCellDimension() == 2) return true;
+  return false;
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkDataSet> extruded(vtkDataSet* data, const PlaneOfData& plane) {
+  if (!has_2d_cells(data)) {
+    vtkSmartPointer<vtkDataSet> copy = vtkSmartPointer<vtkDataSet>::Take(data->NewInstance());
+    copy->DeepCopy(data);
+    return made_planar(copy, plane);
+  }
   const vtkIdType n = data->GetNumberOfPoints();
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToDouble();
@@ -162,13 +183,7 @@ vtkSmartPointer<vtkUnstructuredGrid> extruded(vtkDataSet* data, const PlaneOfDat
     for (vtkIdType t = 0; t + 2 < triangles->GetNumberOfIds(); t += 3)
       add(VTK_WEDGE, {triangles->GetId(t), triangles->GetId(t + 1), triangles->GetId(t + 2)}, c);
   }
-  make_planar(slab->GetPointData(), slab->GetFieldData(), plane.axis);
-  make_planar(slab->GetCellData(), slab->GetFieldData(), plane.axis);
-  auto record = vtkSmartPointer<vtkDoubleArray>::New();
-  record->SetName(plane_record);
-  for (double v : {double(plane.axis), plane.coordinate, plane.thickness}) record->InsertNextValue(v);
-  slab->GetFieldData()->AddArray(record);
-  return slab;
+  return made_planar(slab, plane);
 }
 
 std::optional<PlaneOfData> plane_of(vtkDataSet* data) {

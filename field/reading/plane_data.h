@@ -29,10 +29,11 @@ struct PlaneOfData {
   double thickness = 0.0;   // of the slab it was made into
 };
 
-// The plane `data` lies in, if it has no 3-D cell and some 2-D cell;
-// nothing for a body. Throws DataError for 2-D cells not all in one plane
-// x, y or z = const.
-std::optional<PlaneOfData> find_plane(vtkDataSet* data, const std::string& path);
+// The plane x, y or z = const `data` lies in, if it has no 3-D cell and
+// all its points lie in that plane (2-D cells, or a planar point cloud);
+// nothing for a body, nor for a curved or oblique surface (a shell: drawn
+// at its points, without volume).
+std::optional<PlaneOfData> find_plane(vtkDataSet* data);
 
 // `data` (2-D cells in `plane`) as a slab of `plane.thickness`: triangles
 // become wedges, quads hexahedra, other 2-D cells wedges of their
@@ -40,8 +41,10 @@ std::optional<PlaneOfData> find_plane(vtkDataSet* data, const std::string& path)
 // both faces, cell data on every cell made from a cell. Its 3-component
 // arrays named as stress or strain become 6-component tensors (z plane
 // only), and every tensor array is made planar (above). The plane is
-// recorded with the data, for plane_of().
-vtkSmartPointer<vtkUnstructuredGrid> extruded(vtkDataSet* data, const PlaneOfData& plane);
+// recorded with the data, for plane_of(). Data without 2-D cells (a
+// planar point cloud) has nothing to extrude: it keeps its points and
+// cells, its arrays made planar the same way.
+vtkSmartPointer<vtkDataSet> extruded(vtkDataSet* data, const PlaneOfData& plane);
 
 // The plane extruded() recorded in `data`, if any.
 std::optional<PlaneOfData> plane_of(vtkDataSet* data);

@@ -403,24 +403,63 @@ TriangleMesh boundary_surface(vtkDataSet* data, const std::string& path) {
 
 namespace {
 
-// The scalar array `name` for colouring: one component (a vector's
-// magnitude when it has three).
-std::unique_ptr<ScalarField> color_field(vtkDataSet* data, const VtkFileSpec& spec,
-                                         const std::shared_ptr<const MeshLocator>& locator) {
+// The scalar array `spec.color_array` for colouring: one component (a
+// vector's magnitude when it has three), and where its values stand.
+std::pair<std::vector<double>, ValueLocation> color_values(vtkDataSet* data, const VtkFileSpec& spec) {
   const ChosenArray chosen = named_array(data, spec.color_array, TensorAssociation::automatic);
   if (!chosen.array)
     throw DataError(spec.path + ": no array named \"" + spec.color_array + "\" to colour by; the file has " +
                     list_arrays(data));
   const ValueLocation where = chosen.on_points ? ValueLocation::points : ValueLocation::cells;
-  if (chosen.components == 1)
-    return std::make_unique<MeshField<double>>(locator, read_values<double>(chosen, spec.path), where);
+  if (chosen.components == 1) return {read_values<double>(chosen, spec.path), where};
   if (chosen.components == 3) {
     std::vector<double> magnitude;
     for (const Vec3& v : read_values<Vec3>(chosen, spec.path)) magnitude.push_back(v.norm());
-    return std::make_unique<MeshField<double>>(locator, std::move(magnitude), where);
+    return {std::move(magnitude), where};
   }
   throw DataError(spec.path + ": array \"" + chosen.name + "\" has " + std::to_string(chosen.components) +
                   " components; colouring needs a scalar (1) or a vector (3, by its magnitude)");
+}
+
+// Where the values of point data (or cell data) stand: the points, or the
+// cells' parametric centres.
+std::vector<Vec3> site_positions(vtkDataSet* data, bool on_points) {
+  std::vector<Vec3> sites;
+  double p[3];
+  if (on_points) {
+    sites.reserve(std::size_t(data->GetNumberOfPoints()));
+    for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i) {
+      data->GetPoint(i, p);
+      sites.emplace_back(p[0], p[1], p[2]);
+    }
+    return sites;
+  }
+  auto cell = vtkSmartPointer<vtkGenericCell>::New();
+  std::vector<double> weights(std::size_t(std::max(data->GetMaxCellSize(), 1)));
+  sites.reserve(std::size_t(data->GetNumberOfCells()));
+  for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c) {
+    data->GetCell(c, cell);
+    double centre[3];
+    int sub = 0;
+    cell->GetParametricCenter(centre);
+    cell->EvaluateLocation(sub, centre, p, weights.data());
+    sites.emplace_back(p[0], p[1], p[2]);
+  }
+  return sites;
+}
+
+// The data's values where they stand, with the colour array's there.
+void fill_sites(vtkDataSet* data, const VtkFileSpec& spec, bool on_points, const ScalarField* color, VtkData& out) {
+  out.sites.positions = site_positions(data, on_points);
+  if (spec.color_array.empty()) return;
+  auto [values, where] = color_values(data, spec);
+  if ((where == ValueLocation::points) == on_points) {
+    out.sites.colors = std::move(values);
+    return;
+  }
+  // Colours stand elsewhere: sampled at the sites where there is volume.
+  for (const Vec3& p : out.sites.positions)
+    out.sites.colors.push_back(color ? color->sample(p).value_or(NAN) : NAN);
 }
 
 }  // namespace
@@ -429,6 +468,9 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
   const VtkSession vtk;
   const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path, vtk, {spec.step, spec.block});
   VtkData out;
+  out.no_volume = no_volume_reason(data);
+  const bool volume = out.no_volume.empty();
+  const bool sites = spec.sites || !volume;
   ChosenArray chosen = choose_field_array(data, spec);
   if (!chosen.note.empty()) out.warnings.push_back(spec.path + ": " + chosen.note);
   // One locator for every array of the data set (all share its cells).
@@ -437,20 +479,31 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
     if (!locator) locator = std::make_shared<MeshLocator>(data.Get());
     return locator;
   };
+  double b[6];
+  data->GetBounds(b);
+  const Box3 bounds{Vec3(b[0], b[2], b[4]), Vec3(b[1], b[3], b[5])};
   if (chosen.components == 3) {
-    out.vectors = std::make_unique<MeshField<Vec3>>(mesh_locator(), read_values<Vec3>(chosen, spec.path),
-                                                    chosen.on_points ? ValueLocation::points : ValueLocation::cells);
+    std::vector<Vec3> vectors = read_values<Vec3>(chosen, spec.path);
+    if (sites) out.sites.vectors = vectors;
+    if (volume)
+      out.vectors = std::make_unique<MeshField<Vec3>>(mesh_locator(), std::move(vectors),
+                                                      chosen.on_points ? ValueLocation::points : ValueLocation::cells);
+    else
+      out.vectors = std::make_unique<PointsOnlyField<Vec3>>(bounds);
   } else {
     vtkSmartPointer<vtkDataSet> averaged;
     std::vector<Sym3> tensors = tensors_of(chosen, spec, data, out.warnings);
-    if (!chosen.on_points && spec.cell_tensors == CellTensors::averaged) {
+    if (volume && !chosen.on_points && spec.cell_tensors == CellTensors::averaged) {
       // The checks and warnings above name cells, which the user can find;
       // the averaged copy would only repeat them for points.
       chosen = averaged_onto_points(data, chosen, spec.path, averaged);
       std::vector<std::string> repeated;
       tensors = tensors_of(chosen, spec, data, repeated);
     }
-    if (chosen.on_points && is_image_volume(data)) {
+    if (sites) out.sites.tensors = tensors;
+    if (!volume) {
+      out.field = std::make_unique<PointsOnlyField<Sym3>>(bounds);
+    } else if (chosen.on_points && is_image_volume(data)) {
       auto* image = vtkImageData::SafeDownCast(data);
       const int* extent = image->GetExtent();
       const double* origin = image->GetOrigin();
@@ -470,8 +523,12 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
                                               chosen.on_points ? ValueLocation::points : ValueLocation::cells);
     }
   }
-  if (!spec.color_array.empty()) out.color = color_field(data, spec, mesh_locator());
-  out.boundary = boundary_surface(data, spec.path);
+  if (volume && !spec.color_array.empty()) {
+    auto [values, where] = color_values(data, spec);
+    out.color = std::make_unique<MeshField<double>>(mesh_locator(), std::move(values), where);
+  }
+  if (sites) fill_sites(data, spec, chosen.on_points, out.color.get(), out);
+  if (data->GetNumberOfCells() > 0) out.boundary = boundary_surface(data, spec.path);  // a shell's own surface too
   if (const std::optional<PlaneOfData> plane = plane_of(data)) out.plane_axis = plane->axis;
   return out;
 }
@@ -513,9 +570,14 @@ std::string describe_vtk_file(const VtkFileSpec& spec) {
     if (spec.block.empty()) out << "; all merged (data.block reads one)\n";
     else out << "; only \"" << read << "\" read (data.block)\n";
   }
-  if (const std::optional<PlaneOfData> plane = plane_of(data))
-    out << "  plane     a 2-D result in " << "xyz"[plane->axis] << " = " << plane->coordinate << ", made a slab "
-        << plane->thickness << " thick; its tensors' out-of-plane entries set planar (the in-plane mean, no shear)\n";
+  const std::string no_volume = no_volume_reason(data);
+  if (const std::optional<PlaneOfData> plane = plane_of(data)) {
+    out << "  plane     a 2-D result in " << "xyz"[plane->axis] << " = " << plane->coordinate;
+    if (no_volume.empty()) out << ", made a slab " << plane->thickness << " thick";
+    out << "; its tensors' out-of-plane entries set planar (the in-plane mean, no shear)\n";
+  }
+  if (!no_volume.empty())
+    out << "  volume    none: " << no_volume << "; drawn as a glyph at each point (glyphs.placement = \"points\")\n";
 
   const ChosenArray chosen = choose_field_array(data, spec);
   const char* where = chosen.on_points ? "point" : "cell";

@@ -42,9 +42,19 @@ struct VtkFileSpec {
   std::string color_array;  // a scalar array to colour by; "" = none
   int step = -1;            // of a time series: the step's index (-1: the first)
   std::string block;        // of a file of blocks: one, by name or index ("": all, merged)
+  bool sites = false;       // also hand back the array's values where they stand (VtkData::sites)
   // The order of 6 components (field/reading/component_order.h); "" = the order
   // the file records (field/reading/component_arrays.h), else VTK's.
   std::string components;
+};
+
+// The drawn array's values where they stand: its points, or its cells'
+// centres for cell data. For a glyph at each (glyphs.placement = "points").
+struct DataSites {
+  std::vector<Vec3> positions;
+  std::vector<Sym3> tensors;   // tensor data; or
+  std::vector<Vec3> vectors;   // vector data
+  std::vector<double> colors;  // VtkFileSpec::color_array at each, when named (NaN: none there)
 };
 
 struct VtkData {
@@ -55,6 +65,13 @@ struct VtkData {
   // A 2-D result (field/reading/plane_data.h): the axis of its plane's normal.
   std::optional<int> plane_axis;
   std::vector<std::string> warnings;  // e.g. a non-symmetric tensor array
+  // Filled when VtkFileSpec::sites asks, and always for data without
+  // volume, which has nothing else to show.
+  DataSites sites;
+  // Why the data has no volume to sample in between its points (a point
+  // cloud, lines, a curved shell); "" when it has. The fields then sample
+  // nothing, and the sites are the data.
+  std::string no_volume;
 };
 
 // Reads the file and its tensors, or its vectors (3 components, read as

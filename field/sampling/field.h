@@ -26,6 +26,21 @@ class Field {
   virtual std::optional<T> sample(const Vec3& x) const = 0;
 };
 
+// The field of data without volume (a point cloud, lines, a curved
+// shell): its values stand at its points with nothing to interpolate in
+// between, so it is sampled nowhere, and its values are drawn where they
+// stand (field/reading/vtk_data.h, DataSites).
+template <class T>
+class PointsOnlyField final : public Field<T> {
+ public:
+  explicit PointsOnlyField(const Box3& bounds) : bounds_(bounds) {}
+  Box3 bounds() const override { return bounds_; }
+  std::optional<T> sample(const Vec3&) const override { return std::nullopt; }
+
+ private:
+  Box3 bounds_;
+};
+
 using TensorField = Field<Sym3>;
 using VectorField = Field<Vec3>;
 using ScalarField = Field<double>;

@@ -129,7 +129,12 @@ void record_field_values(PreparedScene& p) {
   p.resolve("trajectories.step", v.trajectory.step);
   p.resolve("trajectories.max_length", v.trajectory.max_length);
   p.resolve("trajectories.min_magnitude", v.trajectory.min_magnitude);
-  p.resolve("glyphs.spacing", v.spacing);
+  if (p.glyphs.placement == SourcePlacement::at_data_points) {
+    p.resolve("glyphs.placement", "points");  // data without volume takes it whatever the scene says
+    p.resolve("glyphs.stride", v.stride);
+  } else {
+    p.resolve("glyphs.spacing", v.spacing);
+  }
   p.resolve("glyphs.scale", v.mapping.scale);
   p.resolve("glyphs.floor", v.mapping.floor);
   p.resolve("glyphs.ceiling", v.mapping.ceiling);

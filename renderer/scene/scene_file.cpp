@@ -171,6 +171,7 @@ void read_curve(TableReader& c, CurveSpec& spec) {
 void read_glyphs(TableReader& g, GlyphPipelineSpec& spec, const std::string& base_dir) {
   spec.placement = g.choice<SourcePlacement>("placement", {{"trajectories", SourcePlacement::along_trajectories},
                                           {"seeds", SourcePlacement::at_seeds},
+                                          {"points", SourcePlacement::at_data_points},
                                           {"curve", SourcePlacement::curve},
                                           {"list", SourcePlacement::list}});
   TableReader curve = g.table("curve");
@@ -186,6 +187,7 @@ void read_glyphs(TableReader& g, GlyphPipelineSpec& spec, const std::string& bas
   spec.stretch = g.number("stretch");
   spec.thickness = g.optional_number("thickness");
   spec.spacing = g.optional_number("spacing");
+  spec.stride = g.optional_integer("stride");
   GlyphSizeSpec& size = spec.size;
   size.mapping = g.choice<RadiusMapping>("mapping", {{"linear", RadiusMapping::linear}, {"sqrt", RadiusMapping::sqrt},
                                       {"normalized", RadiusMapping::normalized},

@@ -166,10 +166,12 @@ std::vector<KeySchema> build_keys() {
           .choices({"both", "forward", "backward"}).fallback("\"both\""),
 
       // [glyphs]
-      Key("glyphs.placement", T::choice, "where sources go: along trajectories, at seeds, along a curve, from a list")
-          .choices({"trajectories", "seeds", "curve", "list"}).fallback("\"trajectories\""),
+      Key("glyphs.placement", T::choice, "where sources go: along trajectories, at seeds, at the data's points, along a curve, from a list")
+          .choices({"trajectories", "seeds", "points", "curve", "list"}).fallback("\"trajectories\""),
       Key("glyphs.spacing", T::number, "arc length between sources along a trajectory").length()
           .automatic("D/40; D/25 for normalized and constant"),
+      Key("glyphs.stride", T::integer, "placement = \"points\": a glyph at every stride-th data point").range(1, std::numeric_limits<int>::max())
+          .automatic("at most 20,000 glyphs"),
       Key("glyphs.mapping", T::choice, "radii from eigenvalues").choices({"linear", "sqrt", "normalized", "constant"}).fallback("\"sqrt\""),
       Key("glyphs.scale", T::number, "s of the mapping").positive().automatic("the 90th-percentile glyph is D/50 across"),
       Key("glyphs.floor", T::number, "smallest radius").length().automatic("a twentieth of the reference glyph's"),

@@ -18,6 +18,11 @@ out=$("$hsb" info kirsch_plate_blocks.vtm --set data.block=right 2>&1)
 grep -q 'cells     824:' <<<"$out" && grep -q 'only "right" read' <<<"$out" || fail "data.block not read alone: $out"
 out=$("$hsb" info kirsch_plate_blocks.vtm --set data.block=middle 2>&1) && fail "a block the file lacks was read"
 grep -q 'names none of its 2 blocks with cells: 0 "left", 1 "right"' <<<"$out" || fail "the missing block not said: $out"
+out=$(info kirsch_plate_cloud.vtp)
+grep -q 'volume    none: its 874 cells are points or lines' <<<"$out" && grep -q 'plane     a 2-D result in z = 0;' <<<"$out" ||
+  fail "the planar point cloud not described as one: $out"
+out=$(info lame_cylinder_shell.vtp)
+grep -q 'volume    none: its 1800 cells are surfaces not in an axis plane' <<<"$out" || fail "the shell not described as one: $out"
 out=$(info lame_cylinder.pvtu)
 grep -q 'cells     4558: 4558 vtkTetra' <<<"$out" || fail "the pieces not merged: $out"
 out=$(info sfepy_bracket.vtk)

@@ -147,11 +147,16 @@ TEST_F(BadData, CellsWithTheWrongNumberOfPointsForTheirType) {
   EXPECT_NE(error_of(higher).find("only linear and quadratic cells are supported"), std::string::npos) << error_of(higher);
 }
 
-TEST_F(BadData, NoCellsAtAll) {
+// Points with tensors and no cells are a point cloud, not an error: its
+// values are drawn where they stand.
+TEST_F(BadData, NoCellsAtAllIsAPointCloud) {
   LegacyGrid grid;
   grid.cells.clear();
   const fs::path path = write("no_cells.vtk", grid.text());
-  EXPECT_EQ(error_of(path), path.string() + ": the data set has no cells: there is no volume to sample tensors in");
+  const VtkData data = load_vtk_data({path.string()});
+  EXPECT_NE(data.no_volume.find("it has points but no cells"), std::string::npos) << data.no_volume;
+  EXPECT_FALSE(data.sites.positions.empty());
+  EXPECT_EQ(data.sites.positions.size(), data.sites.tensors.size());
 }
 
 TEST_F(BadData, OnlyFlatCells) {

@@ -166,7 +166,7 @@ TEST(CompositeData, OneBlockIsReadWhenTheSceneNamesIt) {
   EXPECT_NE(described.find("blocks    2 with cells: 0 \"left\" (320 cells), 1 \"right\" (320 cells); all merged"),
             std::string::npos)
       << described;
-  for (const std::string& right : {"right", "1"}) {
+  for (const std::string right : {"right", "1"}) {
     spec.block = right;
     const VtkData data = load_vtk_data(spec);
     ASSERT_TRUE(data.field);

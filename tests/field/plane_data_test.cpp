@@ -17,6 +17,7 @@
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include "field/automatic_values.h"
+#include "field/glyph_pipeline.h"
 #include "field/reading/data_error.h"
 #include "field/reading/vtk_data.h"
 #include "tests/temp_dir.h"
@@ -100,8 +101,9 @@ TEST(PlaneData, FullTensorsOnQuadsInAYPlaneLoseTheirOutOfPlaneShear) {
 }
 
 // Polygonal data (.vtp) in a plane is the same 2-D result; a cloud of
-// points carrying tensors is refused with the reason.
-TEST(PlaneData, PolygonsInAVtpFileAreAPlaneAndPointsAreSaidSo) {
+// points carrying tensors has no volume, and its picture is a glyph at
+// each point, said in a warning.
+TEST(PlaneData, PolygonsInAVtpFileAreAPlaneAndAPointCloudIsAGlyphAtEachPoint) {
   const std::string vtu = plane_mesh("for_vtp.vtu", 2, true, 3, plane_stress);
   auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
   reader->SetFileName(vtu.c_str());
@@ -127,12 +129,40 @@ TEST(PlaneData, PolygonsInAVtpFileAreAPlaneAndPointsAreSaidSo) {
   writer->SetInputData(cloud);
   writer->SetFileName(points.c_str());
   writer->Write();
-  try {
-    load_vtk_data({points});
-    FAIL() << "read a point cloud";
-  } catch (const DataError& e) {
-    EXPECT_NE(std::string(e.what()).find("cells are points or lines"), std::string::npos) << e.what();
+  const VtkData read = load_vtk_data({points});
+  EXPECT_NE(read.no_volume.find("its " + std::to_string(cloud->GetNumberOfPoints()) + " cells are points or lines"),
+            std::string::npos)
+      << read.no_volume;
+  ASSERT_EQ(read.sites.positions.size(), std::size_t(cloud->GetNumberOfPoints()));
+  ASSERT_EQ(read.sites.tensors.size(), read.sites.positions.size());
+  EXPECT_FALSE(read.field->sample(read.sites.positions[3]));  // nothing between the points, nor at them
+  for (std::size_t i = 0; i < read.sites.positions.size(); i += 7) {
+    double p[3];
+    cloud->GetPoint(vtkIdType(i), p);
+    EXPECT_EQ(read.sites.positions[i], Vec3(p[0], p[1], p[2]));
+    const std::vector<double> expected = plane_stress(p[0], p[1]);  // xx, yy, xy
+    EXPECT_NEAR(read.sites.tensors[i].xx, expected[0], 1e-6);  // float coordinates
+    EXPECT_NEAR(read.sites.tensors[i].yy, expected[1], 1e-6);  // float coordinates
+    EXPECT_NEAR(read.sites.tensors[i].xy, expected[2], 1e-6);  // float coordinates
   }
+
+  // The scene names only the file: trajectories are asked for (the
+  // default), and a glyph at each point is drawn instead.
+  GlyphPipelineSpec spec;
+  spec.data.kind = DataKind::vtk_file;
+  spec.data.file.path = points;
+  const GlyphScene scene = build_glyph_scene(spec, 1.0);
+  EXPECT_EQ(scene.placement, SourcePlacement::at_data_points);
+  EXPECT_EQ(scene.sources.size(), read.sites.positions.size());
+  ASSERT_FALSE(scene.warnings.empty());
+  EXPECT_NE(scene.warnings.back().find("a glyph at each of its"), std::string::npos) << scene.warnings.back();
+  // Sized by the gap between the points, not by the data's size: the
+  // 90th-percentile glyph is 0.45 of it across.
+  const double gap = site_gap(scene.domain, scene.sources.size());
+  std::vector<double> sizes;
+  for (const GlyphSource& s : scene.sources) sizes.push_back(s.radii.maxCoeff());
+  std::sort(sizes.begin(), sizes.end());
+  EXPECT_NEAR(sizes[std::size_t(0.9 * double(sizes.size() - 1) + 0.5)], 0.45 * gap, 0.05 * gap);
 }
 
 TEST(PlaneData, SeedsLieInThePlaneAndSurfacesOutOfOnePlaneAreRefused) {
@@ -142,15 +172,13 @@ TEST(PlaneData, SeedsLieInThePlaneAndSurfacesOutOfOnePlaneAreRefused) {
   EXPECT_EQ(seeds.grids[0].edge_u.z(), 0.0);
   EXPECT_EQ(seeds.grids[0].edge_v.z(), 0.0);
 
-  // A surface bent out of its plane: one message, naming the file.
+  // A surface bent out of its plane (a shell) has no plane to make a slab
+  // of: its values stand at its points.
   const std::string bent = plane_mesh("bent.vtu", 2, false, 6, [](double, double) { return std::vector<double>(6, 1.0); }, 0.3);
-  try {
-    load_vtk_data({bent});
-    FAIL() << "read a bent surface as plane data";
-  } catch (const DataError& e) {
-    EXPECT_NE(std::string(e.what()).find("bent.vtu: its cells are 2-D (no volume) but do not lie in one plane"),
-              std::string::npos) << e.what();
-  }
+  const VtkData shell = load_vtk_data({bent});
+  EXPECT_FALSE(shell.plane_axis);
+  EXPECT_NE(shell.no_volume.find("cells are surfaces not in an axis plane"), std::string::npos) << shell.no_volume;
+  EXPECT_FALSE(shell.sites.positions.empty());
 }
 
 }  // namespace

@@ -334,17 +334,23 @@ TEST(VtkData, QuadraticCellsReproduceQuadraticFields) {
 // Image data turned by a Direction matrix: the grid is sampled in its own
 // frame (it once fell to a cell locator that found no cell in it, and a
 // scene showed the shell alone).
-TEST(VtkData, ATurnedImageIsSampledInItsOwnFrame) {
+// A uniform grid turned by `turn` about z, with the affine tensor field.
+vtkSmartPointer<vtkImageData> turned_image(double turn, const fs::path& path) {
   auto img = image(4);
-  const double turn = 30.0 * M_PI / 180.0;
   const double d[9] = {std::cos(turn), -std::sin(turn), 0, std::sin(turn), std::cos(turn), 0, 0, 0, 1};
   img->SetDirectionMatrix(d);
   add_point_tensors(img, linear_tensor);
-  const fs::path path = temp_dir() / "turned.vti";
   auto writer = vtkSmartPointer<vtkXMLImageDataWriter>::New();
   writer->SetFileName(path.c_str());
   writer->SetInputData(img);
-  ASSERT_EQ(writer->Write(), 1);
+  EXPECT_EQ(writer->Write(), 1);
+  return img;
+}
+
+TEST(VtkData, ATurnedImageIsSampledInItsOwnFrame) {
+  const double turn = 30.0 * M_PI / 180.0;
+  const fs::path path = temp_dir() / "turned.vti";
+  turned_image(turn, path);
   const VtkData data = load(path);
   ASSERT_TRUE(data.field);
   // Inside the turned grid, at points given in its own frame: the affine
@@ -372,6 +378,48 @@ TEST(VtkData, ATurnedImageIsSampledInItsOwnFrame) {
     const Vec3 p = origin + direction * Vec3(c & 1 ? extent.x() : 0, c & 2 ? extent.y() : 0, c & 4 ? extent.z() : 0);
     EXPECT_TRUE(box.contains(p) || (p - box.lo.cwiseMax(box.hi.cwiseMin(p))).norm() < 1e-12) << p.transpose();
   }
+}
+
+// glyphs.placement = "points": the values where they stand. A turned
+// image's nodes in its own frame, cell data at the cells' centres; every
+// stride-th one becomes a glyph of the tensor there.
+TEST(VtkData, SitesAreWhereTheValuesStand) {
+  const fs::path turned = temp_dir() / "turned_sites.vti";
+  const vtkSmartPointer<vtkImageData> img = turned_image(30.0 * M_PI / 180.0, turned);
+  VtkFileSpec spec{turned.string()};
+  EXPECT_TRUE(load_vtk_data(spec).sites.positions.empty());  // only when asked
+  spec.sites = true;
+  const VtkData nodes = load_vtk_data(spec);
+  ASSERT_EQ(nodes.sites.positions.size(), std::size_t(img->GetNumberOfPoints()));
+  for (std::size_t i = 0; i < nodes.sites.positions.size(); ++i) {
+    const Vec3& p = nodes.sites.positions[i];
+    EXPECT_TRUE(nodes.field->sample(p)) << p.transpose();  // in the turned grid, not beside it
+    EXPECT_LT(distance(nodes.sites.tensors[i], linear_tensor(p)), 1e-9) << p.transpose();
+  }
+
+  auto mesh = hex_mesh(2);
+  auto cells = tensor_array("cellstress", 9, mesh->GetNumberOfCells());
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c) set_tensor(cells, c, (1.0 + double(c)) * Sym3{1, 2, 3, 0, 0, 0});
+  mesh->GetCellData()->SetTensors(cells);
+  GlyphPipelineSpec glyphs;
+  glyphs.data.kind = DataKind::vtk_file;
+  glyphs.data.file.path = write_vtu(mesh, "cell_sites.vtu").string();
+  glyphs.placement = SourcePlacement::at_data_points;
+  glyphs.color = ColorScalar::lambda1;
+  const GlyphScene all = build_glyph_scene(glyphs, 1.0);
+  ASSERT_EQ(all.sources.size(), std::size_t(mesh->GetNumberOfCells()));
+  EXPECT_EQ(all.values.stride, 1);
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c) {
+    const GlyphSource& g = all.sources[std::size_t(c)];
+    EXPECT_NEAR(g.scalar, 3.0 * (1.0 + double(c)), 1e-9);  // λ1 of the cell's own tensor
+    double b[6];
+    mesh->GetCellBounds(c, b);
+    EXPECT_TRUE(Box3({Vec3(b[0], b[2], b[4]), Vec3(b[1], b[3], b[5])}).contains(g.centre)) << c;
+  }
+  glyphs.stride = 3;
+  const GlyphScene every_third = build_glyph_scene(glyphs, 1.0);
+  ASSERT_EQ(every_third.sources.size(), std::size_t((mesh->GetNumberOfCells() + 2) / 3));
+  EXPECT_EQ(every_third.sources[1].centre, all.sources[3].centre);
 }
 
 TEST(VtkData, SixAndNineComponentsGiveTheSameEigensystem) {

@@ -49,8 +49,8 @@ TEST(SceneKeys, EveryKeyIsDocumentedAndTyped) {
   for (const KeySchema& key : scene_keys()) {
     EXPECT_FALSE(key.doc.empty()) << key.path;
     EXPECT_FALSE(type_text(key).empty()) << key.path;
-    if (key.type == KeyType::choice) EXPECT_FALSE(key.choices.empty()) << key.path;
-    if (key.data_length()) EXPECT_GT(key.range.lo, 0.0 - 1e-300) << key.path << ": a length is not negative";
+    if (key.type == KeyType::choice) { EXPECT_FALSE(key.choices.empty()) << key.path; }
+    if (key.data_length()) { EXPECT_GT(key.range.lo, 0.0 - 1e-300) << key.path << ": a length is not negative"; }
     EXPECT_EQ(find_scene_key(key.path), &key);
   }
 }

@@ -112,6 +112,8 @@ def write_xml(ds, path):
         w = vtk.vtkXMLImageDataWriter()
     elif isinstance(ds, vtk.vtkMultiBlockDataSet):
         w = vtk.vtkXMLMultiBlockDataWriter()  # the blocks in a folder beside it
+    elif isinstance(ds, vtk.vtkPolyData):
+        w = vtk.vtkXMLPolyDataWriter()
     else:
         w = vtk.vtkXMLUnstructuredGridWriter()
     w.SetFileName(path)
