@@ -6,8 +6,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <fstream>
 
 namespace hsb {
 
@@ -23,6 +25,14 @@ std::string unreadable_input(const std::string& path) {
   if (fd < 0) return std::string("cannot be read: ") + std::strerror(errno);
   close(fd);
   return "";
+}
+
+std::string file_head(const std::string& path, std::size_t bytes) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(bytes, '\0');
+  in.read(head.data(), std::streamsize(head.size()));
+  head.resize(std::size_t(std::max<std::streamsize>(0, in.gcount())));
+  return head;
 }
 
 std::string file_named_in(const std::string& from, const std::string& named) {

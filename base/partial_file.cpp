@@ -139,4 +139,9 @@ void PartialFile::commit() {
   done_ = true;
 }
 
+std::string scratch_path(const std::string& what, const std::string& extension) {
+  return (std::filesystem::temp_directory_path() / ("hsb-" + what + "-" + std::to_string(::getpid()) + extension))
+      .string();
+}
+
 }  // namespace hsb

@@ -44,6 +44,11 @@ class PartialFile {
   bool done_ = false;
 };
 
+// A path for this process's scratch file in the temporary folder
+// ("hsb-WHAT-PID.EXT"), to write through a PartialFile that is never
+// committed: the file is gone when that ends, or on a signal.
+std::string scratch_path(const std::string& what, const std::string& extension);
+
 // Removes every registered temporary file. Safe to call from a signal
 // handler: it only reads fixed buffers and calls unlink().
 void remove_partial_files();

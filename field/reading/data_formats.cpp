@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <fstream>
 
+#include "base/input_file.h"
 #include "field/reading/format_reader.h"
 
 namespace hsb {
@@ -89,15 +89,6 @@ bool ends_with(const std::string& text, const std::string& end) {
   return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
 }
 
-// The first bytes of a file ("" when it cannot be read).
-std::string head_of(const std::string& path, std::size_t bytes) {
-  std::ifstream in(path, std::ios::binary);
-  std::string head(bytes, '\0');
-  in.read(head.data(), std::streamsize(head.size()));
-  head.resize(std::size_t(std::max<std::streamsize>(0, in.gcount())));
-  return head;
-}
-
 }  // namespace
 
 const std::vector<DataFormat>& data_formats() {
@@ -116,7 +107,7 @@ const DataFormat* format_by_extension(const std::string& path) {
 }
 
 const DataFormat* format_by_content(const std::string& path) {
-  const std::string head = head_of(path, 1024);
+  const std::string head = file_head(path, 1024);
   if (head.empty()) return nullptr;
   for (const DataFormat& f : data_formats())
     if (f.probe && f.probe(head)) return &f;

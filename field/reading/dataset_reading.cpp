@@ -13,8 +13,6 @@
 #include <vtkXMLDataSetWriter.h>
 #include <vtkXMLGenericDataObjectReader.h>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -125,7 +123,7 @@ void check_cells(vtkDataSet* data, const std::string& path) {
 // in an axis plane are made a slab first: field/reading/plane_data.h).
 // Data without 3-D cells (a point cloud, lines, a curved shell) has no
 // volume to trace in but still a value at each point: that is recorded
-// (volume_record), and its picture is a glyph at each point. 3-D cells
+// (no_volume_reason), and its picture is a glyph at each point. 3-D cells
 // that are all flat are a broken mesh, an error.
 void check_volume(vtkDataSet* data, const std::string& path) {
   const vtkIdType cells = data->GetNumberOfCells();
@@ -208,8 +206,7 @@ void refuse_failed_child(const ChildResult& child, const std::string& path, cons
 // `work` throws (its message, passed back through a file). `work` leaves
 // its result in files of its own.
 void run_on_file_in_child(const std::string& path, const char* what, const std::function<void()>& work) {
-  const PartialFile failure(
-      (std::filesystem::temp_directory_path() / ("hsb-failure-" + std::to_string(::getpid()) + ".txt")).string());
+  const PartialFile failure(scratch_path("failure", ".txt"));
   const ChildResult child = run_in_child(
       [&] {
         try {
@@ -235,8 +232,7 @@ void run_on_file_in_child(const std::string& path, const char* what, const std::
 // plain VTK XML file of VTK's own making, which this process then reads.
 vtkSmartPointer<vtkDataSet> read_in_child(const std::string& path, const FormatReader& reader,
                                           const ReadRequest& request, const VtkSession& vtk) {
-  const PartialFile clean(
-      (std::filesystem::temp_directory_path() / ("hsb-read-" + std::to_string(::getpid()) + ".vtkxml")).string());
+  const PartialFile clean(scratch_path("read", ".vtkxml"));
   run_on_file_in_child(path, "reader", [&] {
     const vtkSmartPointer<vtkDataSet> data = read_checked(path, reader, request, vtk);
     auto writer = vtkSmartPointer<vtkXMLDataSetWriter>::New();
@@ -260,8 +256,7 @@ vtkSmartPointer<vtkDataSet> read_in_child(const std::string& path, const FormatR
 // What `hook` says of the user's file `path`, worked out in a child
 // process like every parse of it, one line an answer.
 std::vector<std::string> lines_in_child(const std::string& path, const std::function<std::vector<std::string>()>& hook) {
-  const PartialFile said(
-      (std::filesystem::temp_directory_path() / ("hsb-said-" + std::to_string(::getpid()) + ".txt")).string());
+  const PartialFile said(scratch_path("said", ".txt"));
   run_on_file_in_child(path, "reader", [&] {
     std::ofstream out(said.path());
     for (const std::string& line : hook()) out << line << "\n";

@@ -26,9 +26,9 @@
 #include <vtk_exodusII.h>
 
 #include <algorithm>
-#include <fstream>
 #include <map>
 
+#include "base/input_file.h"
 #include "field/reading/block_merging.h"
 #include "field/reading/data_error.h"
 #include "field/reading/format_reader.h"
@@ -177,10 +177,7 @@ vtkSmartPointer<vtkDataObject> read_exodus(const std::string& path, int step) {
 // Exodus II is netCDF, classic or version 4 (HDF5 inside): a file of random
 // bytes gets a clear message before VTK's reader sees it.
 void check_exodus_header(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string head(8, '\0');
-  in.read(head.data(), std::streamsize(head.size()));
-  head.resize(std::size_t(std::max<std::streamsize>(0, in.gcount())));
+  const std::string head = file_head(path, 8);
   if (head.rfind("CDF", 0) != 0 && head.rfind("\x89HDF\r\n\x1a\n", 0) != 0)
     throw DataError(path + ": not an Exodus II file: it is neither netCDF (\"CDF\") nor HDF5 inside");
 }

@@ -351,12 +351,13 @@ vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path) {
       if (p.size() != 1 || !p[0]) h.fail(o, "expected one vector such as (0,0,0), found " + o->value);
       origin = *p[0];
     }
-  } else if (const HeaderField* f = h.find("spacings")) {
-    std::istringstream in(f->value);
+  } else if (const HeaderField* spacings = h.find("spacings")) {
+    std::istringstream in(spacings->value);
     std::vector<std::string> words{std::istream_iterator<std::string>(in), std::istream_iterator<std::string>()};
     for (int a = 0; a < 3 && words.size() == 4; ++a) {
       const double s = std::strtod(words[std::size_t(a + 1)].c_str(), nullptr);
-      if (!(s > 0) || !std::isfinite(s)) h.fail(f, "expected positive spacings for the space axes, found " + f->value);
+      if (!(s > 0) || !std::isfinite(s))
+        h.fail(spacings, "expected positive spacings for the space axes, found " + spacings->value);
       axes(a, a) = s;
     }
   }

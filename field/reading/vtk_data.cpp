@@ -213,7 +213,6 @@ ChosenArray choose_field_array(vtkDataSet* data, const VtkFileSpec& spec) {
   return chosen;
 }
 
-// The order the scene says the six components come in.
 // The order the six components of `chosen` come in: the one the file
 // records (then already VTK's: field/reading/component_arrays.h), else the
 // scene's, else the one its format implies, else VTK's.
@@ -399,10 +398,6 @@ TriangleMesh boundary_surface(vtkDataSet* data, const std::string& path) {
   return mesh;
 }
 
-}  // namespace
-
-namespace {
-
 // The scalar array `spec.color_array` for colouring: one component (a
 // vector's magnitude when it has three), and where its values stand.
 std::pair<std::vector<double>, ValueLocation> color_values(vtkDataSet* data, const VtkFileSpec& spec) {
@@ -448,18 +443,15 @@ std::vector<Vec3> site_positions(vtkDataSet* data, bool on_points) {
   return sites;
 }
 
-// The data's values where they stand, with the colour array's there.
-void fill_sites(vtkDataSet* data, const VtkFileSpec& spec, bool on_points, const ScalarField* color, VtkData& out) {
-  out.sites.positions = site_positions(data, on_points);
-  if (spec.color_array.empty()) return;
-  auto [values, where] = color_values(data, spec);
-  if ((where == ValueLocation::points) == on_points) {
-    out.sites.colors = std::move(values);
-    return;
-  }
-  // Colours stand elsewhere: sampled at the sites where there is volume.
-  for (const Vec3& p : out.sites.positions)
-    out.sites.colors.push_back(color ? color->sample(p).value_or(NAN) : NAN);
+// The colour array at the sites: its own values where they stand there
+// too, else sampled at each site where there is volume (NaN: none).
+std::vector<double> site_colors(const std::vector<Vec3>& sites, bool on_points, const std::vector<double>& values,
+                                ValueLocation where, const ScalarField* color) {
+  if ((where == ValueLocation::points) == on_points) return values;
+  std::vector<double> colors;
+  colors.reserve(sites.size());
+  for (const Vec3& p : sites) colors.push_back(color ? color->sample(p).value_or(NAN) : NAN);
+  return colors;
 }
 
 }  // namespace
@@ -523,11 +515,12 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
                                               chosen.on_points ? ValueLocation::points : ValueLocation::cells);
     }
   }
-  if (volume && !spec.color_array.empty()) {
+  if (sites) out.sites.positions = site_positions(data, chosen.on_points);
+  if (!spec.color_array.empty()) {
     auto [values, where] = color_values(data, spec);
-    out.color = std::make_unique<MeshField<double>>(mesh_locator(), std::move(values), where);
+    if (volume) out.color = std::make_unique<MeshField<double>>(mesh_locator(), values, where);
+    if (sites) out.sites.colors = site_colors(out.sites.positions, chosen.on_points, values, where, out.color.get());
   }
-  if (sites) fill_sites(data, spec, chosen.on_points, out.color.get(), out);
   if (data->GetNumberOfCells() > 0) out.boundary = boundary_surface(data, spec.path);  // a shell's own surface too
   if (const std::optional<PlaneOfData> plane = plane_of(data)) out.plane_axis = plane->axis;
   return out;

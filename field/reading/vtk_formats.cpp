@@ -7,11 +7,8 @@
 #include <vtkXMLDataParser.h>
 #include <vtkXMLGenericDataObjectReader.h>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iterator>
@@ -25,23 +22,15 @@
 namespace hsb {
 namespace {
 
-std::string head_of(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string head(256, '\0');
-  in.read(head.data(), std::streamsize(head.size()));
-  head.resize(std::size_t(std::max<std::streamsize>(0, in.gcount())));
-  return head;
-}
-
 // A file of random bytes, or of another format, gets a clear message
 // before VTK's readers see it.
 void check_legacy_header(const std::string& path) {
-  if (head_of(path).rfind("# vtk DataFile Version", 0) != 0)
+  if (file_head(path, 256).rfind("# vtk DataFile Version", 0) != 0)
     throw DataError(path + ": not a legacy VTK file: its first line is not \"# vtk DataFile Version x.y\"");
 }
 
 void check_xml_header(const std::string& path) {
-  const std::string head = head_of(path);
+  const std::string head = file_head(path, 256);
   std::size_t start = head.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;  // a UTF-8 byte-order mark
   start = head.find_first_not_of(" \t\r\n", start);
   if (start == std::string::npos || (head.compare(start, 5, "<?xml") != 0 && head.compare(start, 8, "<VTKFile") != 0))
@@ -99,8 +88,7 @@ vtkSmartPointer<vtkDataSet> as_data_set(vtkDataObject* read) { return vtkDataSet
 
 vtkSmartPointer<vtkDataSet> read_legacy(const std::string& path, const ReadRequest&, const VtkSession& vtk) {
   check_legacy_header(path);
-  const PartialFile renamed(
-      (std::filesystem::temp_directory_path() / ("hsb-types-" + std::to_string(::getpid()) + ".vtk")).string());
+  const PartialFile renamed(scratch_path("types", ".vtk"));
   auto reader = vtkSmartPointer<vtkDataSetReader>::New();
   reader->SetFileName(with_known_type_names(path, renamed.path()) ? renamed.path().c_str() : path.c_str());
   reader->ReadAllTensorsOn();

@@ -13,6 +13,7 @@
 
 #include "field/reading/vtk_data.h"
 #include "tests/temp_dir.h"
+#include "tests/vtk_written.h"
 
 namespace hsb {
 namespace {
@@ -40,12 +41,7 @@ vtkSmartPointer<vtkImageData> image() {
 }
 
 std::string write(vtkImageData* img, const std::string& name) {
-  const std::string path = (test_temp_dir("array_choice") / name).string();
-  auto writer = vtkSmartPointer<vtkXMLImageDataWriter>::New();
-  writer->SetInputData(img);
-  writer->SetFileName(path.c_str());
-  writer->Write();
-  return path;
+  return written_by<vtkXMLImageDataWriter>(img, test_temp_dir("array_choice") / name);
 }
 
 // The first eigenvalue-defining entry drawn at the middle, and the notes.

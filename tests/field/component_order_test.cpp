@@ -14,6 +14,7 @@
 #include "field/reading/component_order.h"
 #include "field/reading/vtk_data.h"
 #include "tests/temp_dir.h"
+#include "tests/vtk_written.h"
 
 namespace hsb {
 namespace {
@@ -32,12 +33,7 @@ std::string written_in(const ComponentOrder& order) {
   for (vtkIdType p = 0; p < img->GetNumberOfPoints(); ++p)
     for (int k = 0; k < 6; ++k) a->SetComponent(p, k, m(order.entries[std::size_t(k)][0], order.entries[std::size_t(k)][1]));
   img->GetPointData()->SetTensors(a);
-  const std::string path = (test_temp_dir("component_order") / (order.name + ".vti")).string();
-  auto writer = vtkSmartPointer<vtkXMLImageDataWriter>::New();
-  writer->SetInputData(img);
-  writer->SetFileName(path.c_str());
-  writer->Write();
-  return path;
+  return written_by<vtkXMLImageDataWriter>(img, test_temp_dir("component_order") / (order.name + ".vti"));
 }
 
 Sym3 read(const std::string& path, const std::string& components) {
@@ -82,11 +78,8 @@ TEST(ComponentOrder, SfepyOutputIsReadInSfepyOrderAndSaidSo) {
     if (on_points) img->GetPointData()->AddArray(marker);
     else img->GetCellData()->AddArray(marker);
   }
-  const std::string path = (test_temp_dir("component_order") / "sfepy_output.vti").string();
-  auto writer = vtkSmartPointer<vtkXMLImageDataWriter>::New();
-  writer->SetInputData(img);
-  writer->SetFileName(path.c_str());
-  writer->Write();
+  const std::string path =
+      written_by<vtkXMLImageDataWriter>(img, test_temp_dir("component_order") / "sfepy_output.vti");
   const VtkData data = load_vtk_data({path});
   EXPECT_EQ((data.field->sample(Vec3(1, 1, 1))->matrix() - distinct.matrix()).norm(), 0.0);
   ASSERT_EQ(data.warnings.size(), 1u);

@@ -26,6 +26,7 @@
 #include "field/reading/data_error.h"
 #include "field/reading/vtk_data.h"
 #include "tests/temp_dir.h"
+#include "tests/vtk_written.h"
 
 namespace hsb {
 namespace {
@@ -65,12 +66,7 @@ vtkSmartPointer<vtkUnstructuredGrid> tet_body(double scale = 1.0, double x0 = 0.
 }
 
 std::string write_vtu(vtkUnstructuredGrid* grid, const std::string& name) {
-  const std::string path = (test_temp_dir("composite") / name).string();
-  auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
-  writer->SetInputData(grid);
-  writer->SetFileName(path.c_str());
-  writer->Write();
-  return path;
+  return written_by<vtkXMLUnstructuredGridWriter>(grid, test_temp_dir("composite") / name);
 }
 
 void expect_linear_field(const VtkData& data, double scale = 1.0) {
@@ -134,11 +130,7 @@ TEST(CompositeData, BlocksReadAsOneBody) {
   blocks->SetNumberOfBlocks(2);
   blocks->SetBlock(0, tet_body(1.0, 0.0, 5));  // x ∈ [0, 1]
   blocks->SetBlock(1, tet_body(1.0, 1.0, 5));  // x ∈ [1, 2], sharing the plane x = 1
-  const std::string path = (test_temp_dir("composite") / "blocks.vtm").string();
-  auto writer = vtkSmartPointer<vtkXMLMultiBlockDataWriter>::New();
-  writer->SetInputData(blocks);
-  writer->SetFileName(path.c_str());
-  writer->Write();
+  const std::string path = written_by<vtkXMLMultiBlockDataWriter>(blocks, test_temp_dir("composite") / "blocks.vtm");
   const VtkData data = load_vtk_data({path});
   expect_linear_field(data);
   const VtkData one = load_vtk_data({write_vtu(body, "whole_for_blocks.vtu")});
@@ -154,11 +146,8 @@ TEST(CompositeData, OneBlockIsReadWhenTheSceneNamesIt) {
   blocks->SetBlock(1, tet_body(1.0, 1.0, 5));  // x ∈ [1, 2]
   blocks->GetMetaData(0u)->Set(vtkCompositeDataSet::NAME(), "left");
   blocks->GetMetaData(1u)->Set(vtkCompositeDataSet::NAME(), "right");
-  const std::string path = (test_temp_dir("composite") / "named_blocks.vtm").string();
-  auto writer = vtkSmartPointer<vtkXMLMultiBlockDataWriter>::New();
-  writer->SetInputData(blocks);
-  writer->SetFileName(path.c_str());
-  writer->Write();
+  const std::string path =
+      written_by<vtkXMLMultiBlockDataWriter>(blocks, test_temp_dir("composite") / "named_blocks.vtm");
   const Vec3 in_left(0.3, 0.4, 0.6), in_right(1.7, 0.2, 0.9);
 
   VtkFileSpec spec{path};
@@ -242,12 +231,7 @@ void split_into_components(vtkUnstructuredGrid* grid, const std::array<std::stri
 
 // `data` (a grid, or blocks of grids) written as Exodus II.
 std::string write_exodus(vtkDataObject* data, const std::string& file) {
-  const std::string path = (test_temp_dir("composite") / file).string();
-  auto writer = vtkSmartPointer<vtkExodusIIWriter>::New();
-  writer->SetInputData(data);
-  writer->SetFileName(path.c_str());
-  writer->Write();
-  return path;
+  return written_by<vtkExodusIIWriter>(data, test_temp_dir("composite") / file);
 }
 
 const std::array<std::string, 6> sierra_names{"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_zx"};

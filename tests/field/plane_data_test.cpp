@@ -21,6 +21,7 @@
 #include "field/reading/data_error.h"
 #include "field/reading/vtk_data.h"
 #include "tests/temp_dir.h"
+#include "tests/vtk_written.h"
 
 namespace hsb {
 namespace {
@@ -61,12 +62,7 @@ std::string plane_mesh(const std::string& name, int axis, bool triangles, int co
       }
     }
   grid->GetPointData()->AddArray(values);
-  const std::string path = (test_temp_dir("plane_data") / name).string();
-  auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
-  writer->SetInputData(grid);
-  writer->SetFileName(path.c_str());
-  writer->Write();
-  return path;
+  return written_by<vtkXMLUnstructuredGridWriter>(grid, test_temp_dir("plane_data") / name);
 }
 
 // Linear in-plane stresses: exact under linear and bilinear interpolation
@@ -110,11 +106,7 @@ TEST(PlaneData, PolygonsInAVtpFileAreAPlaneAndAPointCloudIsAGlyphAtEachPoint) {
   auto surface = vtkSmartPointer<vtkGeometryFilter>::New();
   surface->SetInputConnection(reader->GetOutputPort());
   surface->Update();
-  const std::string vtp = (test_temp_dir("plane_data") / "plate.vtp").string();
-  auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
-  writer->SetInputData(surface->GetOutput());
-  writer->SetFileName(vtp.c_str());
-  writer->Write();
+  const std::string vtp = written_by<vtkXMLPolyDataWriter>(surface->GetOutput(), test_temp_dir("plane_data") / "plate.vtp");
   const VtkData data = load_vtk_data({vtp});
   ASSERT_EQ(data.plane_axis, 2);
   ASSERT_TRUE(data.field->sample(Vec3(1.1, 0.7, 0.5)));
@@ -125,10 +117,7 @@ TEST(PlaneData, PolygonsInAVtpFileAreAPlaneAndAPointCloudIsAGlyphAtEachPoint) {
   for (vtkIdType i = 0; i < cloud->GetNumberOfPoints(); ++i) vertices->InsertNextCell(1, &i);
   cloud->SetVerts(vertices);
   cloud->GetPointData()->AddArray(surface->GetOutput()->GetPointData()->GetArray("stress"));
-  const std::string points = (test_temp_dir("plane_data") / "cloud.vtp").string();
-  writer->SetInputData(cloud);
-  writer->SetFileName(points.c_str());
-  writer->Write();
+  const std::string points = written_by<vtkXMLPolyDataWriter>(cloud, test_temp_dir("plane_data") / "cloud.vtp");
   const VtkData read = load_vtk_data({points});
   EXPECT_NE(read.no_volume.find("its " + std::to_string(cloud->GetNumberOfPoints()) + " cells are points or lines"),
             std::string::npos)

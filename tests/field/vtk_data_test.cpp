@@ -28,6 +28,7 @@
 #include "field/tensor/eigensystem.h"
 #include "field/tracing/trajectory.h"
 #include "tests/temp_dir.h"
+#include "tests/vtk_written.h"
 
 namespace hsb {
 namespace {
@@ -148,21 +149,11 @@ vtkSmartPointer<vtkStructuredGrid> structured(int n) {
 
 // Writes `data` as an XML unstructured grid in the test folder.
 fs::path write_vtu(vtkUnstructuredGrid* data, const std::string& name) {
-  const fs::path path = temp_dir() / name;
-  auto writer = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
-  writer->SetInputData(data);
-  writer->SetFileName(path.string().c_str());
-  EXPECT_EQ(writer->Write(), 1) << path;
-  return path;
+  return written_by<vtkXMLUnstructuredGridWriter>(data, temp_dir() / name);
 }
 
 fs::path write_vti(vtkImageData* data, const std::string& name) {
-  const fs::path path = temp_dir() / name;
-  auto writer = vtkSmartPointer<vtkXMLImageDataWriter>::New();
-  writer->SetInputData(data);
-  writer->SetFileName(path.string().c_str());
-  EXPECT_EQ(writer->Write(), 1) << path;
-  return path;
+  return written_by<vtkXMLImageDataWriter>(data, temp_dir() / name);
 }
 
 VtkData load(const fs::path& path, const std::string& array = "", CellTensors cells = CellTensors::constant,
@@ -340,10 +331,7 @@ vtkSmartPointer<vtkImageData> turned_image(double turn, const fs::path& path) {
   const double d[9] = {std::cos(turn), -std::sin(turn), 0, std::sin(turn), std::cos(turn), 0, 0, 0, 1};
   img->SetDirectionMatrix(d);
   add_point_tensors(img, linear_tensor);
-  auto writer = vtkSmartPointer<vtkXMLImageDataWriter>::New();
-  writer->SetFileName(path.c_str());
-  writer->SetInputData(img);
-  EXPECT_EQ(writer->Write(), 1);
+  written_by<vtkXMLImageDataWriter>(img, path);
   return img;
 }
 
