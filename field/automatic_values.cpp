@@ -16,6 +16,11 @@ constexpr double kFixedGap = 0.3;
 constexpr double kReferencePercentile = 0.9;
 constexpr double kCeilingOverReference = 3.0;
 constexpr double kFloorUnderReference = 1.0 / 20.0;
+// Evenly spaced seeding: the body's measure over the separation's cube
+// (square, length).
+constexpr double kLinesAcrossVolume = 150.0;
+constexpr double kLinesAcrossArea = 200.0;
+constexpr double kSeedsAlongLine = 20.0;
 
 bool maps_magnitude(RadiusMapping mapping) {
   return mapping == RadiusMapping::linear || mapping == RadiusMapping::sqrt;
@@ -32,11 +37,29 @@ double unit_scale_largest_radius(const Vec3& eigenvalues, RadiusMapping mapping)
 
 }  // namespace
 
-double automatic_step(const Box3& domain) { return domain.diagonal() / 400.0; }
-double automatic_max_length(const Box3& domain) { return 2.0 * domain.diagonal(); }
-double automatic_spacing(const Box3& domain, RadiusMapping mapping) {
-  return domain.diagonal() / (maps_magnitude(mapping) ? 40.0 : 25.0);
+double automatic_step(const Box3& domain, std::optional<double> separation) {
+  const double step = domain.diagonal() / 400.0;
+  return separation ? std::min(step, *separation / 10.0) : step;
 }
+double automatic_max_length(const Box3& domain) { return 2.0 * domain.diagonal(); }
+double automatic_spacing(const Box3& domain, RadiusMapping mapping, std::optional<double> separation) {
+  const bool by_magnitude = maps_magnitude(mapping);
+  if (separation) {
+    const double gap = line_gap(*separation);
+    return by_magnitude ? 1.25 * kMagnitudeGap * gap : 4.0 * kFixedGap * gap;
+  }
+  return domain.diagonal() / (by_magnitude ? 40.0 : 25.0);
+}
+
+double automatic_separation(const BodyLattice& body) {
+  switch (body.dimensions) {
+    case 3: return std::cbrt(body.measure / kLinesAcrossVolume);
+    case 2: return std::sqrt(body.measure / kLinesAcrossArea);
+    default: return body.measure / kSeedsAlongLine;
+  }
+}
+
+double line_gap(double separation) { return 2.0 / 3.0 * separation; }
 
 SeedSpec automatic_seeds(const Box3& domain, std::optional<int> plane_axis) {
   Eigen::Index longest = 0;

@@ -10,22 +10,37 @@
 #include <vector>
 
 #include "field/glyph_pipeline.h"
+#include "field/tracing/body_lattice.h"
 
 namespace hsb {
 
-// RK4 step: D/400.
-double automatic_step(const Box3& domain);
+// RK4 step: D/400, and no more than a tenth of the separation between
+// evenly spaced trajectories (`separation`, when they are).
+double automatic_step(const Box3& domain, std::optional<double> separation = std::nullopt);
 // Trajectory length in each direction from the seed: 2 D (to the boundary).
 double automatic_max_length(const Box3& domain);
 // Arc length between sources: D/40 for the magnitude mappings, where the
 // glyph sizes vary and large ones blend; D/25 for the fixed-size ones, so
 // their glyphs stand apart as discrete ellipsoids until the spacing is
 // set below about D/40.
-double automatic_spacing(const Box3& domain, RadiusMapping mapping);
+// With evenly spaced trajectories `separation` apart, the same in
+// proportion to their glyphs (line_gap): 1.25 and 4 reference glyphs.
+double automatic_spacing(const Box3& domain, RadiusMapping mapping, std::optional<double> separation = std::nullopt);
+// Evenly spaced seeding's separation d_sep, from the body's measure M
+// (body_lattice.h; volume in 3-D, area in 2-D): d_sep = (M/150)^(1/3) in
+// 3-D, (M/200)^(1/2) in 2-D, M/20 along a line. About 150 lines
+// cross a cube (as many cross a thin plate's width as fit 20 across),
+// several cross a slender beam's depth, and ~14 a square 2-D result.
+double automatic_separation(const BodyLattice& body);
+// The room a glyph on one of several lines `separation` apart has, as the
+// `gap` automatic_glyph_mapping takes: ⅔ d_sep, so that neighbouring lines'
+// reference glyphs (0.3 d_sep) leave 0.4 d_sep of space between them.
+double line_gap(double separation);
 // A 5×5 grid on the cross-section through the middle of the bounding box,
 // across its longest axis (in bounds fractions): trajectories along the
 // body of a bar, beam or rail. For a 2-D result (`plane_axis`), a 5×5
 // grid over its plane, in the middle of the slab's thickness.
+// (seeds.strategy = "grid" without a grid; the default is "even").
 SeedSpec automatic_seeds(const Box3& domain, std::optional<int> plane_axis = std::nullopt);
 
 // Glyphs at the data's points (glyphs.placement = "points"): every

@@ -14,6 +14,8 @@
 #include "field/reading/data_error.h"
 #include "field/sampling/mesh_field.h"
 #include "field/sampling/uniform_grid.h"
+#include "field/tensor/eigensystem.h"
+#include "field/tracing/even_seeding.h"
 #include "field/tracing/seeding.h"
 
 namespace hsb {
@@ -101,19 +103,30 @@ std::vector<Vec3> all_seeds(const SeedSpec& spec, const Box3& bounds) {
 
 // The field-side values that depend on the data set's size only (and, for
 // a flow, its largest speed).
-GlyphValues resolve_lengths(const GlyphPipelineSpec& spec, const Box3& domain, const LoadedField& loaded) {
+// `separation`: evenly spaced seeding's, when it applies.
+GlyphValues resolve_lengths(const GlyphPipelineSpec& spec, const Box3& domain, const LoadedField& loaded,
+                            std::optional<double> separation) {
   GlyphValues v;
-  v.seeds = spec.seeds.automatic() ? automatic_seeds(domain, loaded.plane_axis) : spec.seeds;
+  v.seeds = spec.seeds;
+  v.seeds.strategy = spec.seeds.resolved_strategy();
+  if (*v.seeds.strategy == SeedStrategy::grid && v.seeds.grids.empty() && v.seeds.points.empty()) {
+    v.seeds = automatic_seeds(domain, loaded.plane_axis);
+    v.seeds.strategy = SeedStrategy::grid;
+  }
+  if (separation) {
+    v.seeds.separation = separation;
+    v.seeds.importance = spec.seeds.importance.value_or(loaded.vectors == nullptr);
+  }
   TrajectoryOptions& t = v.trajectory;
   t.family = spec.trajectory.family;
-  t.step = spec.trajectory.step.value_or(automatic_step(domain));
+  t.step = spec.trajectory.step.value_or(automatic_step(domain, separation));
   t.max_length = spec.trajectory.max_length.value_or(automatic_max_length(domain));
   t.degeneracy_tolerance = spec.trajectory.degeneracy_tolerance;
   t.min_magnitude = spec.trajectory.min_magnitude.value_or(loaded.vectors ? 1e-3 * loaded.max_speed : 0.0);
   t.max_steps = spec.trajectory.max_steps;
   t.direction = spec.trajectory.direction;
   t.signed_directions = loaded.vectors != nullptr;
-  v.spacing = spec.spacing.value_or(automatic_spacing(domain, spec.size.mapping));
+  v.spacing = spec.spacing.value_or(automatic_spacing(domain, spec.size.mapping, separation));
   return v;
 }
 
@@ -125,6 +138,7 @@ const char* stop_name(StopReason r) {
     case StopReason::low_magnitude: return "trajectories.min_magnitude (or a stagnation point of a flow)";
     case StopReason::max_steps: return "trajectories.max_steps";
     case StopReason::closed: return "its own start (a closed curve)";
+    case StopReason::too_close: return "another trajectory (seeds.separation)";
   }
   return "?";
 }
@@ -133,6 +147,10 @@ const char* stop_name(StopReason r) {
 void warn_about_the_result(GlyphScene& scene, std::size_t seeds) {
   if (scene.sources.empty() && scene.placement == SourcePlacement::at_data_points) {
     scene.warnings.push_back("no glyph sources: no data point (of those glyphs.stride keeps) has a value there");
+    return;
+  }
+  if (scene.sources.empty() && seeds == 0) {
+    scene.warnings.push_back("no glyph sources: no seed lies inside the data set where it can be sampled");
     return;
   }
   if (scene.sources.empty()) {
@@ -146,7 +164,7 @@ void warn_about_the_result(GlyphScene& scene, std::size_t seeds) {
                                     [&](const Trajectory& t) { return t.length() > step; });
   if (any_long) return;
   // Say where they stopped: the most common reason is the one to act on.
-  std::array<int, 6> reasons{};
+  std::array<int, 7> reasons{};
   for (const Trajectory& t : scene.trajectories) {
     ++reasons[std::size_t(t.backward_stop)];
     ++reasons[std::size_t(t.forward_stop)];
@@ -162,11 +180,23 @@ void warn_about_the_result(GlyphScene& scene, std::size_t seeds) {
 
 namespace {
 
-// The colour scalar, resolved: λ3 for tensors and the speed for a flow by
-// default; one that the data cannot give is an error.
+// The eigenvalue of the family traced: a major trajectory shows λ1 along
+// it, the stress it carries.
+ColorScalar family_eigenvalue(EigenFamily family) {
+  switch (family) {
+    case EigenFamily::major: return ColorScalar::lambda1;
+    case EigenFamily::medium: return ColorScalar::lambda2;
+    case EigenFamily::minor: return ColorScalar::lambda3;
+  }
+  return ColorScalar::lambda1;
+}
+
+// The colour scalar, resolved: the traced family's eigenvalue for tensors
+// and the speed for a flow by default; one that the data cannot give is
+// an error.
 ColorScalar resolve_color(const GlyphPipelineSpec& spec, const LoadedField& loaded) {
   const bool flow = loaded.vectors != nullptr;
-  const ColorScalar c = spec.color.value_or(flow ? ColorScalar::speed : ColorScalar::lambda3);
+  const ColorScalar c = spec.color.value_or(flow ? ColorScalar::speed : family_eigenvalue(spec.trajectory.family));
   const std::string& file = spec.data.file.path;
   const bool eigen = c == ColorScalar::lambda1 || c == ColorScalar::lambda2 || c == ColorScalar::lambda3 ||
                      c == ColorScalar::mean || c == ColorScalar::von_mises;
@@ -251,6 +281,41 @@ GlyphScene given_sources(const GlyphPipelineSpec& spec, double glyph_extent) {
 
 }  // namespace
 
+namespace {
+
+// Evenly spaced trajectories (even_seeding.h) through the body; the seeds
+// taken are recorded in the values, in the frame the scene gives seeds in.
+EvenTrajectories trace_evenly(GlyphScene& scene, const BodyLattice& body, const MagnitudeSampler& magnitude,
+                              const TensorField* tensors, const VectorField* flow) {
+  GlyphValues& values = scene.values;
+  EvenSeedingOptions options;
+  options.separation = *values.seeds.separation;
+  options.importance = *values.seeds.importance;
+  if (scene.plane_axis) options.plane_normal = Vec3::Unit(*scene.plane_axis);
+  TrajectoryOptions trajectory = values.trajectory;
+  const DirectionSampler direction = [&](const Vec3& x) {
+    return flow ? flow_direction(*flow, x, trajectory) : eigen_direction(*tensors, x, trajectory);
+  };
+  if (flow) trajectory.signed_directions = true;
+  const std::vector<Vec3> given = all_seeds(values.seeds, scene.domain);
+  EvenTrajectories lines = evenly_spaced_trajectories(direction, magnitude, given, body, trajectory, options);
+  values.reference_magnitude = lines.reference_magnitude;
+  const Box3& b = scene.domain;
+  values.seeds.points = lines.seeds;
+  values.seeds.grids.clear();
+  if (values.seeds.frame == SeedFrame::bounds)
+    for (Vec3& p : values.seeds.points) p = (p - b.lo).cwiseQuotient(b.size().cwiseMax(Vec3::Constant(1e-300)));
+  if (lines.reached_max_lines) {
+    std::ostringstream text;
+    text << "evenly spaced seeding stopped at " << options.max_lines << " trajectories (seeds.separation "
+         << options.separation << "): parts of the body may have none; raise seeds.separation";
+    scene.warnings.push_back(text.str());
+  }
+  return lines;
+}
+
+}  // namespace
+
 GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
                              const std::function<void(const Box3& domain)>& with_domain) {
   if (spec.placement == SourcePlacement::curve || spec.placement == SourcePlacement::list) {
@@ -274,11 +339,34 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   scene.plane_axis = loaded.plane_axis;
   scene.warnings = std::move(loaded.warnings);
   scene.placement = resolved_placement(spec, loaded, scene.warnings);
-  scene.values = resolve_lengths(spec, scene.domain, loaded);
+  // Evenly spaced seeding measures the body first: its separation sets
+  // the step, the spacing and the glyph size.
+  const bool even = scene.placement != SourcePlacement::at_data_points &&
+                    spec.seeds.resolved_strategy() == SeedStrategy::even;
+  const MagnitudeSampler magnitude = [&](const Vec3& x) -> std::optional<double> {
+    if (flow) {
+      const std::optional<Vec3> v = flow->sample(x);
+      return v ? std::optional<double>(v->norm()) : std::nullopt;
+    }
+    const std::optional<Sym3> t = tensors->sample(x);
+    return t ? std::optional<double>(decompose(*t).values.cwiseAbs().maxCoeff()) : std::nullopt;
+  };
+  BodyLattice body;
+  std::optional<double> separation;
+  if (even) {
+    body = lattice_in_body(scene.domain, magnitude, scene.plane_axis);
+    separation = spec.seeds.separation.value_or(automatic_separation(body));
+    if (!(*separation > 0.0)) separation = scene.domain.diagonal() / 10.0;  // no body: nothing will be found anyway
+  }
+  scene.values = resolve_lengths(spec, scene.domain, loaded, separation);
   if (data.kind == DataKind::point_load) scene.values.singular_radius = data.point_load.singular_radius;
   const GlyphValues& values = scene.values;
   std::vector<Vec3> seeds;
-  if (scene.placement != SourcePlacement::at_data_points) {
+  if (even) {
+    EvenTrajectories lines = trace_evenly(scene, body, magnitude, tensors, flow);
+    seeds = std::move(lines.seeds);
+    scene.trajectories = std::move(lines.trajectories);
+  } else if (scene.placement != SourcePlacement::at_data_points) {
     check_seed_and_trajectory_memory(values, scene.placement);
     seeds = all_seeds(values.seeds, scene.domain);
   }
@@ -302,7 +390,7 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
     return source;
   };
 
-  std::optional<double> gap;  // between glyphs at data points
+  std::optional<double> gap;  // between glyphs at data points, or lines evenly spaced
   if (scene.placement == SourcePlacement::at_data_points) {
     const std::size_t sites = loaded.sites.positions.size();
     if (data.kind != DataKind::vtk_file)
@@ -316,17 +404,23 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
     scene.sources = sources_at_sites(loaded.sites, std::size_t(scene.values.stride), color);
     gap = site_gap(scene.domain, shown);
   } else if (scene.placement == SourcePlacement::at_seeds) {
+    scene.trajectories.clear();  // even seeding's lines only chose the seeds
     scene.memory_estimate = resident_bytes() + double(seeds.size()) * kBytesPerSource;
     for (const Vec3& seed : seeds)
       if (std::optional<GlyphSource> s = make(seed)) scene.sources.push_back(std::move(*s));
+    if (even) gap = line_gap(*separation);
   } else {
     // Each seed writes only its own slots, and the slots are concatenated in
     // seed order afterwards, so the result is independent of scheduling.
-    scene.trajectories.resize(seeds.size());
-    tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t i) {
-      scene.trajectories[i] = flow ? trace_streamline(*flow, seeds[i], values.trajectory)
-                                   : trace_trajectory(*tensors, seeds[i], values.trajectory);
-    });
+    if (!even) {
+      scene.trajectories.resize(seeds.size());
+      tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t i) {
+        scene.trajectories[i] = flow ? trace_streamline(*flow, seeds[i], values.trajectory)
+                                     : trace_trajectory(*tensors, seeds[i], values.trajectory);
+      });
+    } else {
+      gap = line_gap(*separation);
+    }
     double count = 0.0;
     for (const Trajectory& t : scene.trajectories) count += source_count(t, values.spacing);
     std::ostringstream what;

@@ -52,13 +52,31 @@ enum class SeedFrame {
            // (1,1,1) its high corner, so a scene fits any data set
 };
 
-// Neither points nor grids: automatic.
+// How seeds are chosen.
+enum class SeedStrategy {
+  even,    // evenly spaced trajectories filling the body (field/tracing/even_seeding.h);
+           // `points`, if any, are taken first
+  grid,    // the `grids` (automatic: a 5×5 grid across the body's middle)
+  points,  // the `points` and `grids` as given
+};
+
 struct SeedSpec {
+  // Automatic: even, unless points or grids are given (then those alone).
+  std::optional<SeedStrategy> strategy;
   std::vector<Vec3> points;
   std::vector<SeedGridSpec> grids;
   SeedFrame frame = SeedFrame::world;
+  // even: the separation d_sep between trajectories (automatic: from the
+  // body's size), and whether it follows the magnitude (automatic: for
+  // tensors, not for a flow).
+  std::optional<double> separation;
+  std::optional<bool> importance;
 
-  bool automatic() const { return points.empty() && grids.empty(); }
+  bool automatic() const { return !strategy && points.empty() && grids.empty(); }
+  SeedStrategy resolved_strategy() const {
+    if (strategy) return *strategy;
+    return points.empty() && grids.empty() ? SeedStrategy::even : SeedStrategy::points;
+  }
 };
 
 // The scene's [trajectories]; what it leaves out is automatic.
@@ -98,7 +116,8 @@ struct GlyphPipelineSpec {
   std::optional<double> spacing;  // arc length between sources
   std::optional<int> stride;      // placement points: every stride-th data point
   GlyphSizeSpec size;
-  // Automatic: λ3 (the paper's figures) for tensors, the speed for a flow.
+  // Automatic: the traced family's eigenvalue (major: λ1) for tensors, the
+  // speed for a flow.
   // ColorScalar::array colours by data.file.color_array.
   std::optional<ColorScalar> color;
   double stretch = 1.0;  // streamballs: the first radius (along the flow) times this
@@ -112,7 +131,11 @@ struct GlyphPipelineSpec {
 // Every field-side value the pipeline used, automatic ones resolved.
 struct GlyphValues {
   std::optional<double> singular_radius;  // the point load's; none for files
+  // Resolved: the strategy is set; for even seeding, the separation, the
+  // importance and the seeds taken (as points, in the frame given), so
+  // they can be shown and pinned.
   SeedSpec seeds;
+  double reference_magnitude = 0.0;  // even seeding's median magnitude
   TrajectoryOptions trajectory;
   double spacing = 0.0;
   int stride = 1;  // placement points

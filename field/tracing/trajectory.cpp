@@ -32,6 +32,7 @@ DirectionSample eigen_direction(const TensorField& field, const Vec3& x,
   const Eigensystem es = decompose(*s);
   const int k = static_cast<int>(options.family);
   const Vec3& l = es.values;
+  result.magnitude = l.cwiseAbs().maxCoeff();
   // The followed eigenvector is only defined while its eigenvalue is
   // separated from its neighbours in the ordering; λ1 ≥ λ2 ≥ λ3, so the
   // nearest other eigenvalue is always an adjacent one.
@@ -54,6 +55,7 @@ DirectionSample flow_direction(const VectorField& field, const Vec3& x, const Tr
   const std::optional<Vec3> v = field.sample(x);
   if (!v) return result;  // stop: boundary
   const double speed = v->norm();
+  result.magnitude = speed;
   if (!(speed > 0.0) || speed < options.min_magnitude) {
     result.stop = StopReason::low_magnitude;
     return result;

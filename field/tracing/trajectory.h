@@ -16,7 +16,9 @@ namespace hsb {
 enum class EigenFamily { major = 0, medium = 1, minor = 2 };
 
 // Why one end of a trajectory stopped.
-enum class StopReason { boundary, max_length, degenerate, low_magnitude, max_steps, closed };
+// too_close: evenly spaced seeding stopped it beside another trajectory
+// (or its own earlier part).
+enum class StopReason { boundary, max_length, degenerate, low_magnitude, max_steps, closed, too_close };
 
 // Which way from the seed a curve is traced.
 enum class TraceDirection { both, forward, backward };
@@ -52,6 +54,9 @@ struct DirectionSample {
   bool ok = false;
   Vec3 direction = Vec3::Zero();
   StopReason stop = StopReason::boundary;
+  // How strong the field is here (the largest |λ|, or a flow's speed):
+  // evenly spaced seeding draws lines closer where it is large.
+  double magnitude = 0.0;
 };
 using DirectionSampler = std::function<DirectionSample(const Vec3&)>;
 

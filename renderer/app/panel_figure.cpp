@@ -47,18 +47,20 @@ ColorScale shared_scale(const std::vector<std::unique_ptr<PreparedScene>>& panel
   const bool all_given = std::all_of(panels.begin(), panels.end(), [&](const auto& p) {
     return p->spec.color.range && *p->spec.color.range == *first.spec.color.range;
   });
-  if (all_given) return first.scale;
   std::vector<double> values;
   for (const auto& p : panels)
     for (const GlyphSource& s : p->glyphs.sources) values.push_back(s.scalar);
   const ColorSpec& c = first.spec.color;
-  return auto_scale(*first.scale.map, values, c.symmetric.value_or(first.scale.map->diverging), c.log);
+  ColorScale scale = all_given ? first.scale
+                               : auto_scale(*first.scale.map, values, c.symmetric.value_or(first.scale.map->diverging), c.log);
+  record_extremes(scale, values);
+  return scale;
 }
 
 bool share_colour_bar(const std::vector<std::unique_ptr<PreparedScene>>& panels) {
   const PreparedScene& first = *panels.front();
   return std::all_of(panels.begin(), panels.end(), [&](const auto& p) {
-    return p->glyphs.color == first.glyphs.color && p->spec.color.map == first.spec.color.map &&
+    return p->glyphs.color == first.glyphs.color && p->scale.map == first.scale.map &&
            p->spec.color.log == first.spec.color.log &&
            p->spec.pipeline.data.file.color_array == first.spec.pipeline.data.file.color_array &&
            p->spec.color.range.has_value() == first.spec.color.range.has_value();

@@ -26,8 +26,8 @@ std::string pinned_scene_toml(const PreparedScene& p) {
   const auto pinned = [&](std::string_view key) {
     return std::find(automatic.begin(), automatic.end(), key) != automatic.end();
   };
-  // An automatic grid of seeds is in the frame it was made in.
-  if (pinned("seeds.grid")) assign_at_path(root, "seeds.frame", *p.resolved.at_path("seeds.frame").value<std::string>());
+  // Automatic seeds are in the frame they were made in.
+  if (pinned("seeds.grid") || pinned("seeds.points")) assign_at_path(root, "seeds.frame", *p.resolved.at_path("seeds.frame").value<std::string>());
   // With position and look_at fixed, view, frame and margin no longer
   // apply: left out, the pinned scene says what it does.
   if (pinned("camera.position") || pinned("camera.look_at"))

@@ -23,6 +23,7 @@ constexpr double kMinStepPerDiagonal = 1e-6;
 constexpr double kTubePerGlyph = 0.2;
 constexpr double kOcclusionPerGlyph = 4.0;
 constexpr int kDefaultPixels = 800;
+constexpr double kTallest = 0.5, kWidest = 2.5;  // the automatic picture's aspect
 // Influence regions a ray crosses on average beyond which a render is slow
 // (the figure scenes stay under 10; fig05 without its ceiling is over 2000).
 constexpr double kCrowdedRay = 100.0;
@@ -61,13 +62,17 @@ std::string scalar_title(ColorScalar scalar, const SceneSpec& spec) {
   return "";
 }
 
+// The colormap (automatic: diverging for signed values, sequential
+// otherwise) and the range, with the values' true extremes for the bar.
 ColorScale color_scale(const ColorSpec& spec, const std::vector<GlyphSource>& sources) {
-  const Colormap& map = colormap_named(spec.map);
-  if (spec.range) return {&map, (*spec.range)[0], (*spec.range)[1], spec.log};
   std::vector<double> values;
   values.reserve(sources.size());
   for (const GlyphSource& s : sources) values.push_back(s.scalar);
-  return auto_scale(map, values, spec.symmetric.value_or(map.diverging), spec.log);
+  const Colormap& map = colormap_named(spec.map.value_or(!spec.log && both_signs(values) ? "coolwarm" : "viridis"));
+  if (!spec.range) return auto_scale(map, values, spec.symmetric.value_or(map.diverging), spec.log);
+  ColorScale scale{&map, (*spec.range)[0], (*spec.range)[1], spec.log};
+  record_extremes(scale, values);
+  return scale;
 }
 
 void add_corners(const Box3& b, std::vector<Vec3>& points) {
@@ -106,6 +111,26 @@ std::vector<Vec3> framed_points(FrameTarget target, const PreparedScene& p, doub
   return points;
 }
 
+// The picture's shape when the scene gives neither its pixels nor a
+// print size: the framed points' extent as the camera sees them, between
+// 1:2 and 5:2 (a long beam gets a wide picture, a tower a tall one), with
+// the area of the default square.
+std::array<int, 2> body_shaped_size(const CameraRequest& request, const std::vector<Vec3>& framed) {
+  const CameraSpec c = frame_camera(request, framed, kDefaultPixels, kDefaultPixels);
+  const Vec3 forward = (c.look_at - c.position).normalized();
+  const Vec3 right = forward.cross(c.up).normalized(), up = right.cross(forward);
+  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+  for (const Vec3& point : framed) {
+    const Vec3 d = point - c.position;
+    const double depth = c.projection == Projection::perspective ? d.dot(forward) : 1.0;
+    if (!(depth > 0.0)) continue;
+    x0 = std::min(x0, d.dot(right) / depth), x1 = std::max(x1, d.dot(right) / depth);
+    y0 = std::min(y0, d.dot(up) / depth), y1 = std::max(y1, d.dot(up) / depth);
+  }
+  const double aspect = (x1 > x0 && y1 > y0) ? std::clamp((x1 - x0) / (y1 - y0), kTallest, kWidest) : 1.0;
+  return {int(std::lround(kDefaultPixels * std::sqrt(aspect))), int(std::lround(kDefaultPixels / std::sqrt(aspect)))};
+}
+
 toml::array toml_vec3(const Vec3& v) { return toml::array{v.x(), v.y(), v.z()}; }
 
 // Records what the field side chose for the keys it resolves
@@ -117,13 +142,24 @@ void record_field_values(PreparedScene& p) {
   // Sources the scene gives itself (a curve, a list) have no seeds,
   // trajectories or sizes.
   if (s.data.kind == DataKind::none) return;
-  if (s.seeds.automatic()) {
-    toml::array grids;
-    for (const SeedGridSpec& g : v.seeds.grids)
-      grids.push_back(toml::table{{"corner", toml_vec3(g.corner)}, {"edge_u", toml_vec3(g.edge_u)},
-                                  {"edge_v", toml_vec3(g.edge_v)}, {"n", g.n}, {"m", g.m}});
-    p.resolve("seeds.grid", std::move(grids));
-    // The automatic grid is in the frame it was made in.
+  if (p.glyphs.placement != SourcePlacement::at_data_points) {
+    const SeedStrategy strategy = *v.seeds.strategy;
+    p.resolve("seeds.strategy", strategy == SeedStrategy::even ? "even" : strategy == SeedStrategy::grid ? "grid" : "points");
+    if (strategy == SeedStrategy::even) {
+      p.resolve("seeds.separation", *v.seeds.separation);
+      p.resolve("seeds.importance", *v.seeds.importance);
+      // The seeds it took, so a pinned scene takes the same ones first.
+      toml::array points;
+      for (const Vec3& seed : v.seeds.points) points.push_back(toml_vec3(seed));
+      p.resolve("seeds.points", std::move(points));
+    } else if (s.seeds.grids.empty() && s.seeds.points.empty()) {
+      toml::array grids;
+      for (const SeedGridSpec& g : v.seeds.grids)
+        grids.push_back(toml::table{{"corner", toml_vec3(g.corner)}, {"edge_u", toml_vec3(g.edge_u)},
+                                    {"edge_v", toml_vec3(g.edge_v)}, {"n", g.n}, {"m", g.m}});
+      p.resolve("seeds.grid", std::move(grids));
+    }
+    // Seeds are recorded in the frame they were made in.
     p.resolve("seeds.frame", v.seeds.frame == SeedFrame::bounds ? "bounds" : "world");
   }
   p.resolve("trajectories.step", v.trajectory.step);
@@ -250,6 +286,7 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   const double diagonal = domain.diagonal();
 
   p.scale = color_scale(s.color, p.glyphs.sources);
+  p.resolve("color.map", p.scale.map->name);
   p.resolve("color.range", toml::array{p.scale.lo, p.scale.hi});
   std::vector<std::array<float, 3>> colors;
   colors.reserve(p.glyphs.sources.size());
@@ -281,14 +318,13 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   p.shading.ao_distance = s.light.ao_distance.value_or(kOcclusionPerGlyph * glyph);
   if (s.shading.ao_samples > 0) p.resolve("light.ambient_occlusion.distance", p.shading.ao_distance);
 
-  const std::array<int, 2> size = picture_size(s);
-  p.render.width = p.resolve("render.width", s.render.width.value_or(size[0]));
-  p.render.height = p.resolve("render.height", s.render.height.value_or(size[1]));
-  std::ostringstream picture;
-  picture << "the scene with its picture (" << p.render.width << " × " << p.render.height << " pixels)";
-  p.memory_estimate = p.glyphs.memory_estimate + kBytesPerPixel * p.render.width * p.render.height;
-  check_memory(p.memory_estimate, picture.str(),
-               "lower render.width and render.height (or output.print_size or output.dpi)");
+  CameraRequest camera = s.camera;
+  if (!camera.view) camera.view = automatic_view(domain, p.glyphs.plane_axis);
+  const std::vector<Vec3> framed = framed_points(s.camera.frame, p, extent);
+  const bool shaped = !s.render.width && !s.render.height && !s.output.print_size;
+  const std::array<int, 2> size = shaped ? body_shaped_size(camera, framed) : picture_size(s);
+  p.render.width = s.render.width.value_or(size[0]);
+  p.render.height = s.render.height.value_or(size[1]);
   p.render.samples = s.render.samples;
   // Exact wherever it applies: it was the faster of the two over the
   // figure scenes, and exact; blinn summed has no polynomial form.
@@ -306,14 +342,24 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   PictureReserve reserve;
   if (s.output.colorbar && !p.field.sources.empty() && !exr) {
     p.output.legend = legend_for(p, p.render.width, p.render.height);
+    if (shaped) {  // the legend's part is added to the body's shape, not taken from it
+      const bool right = p.output.legend->style.placement == LegendPlacement::right;
+      int& grown = right ? p.render.width : p.render.height;
+      grown = int(std::lround(grown / (1.0 - p.output.legend->reserved)));
+      p.output.legend = legend_for(p, p.render.width, p.render.height);
+    }
     p.resolve("output.colorbar_title", p.output.legend->title);
     (p.output.legend->style.placement == LegendPlacement::right ? reserve.right : reserve.bottom) =
         p.output.legend->reserved;
   }
 
-  CameraRequest camera = s.camera;
-  if (!camera.view) camera.view = automatic_view(domain, p.glyphs.plane_axis);
-  const std::vector<Vec3> framed = framed_points(s.camera.frame, p, extent);
+  p.resolve("render.width", p.render.width);
+  p.resolve("render.height", p.render.height);
+  std::ostringstream picture;
+  picture << "the scene with its picture (" << p.render.width << " × " << p.render.height << " pixels)";
+  p.memory_estimate = p.glyphs.memory_estimate + kBytesPerPixel * p.render.width * p.render.height;
+  check_memory(p.memory_estimate, picture.str(),
+               "lower render.width and render.height (or output.print_size or output.dpi)");
   p.camera = frame_camera(camera, framed, p.render.width, p.render.height, reserve);
   p.resolve("camera.position", toml_vec3(p.camera.position));
   p.resolve("camera.look_at", toml_vec3(p.camera.look_at));

@@ -1,6 +1,7 @@
 #include "renderer/image/colormap.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -63,6 +64,10 @@ double ColorScale::normalized(double value) const {
 
 namespace {
 
+// How far past the bulk of the values the automatic range reaches, in
+// units of the bulk's extent (colormap.h).
+constexpr double kFence = 3.0;
+
 // The q-quantile (q ∈ [0, 1]) of `values`, by nearest rank.
 double quantile(std::vector<double> values, double q) {
   const std::size_t k = std::min(values.size() - 1, std::size_t(q * double(values.size() - 1) + 0.5));
@@ -72,37 +77,71 @@ double quantile(std::vector<double> values, double q) {
 
 }  // namespace
 
+namespace {
+
+// The fenced range of the rule in colormap.h, over `v` (not empty).
+std::array<double, 2> fenced(const std::vector<double>& v) {
+  const double q02 = quantile(v, 0.02), q98 = quantile(v, 0.98);
+  const double bulk = std::max({std::fabs(q02), std::fabs(q98), q98 - q02});
+  const auto [lowest, highest] = std::minmax_element(v.begin(), v.end());
+  return {std::max(*lowest, q02 - kFence * bulk), std::min(*highest, q98 + kFence * bulk)};
+}
+
+void widen_if_degenerate(ColorScale& scale) {
+  if (scale.hi > scale.lo) return;
+  const double pad = std::max(1.0, std::fabs(scale.lo)) * 1e-6;
+  scale.lo -= pad;
+  scale.hi += pad;
+}
+
+}  // namespace
+
+void record_extremes(ColorScale& scale, const std::vector<double>& values) {
+  double lo = INFINITY, hi = -INFINITY;
+  for (double v : values)
+    if (std::isfinite(v) && (!scale.log || v > 0.0)) lo = std::min(lo, v), hi = std::max(hi, v);
+  scale.data_lo = std::isfinite(lo) ? lo : std::numeric_limits<double>::quiet_NaN();
+  scale.data_hi = std::isfinite(hi) ? hi : std::numeric_limits<double>::quiet_NaN();
+}
+
+bool both_signs(const std::vector<double>& values) {
+  double lo = 0.0, hi = 0.0;
+  for (double v : values)
+    if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+  const double largest = std::max(-lo, hi);
+  return largest > 0.0 && -lo > 0.01 * largest && hi > 0.01 * largest;
+}
+
 ColorScale auto_scale(const Colormap& map, const std::vector<double>& values, bool symmetric, bool log) {
   ColorScale scale{&map, 0.0, 1.0, log};
+  std::vector<double> finite;
+  for (double v : values)
+    if (std::isfinite(v) && (!log || v > 0.0)) finite.push_back(log ? std::log10(v) : v);
   if (log) {
-    std::vector<double> positive;
-    for (double v : values)
-      if (v > 0.0 && std::isfinite(v)) positive.push_back(v);
-    if (positive.empty()) {
+    if (finite.empty()) {
       scale.lo = 1.0, scale.hi = 10.0;
       return scale;
     }
-    scale.lo = quantile(positive, 0.02);
-    scale.hi = quantile(positive, 0.98);
+    const std::array<double, 2> range = fenced(finite);
+    scale.lo = std::pow(10.0, range[0]);
+    scale.hi = std::pow(10.0, range[1]);
     if (!(scale.hi > scale.lo)) scale.lo /= 10.0, scale.hi *= 10.0;
+    record_extremes(scale, values);
     return scale;
   }
-  if (values.empty()) return scale;
+  if (finite.empty()) return scale;
   if (symmetric) {
-    std::vector<double> magnitudes(values.size());
-    std::transform(values.begin(), values.end(), magnitudes.begin(), [](double v) { return std::fabs(v); });
-    const double m = quantile(std::move(magnitudes), 0.98);
+    for (double& v : finite) v = std::fabs(v);
+    const double m = fenced(finite)[1];
     scale.lo = -m;
     scale.hi = m;
   } else {
-    scale.lo = quantile(values, 0.02);
-    scale.hi = quantile(values, 0.98);
+    const std::array<double, 2> range = fenced(finite);
+    scale.lo = range[0];
+    scale.hi = range[1];
   }
-  if (!(scale.hi > scale.lo)) {
-    const double pad = std::max(1.0, std::fabs(scale.lo)) * 1e-6;
-    scale.lo -= pad;
-    scale.hi += pad;
-  }
+  widen_if_degenerate(scale);
+  record_extremes(scale, values);
   return scale;
 }
 

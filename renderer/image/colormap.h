@@ -2,6 +2,7 @@
 // Colormaps for the glyphs' colour scalar. Tables are in display sRGB, as
 // published; they are converted to scene-linear through OCIO before shading.
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,13 @@ struct ColorScale {
   const Colormap* map = nullptr;
   double lo = 0.0, hi = 1.0;  // with `log`, 0 < lo < hi
   bool log = false;
+  // The values' true extremes (NaN: not known). Beyond [lo, hi] they are
+  // clipped, and the colour bar says so.
+  double data_lo = std::numeric_limits<double>::quiet_NaN();
+  double data_hi = std::numeric_limits<double>::quiet_NaN();
+
+  bool clipped_low() const { return data_lo < lo; }
+  bool clipped_high() const { return data_hi > hi; }
 
   // Where `value` lies in the range, 0 at lo and 1 at hi (not clamped;
   // with `log`, values ≤ 0 are at lo).
@@ -37,14 +45,28 @@ struct ColorScale {
   Rgb srgb(double value) const { return map->at(normalized(value)); }
 };
 
-// The automatic range for `values`: their 2nd to 98th percentile, or [−m, m]
-// with m the 98th percentile of |v| when `symmetric` (signed stress, where
-// zero should look neutral); with `log`, the percentiles of the positive
-// values. Percentiles rather than extremes because stress fields have
-// singular points (a point load's own neighbourhood) whose few extreme
-// values would otherwise flatten every other colour; values outside the
-// range take the end colours. A degenerate range is widened so
-// normalized() stays finite.
+// The automatic range for `values`: their extremes, unless an extreme is
+// an outlier. With qN the Nth percentile and the bulk's extent
+// b = max(|q2|, |q98|, q98 − q2) (its reach from zero, or its width), the
+// high end is min(max, q98 + 3b) and the low end max(min, q2 − 3b). A
+// stress concentration (a hole's 3σ, a notch's 5σ among values near σ:
+// within 4 times the bulk's reach) keeps its colour; a singular point's
+// extreme values (a point load's own neighbourhood, growing without
+// bound) lie beyond the fence and are clipped, so they do not flatten
+// every other colour, and the bar marks the clipping (data_lo, data_hi).
+// `symmetric` (signed stress, where zero should look neutral): [−m, m],
+// with m the same fence over |v|. `log`: the same over log10 of the
+// positive values. A degenerate range is widened so normalized() stays
+// finite.
 ColorScale auto_scale(const Colormap& map, const std::vector<double>& values, bool symmetric, bool log);
+
+// The extremes of `values` (finite ones; positive ones for `log`) into
+// scale.data_lo and data_hi.
+void record_extremes(ColorScale& scale, const std::vector<double>& values);
+
+// Whether `values` have both signs, each beyond a hundredth of the
+// largest magnitude: signed stress, tension and compression, which a
+// diverging map centred on zero shows apart.
+bool both_signs(const std::vector<double>& values);
 
 }  // namespace hsb

@@ -17,6 +17,7 @@ constexpr double kTickLength = 2.5;
 constexpr double kGap = 2.5;
 constexpr double kMargin = 6.0;
 constexpr double kStroke = 0.5;
+constexpr double kTriangle = 7.0;  // an extension triangle's length
 // The smallest picture, in points, the legend keeps its printed size in:
 // 2.5 inches. A smaller picture (a thumbnail, a golden image) is not a
 // print; its legend shrinks with it, so that it never takes over the
@@ -33,13 +34,50 @@ Rgb display_color(const ColorScale& scale, const ColorManagement& color, double 
   return {pixel[0], pixel[1], pixel[2]};
 }
 
-// Ticks, labels, factor, title and frame, with the bar already in place.
-void draw_annotations(cairo_t* cr, const LegendLayout& l, const ColorScale& scale, float ink) {
+// The extension triangle at the bar's high (or low) end, filled with that
+// end's colour and outlined, and its label: the values' true extreme.
+void draw_extension(cairo_t* cr, const LegendLayout& l, const ColorScale& scale, const ColorManagement& color,
+                    float ink, bool high) {
+  const std::string& label = high ? l.high_label : l.low_label;
+  if (label.empty()) return;
+  const double p = l.pixels_per_point, font = l.style.font_size * p, tri = kTriangle * p;
+  const bool right = l.style.placement == LegendPlacement::right;
+  double ax, ay, bx, by, tx, ty;  // the base's ends, the tip
+  if (right) {
+    const double y = high ? l.bar_y0 : l.bar_y1, out = high ? -tri : tri;
+    ax = l.bar_x0, bx = l.bar_x1, ay = by = y, tx = 0.5 * (l.bar_x0 + l.bar_x1), ty = y + out;
+  } else {
+    const double x = high ? l.bar_x1 : l.bar_x0, out = high ? tri : -tri;
+    ay = l.bar_y0, by = l.bar_y1, ax = bx = x, ty = 0.5 * (l.bar_y0 + l.bar_y1), tx = x + out;
+  }
+  const Rgb c = display_color(scale, color, high ? 1.0 : 0.0);
+  cairo_move_to(cr, ax, ay);
+  cairo_line_to(cr, bx, by);
+  cairo_line_to(cr, tx, ty);
+  cairo_close_path(cr);
+  cairo_set_source_rgb(cr, c[0], c[1], c[2]);
+  cairo_fill_preserve(cr);
+  cairo_set_source_rgb(cr, ink, ink, ink);
+  cairo_stroke(cr);
+  if (right)
+    show_text(cr, label, font, l.bar_x1 + (kTickLength + kGap) * p, ty + (high ? -0.3 : 0.3) * font, 0.0, 0.5);
+  else
+    show_text(cr, label, font, tx, l.bar_y1 + (kTickLength + kGap) * p, high ? 0.0 : 1.0, 0.0);
+}
+
+// Ticks, labels, factor, title, frame and extension triangles, with the
+// bar already in place.
+void draw_annotations(cairo_t* cr, const LegendLayout& l, const ColorScale& scale, const ColorManagement& color,
+                      float ink) {
   const double p = l.pixels_per_point, font = l.style.font_size * p;
   cairo_set_source_rgb(cr, ink, ink, ink);
   cairo_set_line_width(cr, kStroke * p);
   cairo_rectangle(cr, l.bar_x0, l.bar_y0, l.bar_x1 - l.bar_x0, l.bar_y1 - l.bar_y0);
   cairo_stroke(cr);
+  draw_extension(cr, l, scale, color, ink, true);
+  draw_extension(cr, l, scale, color, ink, false);
+  // The factor clears a high end's triangle and label.
+  const double past_high = l.high_label.empty() ? 0.0 : kTriangle * p + (l.style.placement == LegendPlacement::right ? font : 0.0);
   const bool right = l.style.placement == LegendPlacement::right;
   double widest = 0.0;
   for (const Tick& t : l.ticks.ticks) {
@@ -60,11 +98,13 @@ void draw_annotations(cairo_t* cr, const LegendLayout& l, const ColorScale& scal
     }
   }
   if (right) {
-    if (!l.ticks.factor.empty()) show_text(cr, l.ticks.factor, font, l.bar_x0, l.bar_y0 - kGap * p, 0.0, 1.0);
+    if (!l.ticks.factor.empty())
+      show_text(cr, l.ticks.factor, font, l.bar_x0, l.bar_y0 - kGap * p - past_high, 0.0, 1.0);
     const double x = l.bar_x1 + (kTickLength + 2.0 * kGap) * p + widest;
     show_text(cr, l.title, font, x, 0.5 * (l.bar_y0 + l.bar_y1), 0.5, 0.0, true);
   } else {
-    if (!l.ticks.factor.empty()) show_text(cr, l.ticks.factor, font, l.bar_x1 + kGap * p, l.bar_y0, 0.0, 0.0);
+    if (!l.ticks.factor.empty())
+      show_text(cr, l.ticks.factor, font, l.bar_x1 + kGap * p + past_high, l.bar_y0, 0.0, 0.0);
     double w, h;
     text_size(cr, "0", font, w, h);
     show_text(cr, l.title, font, 0.5 * (l.bar_x0 + l.bar_x1), l.bar_y1 + (kTickLength + 2.0 * kGap) * p + h, 0.5,
@@ -98,11 +138,19 @@ LegendLayout layout_legend(const ColorScale& scale, const std::string& title, co
   l.pixels_per_point = legend_pixels_per_point(style.dpi, width, height);
   const double p = l.pixels_per_point, font = style.font_size * p;
   l.ticks = scale.log ? log_ticks(scale.lo, scale.hi) : linear_ticks(scale.lo, scale.hi);
+  const int exponent = scale.log ? 0 : l.ticks.exponent;
+  if (scale.clipped_high()) l.high_label = "max " + value_label(scale.data_hi, exponent);
+  if (scale.clipped_low()) l.low_label = "min " + value_label(scale.data_lo, exponent);
   const CairoOwned<cairo_t> cr = measuring_context();
   double label_w = 0.0, label_h = 0.0, title_w = 0.0, title_h = 0.0;
   for (const Tick& t : l.ticks.ticks) {
     double w, h;
     text_size(cr.get(), t.label, font, w, h);
+    label_w = std::max(label_w, w), label_h = std::max(label_h, h);
+  }
+  for (const std::string& extreme : {l.low_label, l.high_label}) {
+    double w, h;
+    text_size(cr.get(), extreme, font, w, h);
     label_w = std::max(label_w, w), label_h = std::max(label_h, h);
   }
   text_size(cr.get(), title.empty() ? " " : title, font, title_w, title_h);
@@ -151,7 +199,7 @@ void draw_legend(std::vector<float>& rgba, int width, int height, const LegendLa
   {
     const CairoOwned<cairo_t> cr(cairo_create(surface.get()));
     cairo_translate(cr.get(), -left, -top);
-    draw_annotations(cr.get(), l, scale, ink);
+    draw_annotations(cr.get(), l, scale, color, ink);
   }
   composite_layer(surface.get(), left, top, rgba, width, height);
 }
@@ -175,7 +223,7 @@ void draw_legend(cairo_t* cr, const LegendLayout& l, const ColorScale& scale, co
     }
     cairo_fill(cr);
   }
-  draw_annotations(cr, l, scale, ink);
+  draw_annotations(cr, l, scale, color, ink);
 }
 
 }  // namespace hsb

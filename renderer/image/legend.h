@@ -37,6 +37,10 @@ struct LegendLayout {
   double bar_x0 = 0, bar_y0 = 0, bar_x1 = 0, bar_y1 = 0;  // the colour strip
   TickSet ticks;
   std::string title;
+  // A clipped end's extension triangle (as matplotlib's `extend`) is
+  // labelled with the values' true extreme: "max 312" ("" when that end
+  // is not clipped).
+  std::string low_label, high_label;
   // The part of the picture the legend takes, from its right (or bottom)
   // edge: the camera frames the data in the rest.
   double reserved = 0.0;  // a fraction of the width (right) or height (bottom)

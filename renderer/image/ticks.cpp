@@ -43,6 +43,17 @@ double round_step(double span, int target) {
 
 std::string power_of_ten(int exponent) { return "10" + superscript(exponent); }
 
+std::string value_label(double value, int exponent) {
+  const double v = value / std::pow(10.0, exponent);
+  if (!std::isfinite(v)) return v > 0 ? "\u221e" : v < 0 ? std::string(kMinus) + "\u221e" : "?";
+  const int digits = v == 0.0 ? 0 : int(std::floor(std::log10(std::fabs(v))));
+  if (digits > 5 || digits < -3) {
+    const int e = digits;
+    return fixed(v / std::pow(10.0, e), 2) + "\u00d7" + power_of_ten(e);
+  }
+  return fixed(v, std::max(0, 2 - digits));
+}
+
 TickSet linear_ticks(double lo, double hi, int target) {
   TickSet set;
   if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi)) return set;
@@ -53,6 +64,7 @@ TickSet linear_ticks(double lo, double hi, int target) {
   if (largest >= 1e4 || largest < 1e-3) exponent = 3 * int(std::floor(std::log10(largest) / 3.0));
   const double unit = std::pow(10.0, exponent);
   if (exponent != 0) set.factor = "\u00d7" + power_of_ten(exponent);
+  set.exponent = exponent;
   // A range too narrow for round steps between its values to be told
   // apart (constant data up to round-off): one tick, in the middle, with
   // six significant digits.

@@ -18,7 +18,12 @@ struct Tick {
 struct TickSet {
   std::vector<Tick> ticks;
   std::string factor;  // "" or "×10⁶": what every label is to be multiplied by
+  int exponent = 0;    // the factor's: 10^exponent
 };
+
+// `value` in the ticks' unit (divided by 10^exponent) with three
+// significant digits: a clipped extreme printed beside the bar.
+std::string value_label(double value, int exponent);
 
 // About `target` ticks (at least 2 where the range allows) inside [lo, hi].
 TickSet linear_ticks(double lo, double hi, int target = 5);

@@ -110,6 +110,11 @@ void read_data(TableReader& data, DataSpec& spec, const std::string& base_dir) {
 }
 
 void read_seeds(TableReader& seeds, SeedSpec& spec) {
+  if (seeds.has("strategy"))
+    spec.strategy = seeds.choice<SeedStrategy>(
+        "strategy", {{"even", SeedStrategy::even}, {"grid", SeedStrategy::grid}, {"points", SeedStrategy::points}});
+  spec.separation = seeds.optional_number("separation");
+  spec.importance = seeds.optional_boolean("importance");
   spec.frame = seeds.choice<SeedFrame>("frame", {{"world", SeedFrame::world}, {"bounds", SeedFrame::bounds}});
   spec.points = seeds.points("points");
   for (TableReader& grid : seeds.tables("grid")) {
@@ -122,6 +127,12 @@ void read_seeds(TableReader& seeds, SeedSpec& spec) {
     grid.finish();
     spec.grids.push_back(g);
   }
+  const SeedStrategy strategy = spec.resolved_strategy();
+  if (strategy == SeedStrategy::points && spec.points.empty() && spec.grids.empty())
+    seeds.fail_at("strategy", "= \"points\" needs seeds.points or [[seeds.grid]]");
+  if (strategy != SeedStrategy::even)
+    for (const char* key : {"separation", "importance"})
+      if (seeds.has(key)) seeds.fail_at(key, "applies only to seeds.strategy = \"even\"");
   seeds.finish();
 }
 
@@ -226,7 +237,7 @@ void read_surface(TableReader& s, SurfaceSpec& spec) {
 void read_color(TableReader& c, ColorSpec& spec) {
   std::vector<std::pair<std::string, std::string>> maps;
   for (const std::string& name : colormap_names()) maps.emplace_back(name, name);
-  spec.map = c.choice<std::string>("map", maps);
+  if (c.has("map")) spec.map = c.choice<std::string>("map", maps);
   spec.log = c.choice<bool>("scale", {{"linear", false}, {"log", true}});
   spec.symmetric = c.optional_boolean("symmetric");
   if (spec.log && spec.symmetric.value_or(false)) c.fail_at("symmetric", "cannot be true with color.scale = \"log\"");

@@ -142,11 +142,18 @@ std::vector<KeySchema> build_keys() {
           .choices({"constant", "averaged"}).fallback("\"constant\""),
 
       // [seeds]
+      Key("seeds.strategy", T::choice, "how seeds are chosen: evenly spaced trajectories, a grid, or the points given")
+          .choices({"even", "grid", "points"}).automatic("\"even\", or \"points\" when points or grids are given"),
+      Key("seeds.separation", T::number, "even: the distance between neighbouring trajectories")
+          .length().automatic("(body volume/150)^(1/3); (area/200)^(1/2) in 2-D"),
+      Key("seeds.importance", T::boolean, "even: trajectories closer where the magnitude is larger")
+          .automatic("on for tensors, off for a flow"),
       Key("seeds.frame", T::choice, "seed coordinates in the data's own units, or as fractions of its bounds")
           .choices({"world", "bounds"}).fallback("\"world\""),
-      Key("seeds.points", T::points, "explicit seeds [[x, y, z], ...]").fallback("[]"),
+      Key("seeds.points", T::points, "explicit seeds [[x, y, z], ...]; with \"even\", taken first")
+          .automatic("none; \"even\" records the seeds it took"),
       Key("seeds.grid", T::tables, "grids of seeds on parallelograms, [[seeds.grid]]")
-          .automatic("a 5×5 grid across the middle of the data's longest axis"),
+          .automatic("with \"grid\": a 5×5 grid across the middle of the data's longest axis"),
       Key("seeds.grid.corner", T::vector, "one corner of the parallelogram").fallback("[0, 0, 0]"),
       Key("seeds.grid.edge_u", T::vector, "its first edge").fallback("[1, 0, 0]"),
       Key("seeds.grid.edge_v", T::vector, "its second edge").fallback("[0, 1, 0]"),
@@ -178,7 +185,7 @@ std::vector<KeySchema> build_keys() {
       Key("glyphs.ceiling", T::number, "largest radius (inf for none)").length().infinite_allowed()
           .automatic("three times the reference glyph's"),
       Key("glyphs.color_by", T::choice, "the colour scalar, or \"array:NAME\"").choices(color_by_choices())
-          .automatic("\"lambda3\" for tensors, \"speed\" for a flow"),
+          .automatic("the traced family's eigenvalue (major: \"lambda1\") for tensors, \"speed\" for a flow"),
       Key("glyphs.thickness", T::number, "2-D data: the glyphs' thickness across the plane").length()
           .automatic("each glyph's smaller in-plane diameter"),
       Key("glyphs.stretch", T::number, "streamballs: the radius along the flow times this").range(1.0, 100.0).fallback("1"),
@@ -204,9 +211,10 @@ std::vector<KeySchema> build_keys() {
       Key("surface.isovalue", T::number, "C, the surface's level").range(0.0, 1.0, true).fallback("0.5"),
 
       // [color]
-      Key("color.map", T::choice, "the colormap").choices(colormap_names()).fallback("\"viridis\""),
+      Key("color.map", T::choice, "the colormap").choices(colormap_names())
+          .automatic("\"coolwarm\" when the values have both signs, else \"viridis\""),
       Key("color.range", T::numbers, "[low, high] of the colour scalar").count(2)
-          .automatic("the 2nd to 98th percentile of the sources' values"),
+          .automatic("the values' extremes, outliers beyond a fence past the 2nd/98th percentile clipped"),
       Key("color.symmetric", T::boolean, "an automatic range symmetric about zero").derived("true for a diverging map"),
       Key("color.scale", T::choice, "colour by the scalar or its logarithm").choices({"linear", "log"}).fallback("\"linear\""),
 
@@ -244,9 +252,9 @@ std::vector<KeySchema> build_keys() {
 
       // [render]
       Key("render.width", T::integer, "picture width").range(1, 16384).unit("pixels")
-          .automatic("output.print_size at output.dpi, else 800"),
+          .automatic("output.print_size at output.dpi, else the body's shape at 800² pixels"),
       Key("render.height", T::integer, "picture height").range(1, 16384).unit("pixels")
-          .automatic("output.print_size at output.dpi, else 800"),
+          .automatic("output.print_size at output.dpi, else the body's shape at 800² pixels"),
       Key("render.samples", T::integer, "samples×samples per pixel").range(1, 16).fallback("2"),
       Key("render.background", T::color, "display sRGB, or \"transparent\"").choices({"transparent"}).fallback("[1, 1, 1]"),
       Key("render.background_bottom", T::color, "a vertical gradient's bottom colour").none("no gradient"),

@@ -32,7 +32,9 @@ struct SurfaceSpec {
 };
 
 struct ColorSpec {
-  std::string map = "viridis";
+  // Automatic: "coolwarm" for values of both signs (tension and
+  // compression), centred on zero; "viridis" for one-signed values.
+  std::optional<std::string> map;
   std::optional<std::array<double, 2>> range;  // automatic: from the sources
   std::optional<bool> symmetric;               // automatic: for a diverging map
   bool log = false;                            // by the logarithm of the scalar

@@ -142,14 +142,36 @@ TEST_F(Color, AutoRangeIgnoresSingularOutliersAndCentresDivergingMaps) {
   for (int i = 0; i < 1000; ++i) values.push_back(-1.0 + i / 1000.0);  // [−1, 0)
   values.push_back(-1e6);  // a singular point's value
   const ColorScale seq = auto_scale(colormap_named("viridis"), values, false, false);
-  EXPECT_GT(seq.lo, -1.0);
-  EXPECT_LT(seq.lo, -0.9);
+  EXPECT_GT(seq.lo, -5.0);  // the fence: q2 − 3 × the bulk's reach
+  EXPECT_LT(seq.lo, -1.0);
   EXPECT_LT(seq.hi, 0.0);
+  EXPECT_TRUE(seq.clipped_low());
+  EXPECT_FALSE(seq.clipped_high());
+  EXPECT_DOUBLE_EQ(seq.data_lo, -1e6);
   const ColorScale div = auto_scale(colormap_named("coolwarm"), values, true, false);
   EXPECT_DOUBLE_EQ(div.lo, -div.hi);
   EXPECT_NEAR(div.normalized(0.0), 0.5, 1e-12);
   const ColorScale flat = auto_scale(colormap_named("viridis"), {2.0, 2.0}, false, false);
   EXPECT_LT(flat.lo, flat.hi);
+}
+
+// A hole's stress concentration (3σ, a few glyphs among many near σ) is
+// what the picture is for: it keeps its own colour, unclipped.
+TEST_F(Color, AutoRangeKeepsAStressConcentration) {
+  std::vector<double> values;
+  for (int i = 0; i < 1000; ++i) values.push_back(9.0 + 2.0 * i / 1000.0);  // σ ≈ 10
+  for (double peak : {30.0, 27.0, 24.0}) values.push_back(peak);
+  const ColorScale scale = auto_scale(colormap_named("viridis"), values, false, false);
+  EXPECT_DOUBLE_EQ(scale.hi, 30.0);
+  EXPECT_FALSE(scale.clipped_high());
+  EXPECT_DOUBLE_EQ(scale.lo, 9.0);
+}
+
+TEST_F(Color, SignedValuesAreBothSignsOnlyBeyondAHundredthOfTheLargest) {
+  EXPECT_TRUE(both_signs({-5.0, 3.0, 1.0}));
+  EXPECT_FALSE(both_signs({-5.0, 0.0, 0.01}));  // round-off above zero: one-signed
+  EXPECT_FALSE(both_signs({1.0, 2.0}));
+  EXPECT_FALSE(both_signs({}));
 }
 
 }  // namespace

@@ -290,10 +290,17 @@ TEST_F(SceneFile, OnlyADataPathIsEnoughForAPicture) {
   const std::string data = std::string(HSB_SOURCE_DIR) + "/scenes/data/cylinder_stress_coarse.vtu";
   const SceneSpec spec = load_scene(write("[data]\nkind = \"vtk\"\nfile = \"" + data + "\"\n"));
   const GlyphScene glyphs = build_glyph_scene(spec.pipeline, 0.5);
-  EXPECT_GE(glyphs.trajectories.size(), 9u);  // 5×5 seeds on the middle cross-section, some outside the round body
+  EXPECT_EQ(glyphs.values.seeds.strategy, SeedStrategy::even);
+  EXPECT_GE(glyphs.trajectories.size(), 9u);
   EXPECT_GT(glyphs.sources.size(), 100u);
-  for (const Trajectory& t : glyphs.trajectories)
-    EXPECT_NEAR(t.points[t.seed_index].x(), 0.05, 1e-9);  // the middle of x ∈ [0, 0.1]
+  // Evenly spaced: every seed in the body, along the whole cylinder.
+  double lowest = INFINITY, highest = -INFINITY;
+  for (const Trajectory& t : glyphs.trajectories) {
+    const Vec3& seed = t.points[t.seed_index];
+    EXPECT_TRUE(glyphs.domain.contains(seed));
+    lowest = std::min(lowest, seed.x()), highest = std::max(highest, seed.x());
+  }
+  EXPECT_GT(highest - lowest, 0.5 * glyphs.domain.size().x());
 }
 
 TEST_F(SceneFile, SeedsInBoundsFractions) {

@@ -42,7 +42,7 @@ TEST(SceneKeys, EveryDefaultIsAValueItsKeyAccepts) {
     }
     ++tried;
   }
-  EXPECT_GT(tried, 70);
+  EXPECT_GT(tried, 65);
 }
 
 TEST(SceneKeys, EveryKeyIsDocumentedAndTyped) {

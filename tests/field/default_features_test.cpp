@@ -1,0 +1,238 @@
+// The default picture finds what an engineer looks for, on data nobody
+// tuned a scene for: each data set here is generated (analytic stress on a
+// grid, NaN outside the body), read from a file as a user's would be, and
+// given to the pipeline with nothing but its path. Evenly spaced seeding
+// (field/tracing/even_seeding.h) must put a glyph at the hole's edge of a
+// plate, at the re-entrant corner of an L, at the load point of a
+// half-space, and in both halves of a bent beam; and the trajectories must
+// not depend on the stress's unit.
+
+#include <gtest/gtest.h>
+
+#include <vtkDoubleArray.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+#include <vtkXMLImageDataWriter.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+
+#include "field/glyph_pipeline.h"
+#include "field/tracing/body_lattice.h"
+#include "field/tracing/even_seeding.h"
+#include "tests/temp_dir.h"
+#include "tests/vtk_written.h"
+
+namespace hsb {
+namespace {
+
+// An isolated glyph's extent for a largest radius of 1, as the renderer's
+// defaults give it (influence radius 1, wyvill at C = ½).
+constexpr double kExtent = 0.64;
+
+// σ at a point, or nothing outside the body.
+using Stress = std::function<std::optional<Sym3>(const Vec3&)>;
+
+// A grid of `n` points over `box` holding `stress` (NaN outside the body),
+// written as a .vti the way VTK writes it.
+std::string grid_file(const std::string& name, const Box3& box, const std::array<int, 3>& n, const Stress& stress,
+                      double unit = 1.0) {
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(n[0], n[1], n[2]);
+  image->SetOrigin(box.lo.x(), box.lo.y(), box.lo.z());
+  const Vec3 size = box.size();
+  image->SetSpacing(size.x() / (n[0] - 1), size.y() / (n[1] - 1), size.z() / (n[2] - 1));
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName("stress");
+  a->SetNumberOfComponents(6);
+  a->SetNumberOfTuples(image->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i) {
+    double p[3];
+    image->GetPoint(i, p);
+    const std::optional<Sym3> s = stress(Vec3(p[0], p[1], p[2]));
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    // VTK's symmetric order: XX YY ZZ XY YZ XZ.
+    const double v[6] = {s ? s->xx * unit : nan, s ? s->yy * unit : nan, s ? s->zz * unit : nan,
+                         s ? s->xy * unit : nan, s ? s->yz * unit : nan, s ? s->xz * unit : nan};
+    for (int c = 0; c < 6; ++c) a->SetComponent(i, c, v[c]);
+  }
+  image->GetPointData()->AddArray(a);
+  return written_by<vtkXMLImageDataWriter>(image, test_temp_dir("default_features") / name);
+}
+
+GlyphScene default_scene(const std::string& path) {
+  GlyphPipelineSpec spec;
+  spec.data.kind = DataKind::vtk_file;
+  spec.data.file.path = path;
+  return build_glyph_scene(spec, kExtent);
+}
+
+double glyph_size(const GlyphSource& s) { return kExtent * s.radii.maxCoeff(); }
+
+// The nearest any glyph's surface comes to `p` (its centre's distance less
+// its size), over the sources that `keep` accepts.
+double nearest_glyph(const GlyphScene& scene, const Vec3& p) {
+  double best = INFINITY;
+  for (const GlyphSource& s : scene.sources) best = std::min(best, (s.centre - p).norm() - glyph_size(s));
+  return best;
+}
+
+// Kirsch's plate with a hole of radius a under tension σ along x, in
+// metres and pascals: 3σ at the top and bottom of the hole.
+constexpr double kHole = 0.2, kSigma = 1e7;
+std::optional<Sym3> kirsch(const Vec3& p) {
+  const double r = std::hypot(p.x(), p.y());
+  if (r < kHole) return std::nullopt;
+  const double t = std::atan2(p.y(), p.x()), c = std::cos(t), s = std::sin(t);
+  const double a2 = kHole * kHole / (r * r), a4 = a2 * a2, h = 0.5 * kSigma;
+  const double rr = h * (1 - a2) + h * (1 - 4 * a2 + 3 * a4) * std::cos(2 * t);
+  const double tt = h * (1 + a2) - h * (1 + 3 * a4) * std::cos(2 * t);
+  const double rt = -h * (1 + 2 * a2 - 3 * a4) * std::sin(2 * t);
+  Sym3 out;
+  out.xx = rr * c * c + tt * s * s - 2 * rt * s * c;
+  out.yy = rr * s * s + tt * c * c + 2 * rt * s * c;
+  out.xy = (rr - tt) * s * c + rt * (c * c - s * s);
+  return out;
+}
+const Box3 kPlate{Vec3(-2, -1, 0), Vec3(2, 1, 0.04)};
+const std::array<int, 3> kPlateGrid{161, 81, 3};
+
+TEST(DefaultFeatures, APlateWithAHoleGetsGlyphsAtTheHolesEdge) {
+  const GlyphScene scene = default_scene(grid_file("kirsch.vti", kPlate, kPlateGrid, kirsch));
+  ASSERT_FALSE(scene.sources.empty());
+  const double h = 0.025;  // the grid's spacing: the hole's edge is known to a cell
+  // Where the 3σ concentration is: the top and bottom of the hole.
+  for (double side : {1.0, -1.0}) {
+    const Vec3 edge(0.0, side * kHole, 0.02);
+    EXPECT_LT(nearest_glyph(scene, edge), 2.0 * h) << "no glyph at the hole's edge, y = " << edge.y();
+  }
+  // And the concentration keeps its glyphs large: the largest glyph is
+  // near the hole, not in the far field.
+  const auto largest = std::max_element(scene.sources.begin(), scene.sources.end(),
+                                        [](const GlyphSource& a, const GlyphSource& b) { return glyph_size(a) < glyph_size(b); });
+  EXPECT_LT(std::hypot(largest->centre.x(), largest->centre.y()), 3.0 * kHole);
+}
+
+TEST(DefaultFeatures, AnLBracketGetsGlyphsAtItsReentrantCornerAndNoneOutside) {
+  // [0, 2]² less the quadrant x, y > 1, 0.2 thick; a stress that grows
+  // towards the re-entrant corner (1, 1) as 1/√r, circling it.
+  const Vec3 corner(1, 1, 0.1);
+  const Stress bracket = [&](const Vec3& p) -> std::optional<Sym3> {
+    if (p.x() > 1.0 && p.y() > 1.0) return std::nullopt;
+    const Vec3 d = p - corner;
+    const double r = std::hypot(d.x(), d.y());
+    const double k = 1.0 / std::sqrt(r + 0.02);
+    const Vec3 e_t = r > 0 ? Vec3(-d.y() / r, d.x() / r, 0) : Vec3::UnitX();
+    Sym3 s;
+    s.xx = 1.0 + k * e_t.x() * e_t.x();
+    s.yy = 0.3 + k * e_t.y() * e_t.y();
+    s.xy = k * e_t.x() * e_t.y();
+    return s;
+  };
+  const GlyphScene scene =
+      default_scene(grid_file("bracket.vti", Box3{Vec3(0, 0, 0), Vec3(2, 2, 0.2)}, {81, 81, 9}, bracket));
+  ASSERT_FALSE(scene.sources.empty());
+  EXPECT_LT(nearest_glyph(scene, corner), 2.0 * 0.025);
+  for (const Vec3& seed : scene.values.seeds.points)
+    EXPECT_FALSE(seed.x() > 1.0 && seed.y() > 1.0) << "a seed outside the L at " << seed.transpose();
+  // Every arm has lines: the L fills.
+  int lower = 0, upper = 0;
+  for (const GlyphSource& s : scene.sources) (s.centre.y() < 1.0 && s.centre.x() > 1.2 ? lower : upper) += 1;
+  EXPECT_GT(lower, 10);
+  EXPECT_GT(upper, 10);
+}
+
+TEST(DefaultFeatures, AHalfSpaceGetsGlyphsAtItsLoadPoint) {
+  GlyphPipelineSpec spec;  // the analytic point load, nothing else said
+  const GlyphScene scene = build_glyph_scene(spec, kExtent);
+  ASSERT_FALSE(scene.sources.empty());
+  const Box3& b = spec.data.point_load.bounds;
+  const Vec3 load(0.5 * (b.lo.x() + b.hi.x()), 0.5 * (b.lo.y() + b.hi.y()), b.hi.z());
+  EXPECT_LT(nearest_glyph(scene, load), 0.02 * b.diagonal());
+}
+
+TEST(DefaultFeatures, ABentBeamGetsLinesInBothHalves) {
+  // A simply supported beam, 10 × 1 × 0.5, under a uniform load: σxx =
+  // M(x) y / I (tension below, compression above), with the shear
+  // τxy = V(x) (3/2A) (1 − 4y²/h²).
+  const double L = 10, h = 1, w = 0.5, A = h * w, I = w * h * h * h / 12.0, q = 1.0;
+  const Stress beam = [&](const Vec3& p) -> std::optional<Sym3> {
+    const double x = p.x(), y = p.y();
+    Sym3 s;
+    s.xx = -q * x * (L - x) / 2.0 * y / I;
+    s.xy = q * (L / 2.0 - x) * 1.5 / A * (1 - 4 * y * y / (h * h));
+    return s;
+  };
+  const GlyphScene scene =
+      default_scene(grid_file("beam.vti", Box3{Vec3(0, -0.5, 0), Vec3(10, 0.5, 0.5)}, {201, 21, 11}, beam));
+  std::size_t above = 0, below = 0;
+  for (const Trajectory& t : scene.trajectories) {
+    if (t.length() < L / 4) continue;
+    (t.points[t.seed_index].y() > 0 ? above : below) += 1;
+  }
+  EXPECT_GE(above, 2u) << "no long trajectory in the compressed half";
+  EXPECT_GE(below, 2u) << "no long trajectory in the stretched half";
+  std::size_t top = 0, bottom = 0;
+  for (const GlyphSource& s : scene.sources) (s.centre.y() > 0 ? top : bottom) += 1;
+  EXPECT_GT(top, scene.sources.size() / 5);
+  EXPECT_GT(bottom, scene.sources.size() / 5);
+}
+
+// Stress in pascals and the same as "strain" a million times smaller: the
+// same trajectories, seeds and glyph places. Direction fields do not
+// depend on the unit; nothing in the integrator or the seeding may.
+TEST(DefaultFeatures, TrajectoriesDoNotDependOnTheStressUnit) {
+  const GlyphScene pascals = default_scene(grid_file("kirsch_pa.vti", kPlate, kPlateGrid, kirsch));
+  const GlyphScene scaled = default_scene(grid_file("kirsch_micro.vti", kPlate, kPlateGrid, kirsch, 1e-6));
+  ASSERT_EQ(pascals.trajectories.size(), scaled.trajectories.size());
+  for (std::size_t i = 0; i < pascals.trajectories.size(); ++i) {
+    const Trajectory &a = pascals.trajectories[i], &b = scaled.trajectories[i];
+    ASSERT_EQ(a.points.size(), b.points.size()) << "trajectory " << i;
+    for (std::size_t k = 0; k < a.points.size(); ++k)
+      ASSERT_LT((a.points[k] - b.points[k]).norm(), 1e-9) << "trajectory " << i << " point " << k;
+  }
+  ASSERT_EQ(pascals.sources.size(), scaled.sources.size());
+  for (std::size_t i = 0; i < pascals.sources.size(); ++i) {
+    EXPECT_LT((pascals.sources[i].centre - scaled.sources[i].centre).norm(), 1e-9);
+    EXPECT_NEAR(glyph_size(pascals.sources[i]), glyph_size(scaled.sources[i]), 1e-9);
+  }
+}
+
+// A seed at a degenerate point (isotropic stress) of a field given in two
+// units traces the same (no) trajectory: the degeneracy test is relative.
+TEST(DefaultFeatures, ADegenerateSeedIsTheSameInEveryUnit) {
+  double reference = -1.0;  // the length beside the axis, in the first unit
+  for (double unit : {1.0, 1e-6, 1e6}) {
+    // Isotropic along x = 0, sheared away from it.
+    const Stress field = [&](const Vec3& p) -> std::optional<Sym3> {
+      Sym3 s;
+      s.xx = s.yy = s.zz = unit;
+      s.xy = unit * 0.5 * p.x();
+      return s;
+    };
+    struct Analytic : TensorField {
+      Stress f;
+      Box3 bounds() const override { return {Vec3(-1, -1, -1), Vec3(1, 1, 1)}; }
+      std::optional<Sym3> sample(const Vec3& x) const override {
+        if ((x.array() < -1).any() || (x.array() > 1).any()) return std::nullopt;
+        return f(x);
+      }
+    } analytic;
+    analytic.f = field;
+    TrajectoryOptions options;
+    options.step = 0.01;
+    options.max_length = 1.0;
+    const Trajectory at_axis = trace_trajectory(analytic, Vec3(0, 0.3, 0), options);
+    const Trajectory beside = trace_trajectory(analytic, Vec3(0.2, 0.3, 0), options);
+    EXPECT_EQ(at_axis.points.size(), 1u) << "unit " << unit;
+    EXPECT_EQ(at_axis.forward_stop, StopReason::degenerate) << "unit " << unit;
+    EXPECT_GT(beside.length(), 0.1) << "unit " << unit;
+    if (reference < 0) reference = beside.length();
+    EXPECT_NEAR(beside.length(), reference, 1e-9) << "unit " << unit;
+  }
+}
+
+}  // namespace
+}  // namespace hsb
