@@ -157,10 +157,14 @@ EvenTrajectories evenly_spaced_trajectories(const DirectionSampler& sampler, con
   for (std::size_t i = 0; i < pool.points.size(); ++i) offer(pool.points[i], pool.magnitudes[i], Origin::pool);
 
   NearbyPoints lines(options.separation);
+  // A line keeps the separation it started with as it runs into sparser
+  // parts (d(x) larger): a seed taken d from its neighbours must not find
+  // its first step already "too close" by a larger d.
+  double seed_separation = options.separation;
   const DirectionSampler stopping = [&](const Vec3& x) {
     DirectionSample s = sampler(x);
     if (!s.ok) return s;
-    const double test = options.stop_ratio * importance.separation(s.magnitude);
+    const double test = options.stop_ratio * std::min(seed_separation, importance.separation(s.magnitude));
     if (lines.nearest(x, test) < test) {
       s.ok = false;
       s.stop = StopReason::too_close;
@@ -177,6 +181,7 @@ EvenTrajectories evenly_spaced_trajectories(const DirectionSampler& sampler, con
       result.reached_max_lines = true;
       break;
     }
+    seed_separation = d;
     Trajectory t = trace_directions(stopping, c.point, trajectory);
     if (t.points.size() < 2 && c.origin != Origin::isolated) {
       offer(c.point, c.magnitude, Origin::isolated);

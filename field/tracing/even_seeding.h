@@ -6,7 +6,8 @@
 // The rule, with d the separation:
 //  - A seed is taken only where no trajectory passes within d of it; a
 //    trajectory stops where it comes within ½ d of another (or of its own
-//    earlier part: a hoop closes into one ring instead of winding on).
+//    earlier part: a hoop closes into one ring instead of winding on),
+//    with d the smaller of its seed's and the local one.
 //  - New seeds are taken beside each finished trajectory, d away across it
 //    (six directions round it; two, in the plane, for a 2-D result), and
 //    from a pool of points inside the body (body_lattice.h), so the body
