@@ -143,6 +143,32 @@ const char* stop_name(StopReason r) {
   return "?";
 }
 
+// What helps where the followed eigenvector is undefined, from which
+// eigenvalues the glyphs show equal (within the degeneracy tolerance).
+std::string degeneracy_advice(const GlyphScene& scene) {
+  const double tolerance = scene.values.trajectory.degeneracy_tolerance;
+  std::size_t upper = 0, lower = 0, all = 0;
+  for (const GlyphSource& s : scene.sources) {
+    const Vec3& l = s.eigenvalues;
+    const double m = l.cwiseAbs().maxCoeff();
+    const bool top = l(0) - l(1) <= tolerance * m, bottom = l(1) - l(2) <= tolerance * m;
+    all += top && bottom, upper += top && !bottom, lower += bottom && !top;
+  }
+  if (all >= upper && all >= lower)
+    return "the stress is isotropic (λ1 = λ2 = λ3) there, so no direction exists: its glyphs are spheres; "
+           "show sizes with glyphs.placement = \"points\", or colour by another quantity";
+  const EigenFamily family = scene.values.trajectory.family;
+  if (upper >= lower)
+    return family == EigenFamily::minor
+               ? "λ1 = λ2 there, which the minor family does not mind: seed it where it is not degenerate (seeds.points)"
+               : "λ1 = λ2 there (a uniaxial compression, or a plane's unloaded direction): trace "
+                 "trajectories.family = \"minor\", whose λ3 stands apart, or seed elsewhere (seeds.points)";
+  return family == EigenFamily::major
+             ? "λ2 = λ3 there, which the major family does not mind: seed it where it is not degenerate (seeds.points)"
+             : "λ2 = λ3 there (a uniaxial tension, or a plane's unloaded direction): trace "
+               "trajectories.family = \"major\", whose λ1 stands apart, or seed elsewhere (seeds.points)";
+}
+
 // An empty or nearly empty picture deserves a reason.
 void warn_about_the_result(GlyphScene& scene, std::size_t seeds) {
   if (scene.sources.empty() && scene.placement == SourcePlacement::at_data_points) {
@@ -160,9 +186,23 @@ void warn_about_the_result(GlyphScene& scene, std::size_t seeds) {
   }
   if (scene.trajectories.empty()) return;
   const double step = scene.values.trajectory.step;
+  const std::size_t at_degenerate = std::size_t(std::count_if(
+      scene.trajectories.begin(), scene.trajectories.end(), [&](const Trajectory& t) {
+        return t.length() <= step && t.forward_stop == StopReason::degenerate;
+      }));
   const bool any_long = std::any_of(scene.trajectories.begin(), scene.trajectories.end(),
                                     [&](const Trajectory& t) { return t.length() > step; });
-  if (any_long) return;
+  if (any_long) {
+    // Lines where the field has a direction, lone glyphs elsewhere: fine,
+    // unless the lone glyphs are most of the picture.
+    if (2 * at_degenerate > scene.trajectories.size()) {
+      std::ostringstream text;
+      text << at_degenerate << " of " << scene.trajectories.size()
+           << " seeds stand alone at a degenerate point (repeated eigenvalues): " << degeneracy_advice(scene);
+      scene.warnings.push_back(text.str());
+    }
+    return;
+  }
   // Say where they stopped: the most common reason is the one to act on.
   std::array<int, 7> reasons{};
   for (const Trajectory& t : scene.trajectories) {
@@ -173,6 +213,7 @@ void warn_about_the_result(GlyphScene& scene, std::size_t seeds) {
   std::ostringstream text;
   text << "no trajectory is longer than one step (" << step << "); most stop at "
        << stop_name(StopReason(most)) << ": each glyph stands alone at its seed";
+  if (StopReason(most) == StopReason::degenerate) text << "; " << degeneracy_advice(scene);
   scene.warnings.push_back(text.str());
 }
 

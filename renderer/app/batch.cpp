@@ -142,7 +142,10 @@ Batch::Batch(const std::vector<std::string>& scenes, const std::vector<std::stri
       }
       SweptKey steps{"data.step", {}, {}};
       for (std::size_t i = 0; i < times.size(); ++i) steps.values.push_back(std::to_string(i));
-      if (!steps.values.empty()) scene.swept.insert(scene.swept.begin(), std::move(steps));
+      if (!steps.values.empty()) {
+        scene.swept.insert(scene.swept.begin(), std::move(steps));
+        scene.series = true;
+      }
     }
     if (scene.error.empty())
       for (const SweptKey& k : scene.swept) {
@@ -176,6 +179,16 @@ BatchItem Batch::item(std::size_t position) const {
   for (const std::string& a : assignments) {
     item.overrides.push_back(a);
     item.variant += (item.variant.empty() ? "" : ",") + a;
+  }
+  if (scene.series) {
+    // The same item at every step: its data.step assignment (the first
+    // swept, after the fixed values) replaced.
+    const std::size_t step_at = fixed_.size();
+    for (const std::string& step : scene.swept.front().values) {
+      SeriesMember member{item.scene, item.overrides};
+      member.overrides[step_at] = "data.step=" + step;
+      item.series.push_back(std::move(member));
+    }
   }
   return item;
 }

@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "renderer/app/series_scale.h"
+
 namespace hsb {
 
 struct BatchItem {
@@ -27,6 +29,10 @@ struct BatchItem {
   // file:line:column of its value there: an error about one names that
   // place, not a --set the user never typed (see located_error()).
   std::vector<std::pair<std::string, std::string>> sweep_origins;
+  // A step of a time series whose steps the batch made (one image per
+  // step): every step, to share one glyph scale and colour range
+  // (series_scale.h). Empty otherwise.
+  std::vector<SeriesMember> series;
 };
 
 // `message` with a leading "--set KEY=VALUE: " that names one of the
@@ -76,6 +82,7 @@ class Batch {
     std::vector<SweptKey> swept;  // the --set sweeps, then the scene's [sweep] table
     std::string error;
     std::size_t first = 0, count = 1;  // its items' positions
+    bool series = false;  // its first swept key is the data.step the batch added
   };
   std::vector<std::string> fixed_;  // the --set values that are not sweeps
   std::vector<Scene> scenes_;

@@ -358,12 +358,25 @@ int main(int argc, char** argv) {
   hsb::BatchProgress progress(hsb::BatchProgress::mode_for(quiet), mine);
   std::size_t skipped = 0;
   std::map<std::string, std::string> written;  // image → the scene that wrote it
+  std::map<std::string, std::vector<std::string>> series_settings;  // a series' shared settings, by its first step
   const int status = for_each(mine, name_of, "images", [&](std::size_t i) {
     const hsb::BatchItem item = item_at(i);
     if (!item.error.empty()) throw hsb::SceneError(item.error);
     progress.start(i, std::filesystem::path(item.scene).filename().string() +
                           (item.variant.empty() ? "" : " [" + item.variant + "]"));
-    hsb::RenderJob job{item.scene, item.overrides, output_dir, item.variant, skip_existing,
+    // A series' steps share one glyph scale and colour range, computed
+    // once per series (a batch may render its steps one after another).
+    std::vector<std::string> job_overrides = item.overrides;
+    if (!item.series.empty()) {
+      std::string key = item.series.front().scene;
+      for (const std::string& o : item.series.front().overrides) key += "\n" + o;
+      const auto found = series_settings.find(key);
+      const std::vector<std::string>& shared =
+          found != series_settings.end() ? found->second
+                                         : series_settings.emplace(key, hsb::shared_series_settings(item.series)).first->second;
+      job_overrides.insert(job_overrides.end(), shared.begin(), shared.end());
+    }
+    hsb::RenderJob job{item.scene, job_overrides, output_dir, item.variant, skip_existing,
                        [&](hsb::JobStage stage, double fraction) { progress.update(stage, fraction); }, &written};
     hsb::RenderSummary summary;
     try {

@@ -1,5 +1,6 @@
 #include "renderer/app/pinned_scene.h"
 
+#include <filesystem>
 #include <sstream>
 
 #include "renderer/scene/scene_keys.h"
@@ -26,6 +27,11 @@ std::string pinned_scene_toml(const PreparedScene& p) {
   const auto pinned = [&](std::string_view key) {
     return std::find(automatic.begin(), automatic.end(), key) != automatic.end();
   };
+  // A data file given alone has no scene to be beside: its path is
+  // written whole, so the scene renders wherever it is saved
+  // (`hsb info FILE > dir/FILE.toml`).
+  if (is_data_file(p.spec.path))
+    assign_at_path(root, "data.file", std::filesystem::absolute(p.spec.pipeline.data.file.path).lexically_normal().string());
   // Automatic seeds are in the frame they were made in.
   if (pinned("seeds.grid") || pinned("seeds.points")) assign_at_path(root, "seeds.frame", *p.resolved.at_path("seeds.frame").value<std::string>());
   // With position and look_at fixed, view, frame and margin no longer
@@ -36,7 +42,8 @@ std::string pinned_scene_toml(const PreparedScene& p) {
 
   std::ostringstream out;
   out << "# " << p.spec.path << " with every automatic value written out: save this as a scene\n"
-      << "# (relative paths as in the original, so beside it) and it renders the same picture.\n"
+      << "# (relative paths as in the original, so beside it; a data file's path is whole) and it\n"
+      << "# renders the same picture.\n"
       << "# Automatic here:";
   for (const std::string& key : automatic) out << " " << key;
   out << "\n" << toml::toml_formatter(root) << "\n";

@@ -68,7 +68,7 @@ ColorScale color_scale(const ColorSpec& spec, const std::vector<GlyphSource>& so
   std::vector<double> values;
   values.reserve(sources.size());
   for (const GlyphSource& s : sources) values.push_back(s.scalar);
-  const Colormap& map = colormap_named(spec.map.value_or(!spec.log && both_signs(values) ? "coolwarm" : "viridis"));
+  const Colormap& map = colormap_for(spec.map, values, spec.log);
   if (!spec.range) return auto_scale(map, values, spec.symmetric.value_or(map.diverging), spec.log);
   ColorScale scale{&map, (*spec.range)[0], (*spec.range)[1], spec.log};
   record_extremes(scale, values);

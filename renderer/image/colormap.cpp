@@ -104,6 +104,10 @@ void record_extremes(ColorScale& scale, const std::vector<double>& values) {
   scale.data_hi = std::isfinite(hi) ? hi : std::numeric_limits<double>::quiet_NaN();
 }
 
+const Colormap& colormap_for(const std::optional<std::string>& name, const std::vector<double>& values, bool log) {
+  return colormap_named(name.value_or(!log && both_signs(values) ? "coolwarm" : "viridis"));
+}
+
 bool both_signs(const std::vector<double>& values) {
   double lo = 0.0, hi = 0.0;
   for (double v : values)

@@ -3,6 +3,7 @@
 // published; they are converted to scene-linear through OCIO before shading.
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,11 @@ struct ColorScale {
 // positive values. A degenerate range is widened so normalized() stays
 // finite.
 ColorScale auto_scale(const Colormap& map, const std::vector<double>& values, bool symmetric, bool log);
+
+// The map named, else the automatic one for `values`: "coolwarm",
+// centred on zero, for values of both signs (both_signs), "viridis" for
+// one-signed values or a log scale.
+const Colormap& colormap_for(const std::optional<std::string>& name, const std::vector<double>& values, bool log);
 
 // The extremes of `values` (finite ones; positive ones for `log`) into
 // scale.data_lo and data_hi.

@@ -150,6 +150,18 @@ printf '<!-- changed -->\n' >> "$work/series/s1.vtu"
 out=$("$hsb" render "$work/series/shaft.pvd" -o "$work/series/out" "${small[@]}" --skip-existing)
 grep -q "shaft_data.step=0.png  up to date, skipped" <<<"$out" || fail "step 0 unchanged, not skipped: $out"
 grep -q "shaft_data.step=1.png  sources=" <<<"$out" || fail "step 1 changed, not rendered: $out"
+# The steps of a series share one glyph scale and colour range: a load
+# that grows (0.5, 1, 2) shows as growing glyphs, not as three equal
+# pictures with other tick labels.
+"$hsb" render "$src/scenes/data/formats/kirsch_plate_series.pvd" -o "$work/series/grows" "${small[@]}" --quiet ||
+  fail "the plate's series"
+shared() { oiiotool --info -v "$1" | grep -E '^(range|scale|map) = ' | sort; }
+first=$(shared "$work/series/grows/kirsch_plate_series_data.step=0.png")
+[[ $(grep -c . <<<"$first") == 3 ]] || fail "a series step records its scale, range and map: $first"
+for step in 1 2; do
+  [[ $(shared "$work/series/grows/kirsch_plate_series_data.step=$step.png") == "$first" ]] ||
+    fail "step $step has its own scale or range: $(shared "$work/series/grows/kirsch_plate_series_data.step=$step.png") against $first"
+done
 out=$("$hsb" render "$work/series/shaft.pvd" -o "$work/series/out" "${small[@]}" --set data.step=7 2>&1)
 grep -q "shaft.pvd: data.step 7 is beyond its 2 steps (0 to 1)" <<<"$out" || fail "step 7 of 2: $out"
 

@@ -242,5 +242,23 @@ TEST(DefaultFeatures, ADegenerateSeedIsTheSameInEveryUnit) {
   }
 }
 
+// A field whose followed eigenvector is undefined gets a warning that
+// says what helps, from which eigenvalues are equal.
+TEST(DefaultFeatures, ADegenerateFieldIsToldWhatHelps) {
+  const Box3 cube{Vec3(0, 0, 0), Vec3(1, 1, 1)};
+  const auto warnings_of = [&](const std::string& name, const Sym3& constant) {
+    const GlyphScene scene = default_scene(grid_file(name, cube, {5, 5, 5}, [&](const Vec3&) { return constant; }));
+    std::string all;
+    for (const std::string& w : scene.warnings) all += w + "\n";
+    return all;
+  };
+  Sym3 isotropic;
+  isotropic.xx = isotropic.yy = isotropic.zz = -2.0;
+  EXPECT_NE(warnings_of("isotropic.vti", isotropic).find("isotropic"), std::string::npos);
+  Sym3 compression;  // uniaxial: λ1 = λ2 = 0, λ3 = −1
+  compression.zz = -1.0;
+  EXPECT_NE(warnings_of("compression.vti", compression).find("trajectories.family = \"minor\""), std::string::npos);
+}
+
 }  // namespace
 }  // namespace hsb

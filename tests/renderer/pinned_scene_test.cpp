@@ -63,6 +63,22 @@ TEST(PinnedScene, ADataFileRoundTrips) {
                                  {"render.width=300", "render.height=200"}));
 }
 
+// `hsb info FILE > dir/FILE.toml`, the file named relative to where hsb
+// ran: the pinned scene, read from another folder, finds the same data
+// and makes the same picture (evenly spaced seeds, the body's shape).
+TEST(PinnedScene, ADataFilePinnedElsewhereFindsItsData) {
+  const std::filesystem::path here = std::filesystem::current_path();
+  std::filesystem::current_path(std::string(HSB_SOURCE_DIR) + "/scenes/data");
+  const std::unique_ptr<PreparedScene> original = prepare(scene_for_data_file("cylinder_stress_coarse.vtu", {}));
+  const std::string pinned = pinned_scene_toml(*original);
+  std::filesystem::current_path(here);
+  SCOPED_TRACE(pinned);
+  const std::unique_ptr<PreparedScene> again = prepare(load_scene_text(pinned, "/tmp/elsewhere/c.toml", "/tmp/elsewhere"));
+  expect_same_picture(*original, *again);
+  EXPECT_EQ(original->render.width, again->render.width);
+  EXPECT_EQ(original->render.height, again->render.height);
+}
+
 TEST(PinnedScene, AnOrthographicViewRoundTrips) {
   round_trip(load_scene_text("[camera]\nview = \"top\"\nprojection = \"orthographic\"\n[glyphs]\n"
                              "mapping = \"normalized\"\n",

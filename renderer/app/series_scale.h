@@ -1,0 +1,26 @@
+#pragma once
+// One glyph scale and one colour range across the steps of a time series,
+// so that a growing load shows as growing glyphs and warming colours, not
+// as the same picture with other tick labels. Each step is rendered on its
+// own (a cluster node may render one step alone), so every step computes
+// the same shared settings from all of them and pins them.
+
+#include <string>
+#include <vector>
+
+namespace hsb {
+
+// One step: its scene (or data file) and the --set values that make it.
+struct SeriesMember {
+  std::string scene;
+  std::vector<std::string> overrides;
+};
+
+// The --set values that pin what the steps share, for every key the scene
+// leaves automatic: glyphs.scale, glyphs.floor and glyphs.ceiling of the
+// step with the largest stresses (the smallest automatic scale: no other
+// step's glyphs grow past its ceiling), and color.map and color.range over
+// the glyphs of all steps, by the rules of a single picture.
+std::vector<std::string> shared_series_settings(const std::vector<SeriesMember>& members);
+
+}  // namespace hsb
