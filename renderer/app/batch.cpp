@@ -108,7 +108,8 @@ std::vector<std::string> split_sweep(const std::string& value) {
   return parts;
 }
 
-Batch::Batch(const std::vector<std::string>& scenes, const std::vector<std::string>& overrides) {
+Batch::Batch(const std::vector<std::string>& scenes, const std::vector<std::string>& overrides, bool as_series)
+    : as_series_(as_series) {
   // The --set sweeps, in order; plain --set values stay as they are.
   std::vector<SweptKey> cli;
   for (const std::string& o : overrides) {
@@ -158,6 +159,15 @@ Batch::Batch(const std::vector<std::string>& scenes, const std::vector<std::stri
     size_ += scene.count;
     scenes_.push_back(std::move(scene));
   }
+  // The steps of a --series pair up item by item (step 1's first sweep
+  // value with step 2's), so each scene must make as many images.
+  if (as_series_)
+    for (const Scene& s : scenes_)
+      if (s.error.empty() && s.count != scenes_.front().count && scenes_.front().error.empty())
+        throw std::invalid_argument("--series: " + scenes_.front().path + " makes " +
+                                    std::to_string(scenes_.front().count) + " images but " + s.path + " makes " +
+                                    std::to_string(s.count) +
+                                    "; the steps of a series must sweep the same values");
 }
 
 BatchItem Batch::item(std::size_t position) const {
@@ -166,31 +176,54 @@ BatchItem Batch::item(std::size_t position) const {
   const Scene& scene = *std::prev(after);
   BatchItem item{scene.path, fixed_, "", scene.error};
   if (!scene.error.empty()) return item;
-  // The position within the scene in mixed radix, the last key fastest.
-  std::size_t rest = position - scene.first;
+  item.overrides = overrides_at(scene, position - scene.first, &item);
+  if (scene.series || as_series_) item.series = series_of(scene, position - scene.first);
+  return item;
+}
+
+std::vector<std::string> Batch::overrides_at(const Scene& scene, std::size_t offset, BatchItem* item) const {
+  // The offset in mixed radix, the last key fastest.
   std::vector<std::string> assignments(scene.swept.size());
   for (std::size_t k = scene.swept.size(); k-- > 0;) {
     const SweptKey& swept = scene.swept[k];
-    const std::size_t v = rest % swept.values.size();
+    const std::size_t v = offset % swept.values.size();
     assignments[k] = swept.key + "=" + swept.values[v];
-    if (!swept.where.empty()) item.sweep_origins.emplace_back(assignments[k], swept.where[v]);
-    rest /= swept.values.size();
+    if (item && !swept.where.empty()) item->sweep_origins.emplace_back(assignments[k], swept.where[v]);
+    offset /= swept.values.size();
   }
+  std::vector<std::string> overrides = fixed_;
   for (const std::string& a : assignments) {
-    item.overrides.push_back(a);
-    item.variant += (item.variant.empty() ? "" : ",") + a;
+    overrides.push_back(a);
+    if (item) item->variant += (item->variant.empty() ? "" : ",") + a;
   }
-  if (scene.series) {
+  return overrides;
+}
+
+std::vector<SeriesMember> Batch::series_of(const Scene& scene, std::size_t offset) const {
+  std::vector<SeriesMember> members;
+  const auto add_steps = [&](const Scene& s) {
+    const std::vector<std::string> overrides = overrides_at(s, offset, nullptr);
+    if (!s.series) {
+      members.push_back({s.path, overrides});
+      return;
+    }
     // The same item at every step: its data.step assignment (the first
     // swept, after the fixed values) replaced.
-    const std::size_t step_at = fixed_.size();
-    for (const std::string& step : scene.swept.front().values) {
-      SeriesMember member{item.scene, item.overrides};
-      member.overrides[step_at] = "data.step=" + step;
-      item.series.push_back(std::move(member));
+    for (const std::string& step : s.swept.front().values) {
+      SeriesMember member{s.path, overrides};
+      member.overrides[fixed_.size()] = "data.step=" + step;
+      members.push_back(std::move(member));
     }
+  };
+  if (!as_series_) {
+    add_steps(scene);
+    return members;
   }
-  return item;
+  // Scenes that cannot be read render (and fail) on their own; the rest
+  // share what the readable ones give.
+  for (const Scene& s : scenes_)
+    if (s.error.empty()) add_steps(s);
+  return members;
 }
 
 std::string located_error(const BatchItem& item, const std::string& message) {
@@ -206,8 +239,9 @@ std::size_t Batch::shard_size(Shard shard) const {
   return size_ > first ? (size_ - first - 1) / n + 1 : 0;
 }
 
-std::vector<BatchItem> expand_batch(const std::vector<std::string>& scenes, const std::vector<std::string>& overrides) {
-  const Batch batch(scenes, overrides);
+std::vector<BatchItem> expand_batch(const std::vector<std::string>& scenes, const std::vector<std::string>& overrides,
+                                    bool as_series) {
+  const Batch batch(scenes, overrides, as_series);
   std::vector<BatchItem> items;
   for (std::size_t i = 0; i < batch.size(); ++i) items.push_back(batch.item(i));
   return items;

@@ -59,7 +59,10 @@ Shard parse_shard(const std::string& text);
 class Batch {
  public:
   // Throws std::invalid_argument when the items would not fit a count.
-  Batch(const std::vector<std::string>& scenes, const std::vector<std::string>& overrides);
+  // `as_series`: the scenes given are the steps of one series (--series),
+  // sharing one glyph scale and colour range; they must make the same
+  // number of images (the same sweeps), or it throws.
+  Batch(const std::vector<std::string>& scenes, const std::vector<std::string>& overrides, bool as_series = false);
 
   std::size_t size() const { return size_; }
   BatchItem item(std::size_t position) const;
@@ -84,13 +87,21 @@ class Batch {
     std::size_t first = 0, count = 1;  // its items' positions
     bool series = false;  // its first swept key is the data.step the batch added
   };
+  // The overrides of `scene`'s item `offset` (its position within the
+  // scene), and the variant they make.
+  std::vector<std::string> overrides_at(const Scene& scene, std::size_t offset, BatchItem* item) const;
+  // What shares one scale with `scene`'s item `offset`: that item at every
+  // step of its own series, and at every scene of a --series.
+  std::vector<SeriesMember> series_of(const Scene& scene, std::size_t offset) const;
   std::vector<std::string> fixed_;  // the --set values that are not sweeps
   std::vector<Scene> scenes_;
   std::size_t size_ = 0;
+  bool as_series_ = false;
 };
 
 // Every item, in order (for a batch known to be small).
-std::vector<BatchItem> expand_batch(const std::vector<std::string>& scenes, const std::vector<std::string>& overrides);
+std::vector<BatchItem> expand_batch(const std::vector<std::string>& scenes, const std::vector<std::string>& overrides,
+                                    bool as_series = false);
 
 // `file` with the variant before its extension: "fig09.png" and
 // "glyphs.spacing=0.02" give "fig09_glyphs.spacing=0.02.png"; characters a

@@ -170,12 +170,16 @@ int main(int argc, char** argv) {
       "--shard, 106-109 for other command-line errors, 130 after Ctrl-C, 143 after SIGTERM.");
   render->add_flag("--stats", stats,
                    "Also print ray counts, support intervals and field evaluations per ray");
-  bool quiet = false, skip_existing = false;
+  bool quiet = false, skip_existing = false, as_series = false;
   std::string shard_text;
   render->add_flag("-q,--quiet", quiet, "No progress and no line per image; warnings and errors only");
   render->add_flag("--skip-existing", skip_existing,
                    "Skip an image whose file exists and holds this scene's hash (scene text, --set values,\n"
                    "data file): a re-run batch renders only what changed");
+  render->add_flag("--series", as_series,
+                   "The scenes or data files given are the steps of one series (plate_050.vtu plate_100.vtu ...):\n"
+                   "one glyph scale and colour range for all, so a growing load shows as growing glyphs, as the\n"
+                   "steps of a .pvd or Exodus file already do");
   render->add_option("--shard", shard_text,
                      "K/N: render only the K-th of N shares of the batch (item i when i mod N = K-1), e.g.\n"
                      "--shard $((SLURM_ARRAY_TASK_ID+1))/$SLURM_ARRAY_TASK_COUNT in a Slurm job array");
@@ -344,7 +348,7 @@ int main(int argc, char** argv) {
   std::optional<hsb::Batch> batch;
   try {
     if (!shard_text.empty()) shard = hsb::parse_shard(shard_text);
-    batch.emplace(scenes, overrides);
+    batch.emplace(scenes, overrides, as_series);
   } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "hsb: %s\n", e.what());
     return 2;

@@ -40,7 +40,7 @@ const char* const* view_names() {
 }
 
 Vec3 automatic_up(const Vec3& view) {
-  return std::fabs(view.normalized().z()) > 0.99 ? Vec3::UnitY() : Vec3::UnitZ();
+  return std::fabs(view.normalized().z()) > 0.9 ? Vec3::UnitY() : Vec3::UnitZ();
 }
 
 Vec3 automatic_view(const Box3& data, std::optional<int> plane_axis) {
@@ -52,7 +52,21 @@ Vec3 automatic_view(const Box3& data, std::optional<int> plane_axis) {
   rest[longest] = 0.0;
   // A compact body from the front-right, 23° above: lower than "iso", so
   // what stands on the top face is seen against the body, not the floor.
-  if (!(size[longest] > 2.0 * rest.maxCoeff())) return Vec3(0.95, -1.45, 0.75).normalized();
+  const Vec3 front_right(0.95, -1.45, 0.75);
+  // A flat body (a plate, a shell) from the side its faces look to, 15°
+  // off square so the glyphs keep their relief: seen from the compact
+  // view a plate is a sliver, its hole an ellipse 3:1, its glyphs a crowd.
+  Eigen::Index thinnest = 0;
+  size.minCoeff(&thinnest);
+  Vec3 others = size;
+  others[thinnest] = 0.0;
+  const double middle = others.sum() - others.maxCoeff();
+  if (size[thinnest] < 0.2 * middle) {
+    Vec3 view = 0.16 * front_right;
+    view[thinnest] = front_right[thinnest] > 0.0 ? 1.0 : -1.0;
+    return view.normalized();
+  }
+  if (!(size[longest] > 2.0 * rest.maxCoeff())) return front_right.normalized();
   // Looking across the long axis: from −y when it is x, from +x when it
   // is y; a tall body is seen from the front-right, not much from above.
   switch (longest) {

@@ -38,14 +38,16 @@ std::optional<Vec3> named_view(const std::string& name);
 // The names, for error messages and the reference.
 const char* const* view_names();
 
-// `up`: +z, or +y when looking along z.
+// `up`: +z, or +y when looking along z or within 25° of it (a flat
+// body seen from above keeps its edges square to the picture).
 Vec3 automatic_up(const Vec3& view);
 
 // For a compact body, from the front-right and 23° above (lower than
 // "iso"); for one at least twice as long as it is wide, from the side and
 // above, its length across the picture, the near end a little closer. A
-// 2-D result (its plane's normal along `plane_axis`) straight from above
-// its plane.
+// flat body (thinnest side under a fifth of the middle one) from the side
+// its faces look to, 15° off square. A 2-D result (its plane's normal
+// along `plane_axis`) straight from above its plane.
 Vec3 automatic_view(const Box3& data, std::optional<int> plane_axis = std::nullopt);
 
 // The parts of the picture a legend takes, as fractions of its width (at

@@ -162,6 +162,17 @@ for step in 1 2; do
   [[ $(shared "$work/series/grows/kirsch_plate_series_data.step=$step.png") == "$first" ]] ||
     fail "step $step has its own scale or range: $(shared "$work/series/grows/kirsch_plate_series_data.step=$step.png") against $first"
 done
+# The same steps as files given together: --series shares the scale;
+# without it each file is scaled on its own.
+steps=("$src"/scenes/data/formats/kirsch_plate_series_{0,1,2}.vtu)
+"$hsb" render "${steps[@]}" --series -o "$work/series/files" "${small[@]}" --quiet || fail "--series of files"
+for step in 0 1 2; do
+  [[ $(shared "$work/series/files/kirsch_plate_series_$step.png") == "$first" ]] ||
+    fail "--series: file $step has its own scale or range: $(shared "$work/series/files/kirsch_plate_series_$step.png")"
+done
+"$hsb" render "${steps[0]}" "${steps[2]}" -o "$work/series/apart" "${small[@]}" --quiet || fail "two files apart"
+[[ $(shared "$work/series/apart/kirsch_plate_series_0.png") != $(shared "$work/series/apart/kirsch_plate_series_2.png") ]] ||
+  fail "files given without --series share a scale"
 out=$("$hsb" render "$work/series/shaft.pvd" -o "$work/series/out" "${small[@]}" --set data.step=7 2>&1)
 grep -q "shaft.pvd: data.step 7 is beyond its 2 steps (0 to 1)" <<<"$out" || fail "step 7 of 2: $out"
 

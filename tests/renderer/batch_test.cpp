@@ -56,6 +56,35 @@ TEST(Batch, ASceneSweepTableAddsItsKeys) {
   EXPECT_EQ(expand_batch({(dir / "broken.toml").string()}, {}).size(), 1u);
 }
 
+TEST(Batch, FilesGivenAsASeriesShareTheirScaleItemByItem) {
+  const auto items = expand_batch({"p050.vtu", "p100.vtu", "p150.vtu"}, {"glyphs.mapping=sqrt,linear"}, true);
+  ASSERT_EQ(items.size(), 6u);
+  for (const BatchItem& item : items) {
+    ASSERT_EQ(item.series.size(), 3u) << item.scene;
+    // Each image shares with the same sweep value of every step, not with
+    // the other values of its own step.
+    for (const SeriesMember& member : item.series) EXPECT_EQ(member.overrides, item.overrides);
+  }
+  EXPECT_EQ(items[3].scene, "p100.vtu");
+  EXPECT_EQ(items[3].series[0].scene, "p050.vtu");
+  EXPECT_EQ(items[3].series[2].scene, "p150.vtu");
+  EXPECT_EQ(items[3].overrides, (std::vector<std::string>{"glyphs.mapping=linear"}));
+  // Without --series, files are unrelated pictures.
+  for (const BatchItem& item : expand_batch({"p050.vtu", "p100.vtu"}, {})) EXPECT_TRUE(item.series.empty());
+  // Steps that make different numbers of images cannot pair up.
+  const auto dir = test_temp_dir("batch_test");
+  const std::string swept = (dir / "swept_series.toml").string();
+  std::ofstream(swept) << "[sweep]\n\"glyphs.spacing\" = [0.1, 0.2]\n";
+  try {
+    Batch({"p050.vtu", swept}, {}, true);
+    ADD_FAILURE() << "steps of 1 and 2 images made one series";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("--series: p050.vtu makes 1 images but " + swept + " makes 2"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Batch, ShardsHoldEveryItemExactlyOnce) {
   std::vector<std::string> scenes;
   for (int i = 0; i < 23; ++i) scenes.push_back("s" + std::to_string(i) + ".toml");

@@ -119,6 +119,7 @@ TEST(CameraFraming, UpIsVerticalUnlessLookingAlongIt) {
   EXPECT_EQ(automatic_up(Vec3(1, -1, 1)), Vec3::UnitZ());
   EXPECT_EQ(automatic_up(Vec3(0, 0, 1)), Vec3::UnitY());
   EXPECT_EQ(automatic_up(Vec3(0, 0, -1)), Vec3::UnitY());
+  EXPECT_EQ(automatic_up(Vec3(0.1, -0.2, 1)), Vec3::UnitY());  // nearly along it
 }
 
 TEST(CameraFraming, LongBodiesAreSeenFromTheSide) {
@@ -128,6 +129,21 @@ TEST(CameraFraming, LongBodiesAreSeenFromTheSide) {
   EXPECT_GT(cube.x(), 0.3);
   EXPECT_LT(cube.y(), -0.3);
   EXPECT_GT(cube.z(), 0.2);
+}
+
+TEST(CameraFraming, FlatBodiesAreSeenFacingTheirFaces) {
+  // A plate in the xy plane from above, one in xz from the front, one in
+  // yz from the right: within 20° of square, never edge-on.
+  const Vec3 normals[] = {Vec3::UnitZ(), -Vec3::UnitY(), Vec3::UnitX()};
+  const Vec3 sizes[] = {Vec3(2, 1, 0.05), Vec3(1, 0.01, 3), Vec3(0.1, 1, 1)};
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 view = automatic_view(Box3{Vec3::Zero(), sizes[i]});
+    EXPECT_GT(view.dot(normals[i]), std::cos(20.0 * M_PI / 180.0)) << sizes[i].transpose();
+    EXPECT_LT(view.dot(normals[i]), std::cos(10.0 * M_PI / 180.0)) << "square on, no relief: " << sizes[i].transpose();
+  }
+  // A beam as high as it is wide is not flat: seen from the side.
+  const Vec3 beam = automatic_view(Box3{Vec3::Zero(), Vec3(2, 0.1, 0.2)});
+  EXPECT_LT(std::fabs(beam.z()), 0.7);
 }
 
 TEST(CameraFraming, AnEmptyBoxStillGivesACamera) {
