@@ -16,6 +16,7 @@ constexpr double kFixedGap = 0.3;
 constexpr double kReferencePercentile = 0.9;
 constexpr double kCeilingOverReference = 3.0;
 constexpr double kFloorUnderReference = 1.0 / 20.0;
+constexpr double kFloorOnLines = 1.0 / 8.0;
 // Evenly spaced seeding: the body's measure over the separation's cube
 // (square, length).
 constexpr double kLinesAcrossVolume = 150.0;
@@ -91,7 +92,7 @@ double site_gap(const Box3& domain, std::size_t count) {
 }
 
 GlyphMapping automatic_glyph_mapping(const GlyphSizeSpec& spec, const std::vector<Vec3>& eigenvalues,
-                                     const Box3& domain, double glyph_extent, std::optional<double> gap) {
+                                     const Box3& domain, double glyph_extent, std::optional<double> gap, bool lines) {
   const bool by_magnitude = maps_magnitude(spec.mapping);
   const double reference_size = gap ? *gap * (by_magnitude ? kMagnitudeGap : kFixedGap)
                                     : domain.diagonal() * (by_magnitude ? kMagnitudeGlyph : kFixedGlyph);
@@ -118,7 +119,7 @@ GlyphMapping automatic_glyph_mapping(const GlyphSizeSpec& spec, const std::vecto
   // a pinned scale keeps its picture: in radii, the reference is this.
   const double reference = m.scale * reference_radius;
   m.ceiling = spec.ceiling.value_or(kCeilingOverReference * reference);
-  m.floor = spec.floor.value_or(kFloorUnderReference * std::min(reference, m.ceiling));
+  m.floor = spec.floor.value_or((lines ? kFloorOnLines : kFloorUnderReference) * std::min(reference, m.ceiling));
   // A pinned floor above the automatic ceiling wins: the user asked for it.
   if (!spec.ceiling) m.ceiling = std::max(m.ceiling, m.floor);
   return m;

@@ -70,7 +70,9 @@ double site_gap(const Box3& domain, std::size_t count);
 //  - floor: no radius smaller than 1/20 of the reference's (or of the
 //    ceiling's, if that is smaller): a flat glyph or a needle stays wide
 //    enough to see, a pixel or two, and the glyphs of small stresses
-//    shrink to dots, as in the paper's Figure 5.
+//    shrink to dots, as in the paper's Figure 5. On evenly spaced lines
+//    (`lines`), 1/8: a line of uniaxial stress is a needle whose other
+//    radii are all floor, and it must read as a tube, not a hairline.
 // With a pinned scale, floor and ceiling follow the reference glyph at
 // that scale.
 // A percentile rather than the maximum, because stress fields have
@@ -78,6 +80,6 @@ double site_gap(const Box3& domain, std::size_t count);
 // to nothing. `eigenvalues` are the sources' (zero tensors are ignored).
 GlyphMapping automatic_glyph_mapping(const GlyphSizeSpec& spec, const std::vector<Vec3>& eigenvalues,
                                      const Box3& domain, double glyph_extent,
-                                     std::optional<double> gap = std::nullopt);
+                                     std::optional<double> gap = std::nullopt, bool lines = false);
 
 }  // namespace hsb

@@ -72,7 +72,7 @@ std::size_t seed_count(const SeedSpec& spec) {
 // Before the seeds are even made: the seeds and the longest trajectories
 // they could grow must fit in memory.
 void check_seed_and_trajectory_memory(const GlyphValues& values, SourcePlacement placement) {
-  const double seeds = double(seed_count(values.seeds));
+  const double seeds = double(seed_count(values.seeds)) * double(values.families.size());  // a line per family
   std::ostringstream what;
   if (placement == SourcePlacement::at_seeds) {
     what << "the glyphs (one at each of " << std::size_t(seeds) << " seeds)";
@@ -105,7 +105,7 @@ std::vector<Vec3> all_seeds(const SeedSpec& spec, const Box3& bounds) {
 // a flow, its largest speed).
 // `separation`: evenly spaced seeding's, when it applies.
 GlyphValues resolve_lengths(const GlyphPipelineSpec& spec, const Box3& domain, const LoadedField& loaded,
-                            std::optional<double> separation) {
+                            std::optional<double> separation, const std::vector<EigenFamily>& families) {
   GlyphValues v;
   v.seeds = spec.seeds;
   v.seeds.strategy = spec.seeds.resolved_strategy();
@@ -118,7 +118,8 @@ GlyphValues resolve_lengths(const GlyphPipelineSpec& spec, const Box3& domain, c
     v.seeds.importance = spec.seeds.importance.value_or(loaded.vectors == nullptr);
   }
   TrajectoryOptions& t = v.trajectory;
-  t.family = spec.trajectory.family;
+  t.family = families.front();
+  v.families = families;
   t.step = spec.trajectory.step.value_or(automatic_step(domain, separation));
   t.max_length = spec.trajectory.max_length.value_or(automatic_max_length(domain));
   t.degeneracy_tolerance = spec.trajectory.degeneracy_tolerance;
@@ -235,12 +236,18 @@ ColorScalar family_eigenvalue(EigenFamily family) {
 // The colour scalar, resolved: the traced family's eigenvalue for tensors
 // and the speed for a flow by default; one that the data cannot give is
 // an error.
-ColorScalar resolve_color(const GlyphPipelineSpec& spec, const LoadedField& loaded) {
+ColorScalar resolve_color(const GlyphPipelineSpec& spec, const LoadedField& loaded,
+                          const std::vector<EigenFamily>& families, SourcePlacement placement) {
   const bool flow = loaded.vectors != nullptr;
-  const ColorScalar c = spec.color.value_or(flow ? ColorScalar::speed : family_eigenvalue(spec.trajectory.family));
+  const bool several = families.size() > 1 && placement == SourcePlacement::along_trajectories;
+  ColorScalar c = spec.color.value_or(flow      ? ColorScalar::speed
+                                      : several ? ColorScalar::family_eigenvalue
+                                                : family_eigenvalue(families.front()));
+  // Glyphs not on lines (or on one family's) show the first family's.
+  if (c == ColorScalar::family_eigenvalue && !several) c = family_eigenvalue(families.front());
   const std::string& file = spec.data.file.path;
   const bool eigen = c == ColorScalar::lambda1 || c == ColorScalar::lambda2 || c == ColorScalar::lambda3 ||
-                     c == ColorScalar::mean || c == ColorScalar::von_mises;
+                     c == ColorScalar::mean || c == ColorScalar::von_mises || c == ColorScalar::family_eigenvalue;
   if (flow && eigen)
     throw DataError(file + ": glyphs.color_by = \"" + color_scalar_name(c) +
                     "\" needs tensors, and this file is read as a flow (vectors): colour by \"speed\" or "
@@ -324,8 +331,29 @@ GlyphScene given_sources(const GlyphPipelineSpec& spec, double glyph_extent) {
 
 namespace {
 
-// Evenly spaced trajectories (even_seeding.h) through the body; the seeds
-// taken are recorded in the values, in the frame the scene gives seeds in.
+// Below this share of the body's typical stress, a family's line ends
+// when several are traced: a tension line stops where the tension fades,
+// and the compression lines take over there.
+constexpr double kFamilyFloor = 0.05;
+
+// The median of the magnitudes over the body: m_ref of even_seeding.h.
+double median_magnitude(const BodyLattice& body) {
+  std::vector<double> positive;
+  for (double m : body.magnitudes)
+    if (m > 0.0 && std::isfinite(m)) positive.push_back(m);
+  if (positive.empty()) return 0.0;
+  const auto middle = positive.begin() + std::ptrdiff_t(positive.size() / 2);
+  std::nth_element(positive.begin(), middle, positive.end());
+  return *middle;
+}
+
+// Evenly spaced trajectories (even_seeding.h) through the body, for each
+// family traced. Each family keeps its own lines apart: lines of two
+// families cross at right angles by nature. With several families, each
+// is as dense as its own |λ_k| against the body's typical stress, ends
+// where that fades, and leaves no lone glyphs (another family traces
+// there), unless no family finds a line anywhere. The seeds taken are
+// recorded in the values, in the frame the scene gives seeds in.
 EvenTrajectories trace_evenly(GlyphScene& scene, const BodyLattice& body, const MagnitudeSampler& magnitude,
                               const TensorField* tensors, const VectorField* flow) {
   GlyphValues& values = scene.values;
@@ -333,26 +361,57 @@ EvenTrajectories trace_evenly(GlyphScene& scene, const BodyLattice& body, const 
   options.separation = *values.seeds.separation;
   options.importance = *values.seeds.importance;
   if (scene.plane_axis) options.plane_normal = Vec3::Unit(*scene.plane_axis);
-  TrajectoryOptions trajectory = values.trajectory;
-  const DirectionSampler direction = [&](const Vec3& x) {
-    return flow ? flow_direction(*flow, x, trajectory) : eigen_direction(*tensors, x, trajectory);
-  };
-  if (flow) trajectory.signed_directions = true;
+  const bool several = values.families.size() > 1;
+  if (several) {
+    options.reference_magnitude = median_magnitude(body);
+    options.lone_glyphs = false;
+  }
   const std::vector<Vec3> given = all_seeds(values.seeds, scene.domain);
-  EvenTrajectories lines = evenly_spaced_trajectories(direction, magnitude, given, body, trajectory, options);
-  values.reference_magnitude = lines.reference_magnitude;
+  EvenTrajectories all;
+  const auto trace_family = [&](EigenFamily family, bool per_family) {
+    TrajectoryOptions trajectory = values.trajectory;
+    trajectory.family = family;
+    if (flow) trajectory.signed_directions = true;
+    BodyLattice pool = body;
+    MagnitudeSampler own = magnitude;
+    if (per_family) {
+      trajectory.family_magnitude = true;
+      trajectory.min_family_value = kFamilyFloor * *options.reference_magnitude;
+      own = [&, family](const Vec3& x) -> std::optional<double> {
+        const std::optional<Sym3> t = tensors->sample(x);
+        return t ? std::optional<double>(std::fabs(decompose(*t).values(int(family)))) : std::nullopt;
+      };
+      for (std::size_t i = 0; i < pool.points.size(); ++i) pool.magnitudes[i] = own(pool.points[i]).value_or(0.0);
+    }
+    const DirectionSampler direction = [&](const Vec3& x) {
+      return flow ? flow_direction(*flow, x, trajectory) : eigen_direction(*tensors, x, trajectory);
+    };
+    EvenTrajectories lines = evenly_spaced_trajectories(direction, own, given, pool, trajectory, options);
+    all.reference_magnitude = lines.reference_magnitude;
+    all.reached_max_lines = all.reached_max_lines || lines.reached_max_lines;
+    all.seeds.insert(all.seeds.end(), lines.seeds.begin(), lines.seeds.end());
+    for (Trajectory& t : lines.trajectories) all.trajectories.push_back(std::move(t));
+  };
+  for (EigenFamily family : values.families) trace_family(family, several);
+  if (several && all.trajectories.empty()) {
+    // Isotropic everywhere: no family has a direction; lone glyphs show
+    // the sizes at least.
+    options.lone_glyphs = true;
+    trace_family(values.families.front(), false);
+  }
+  values.reference_magnitude = all.reference_magnitude;
   const Box3& b = scene.domain;
-  values.seeds.points = lines.seeds;
+  values.seeds.points = all.seeds;
   values.seeds.grids.clear();
   if (values.seeds.frame == SeedFrame::bounds)
     for (Vec3& p : values.seeds.points) p = (p - b.lo).cwiseQuotient(b.size().cwiseMax(Vec3::Constant(1e-300)));
-  if (lines.reached_max_lines) {
+  if (all.reached_max_lines) {
     std::ostringstream text;
     text << "evenly spaced seeding stopped at " << options.max_lines << " trajectories (seeds.separation "
          << options.separation << "): parts of the body may have none; raise seeds.separation";
     scene.warnings.push_back(text.str());
   }
-  return lines;
+  return all;
 }
 
 }  // namespace
@@ -373,7 +432,6 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   const VectorField* flow = loaded.vectors.get();
   GlyphScene scene;
   scene.flow = flow != nullptr;
-  scene.color = resolve_color(spec, loaded);
   scene.domain = flow ? flow->bounds() : tensors->bounds();
   if (with_domain) with_domain(scene.domain);
   scene.boundary = std::move(loaded.boundary);
@@ -384,6 +442,12 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   // the step, the spacing and the glyph size.
   const bool even = scene.placement != SourcePlacement::at_data_points &&
                     spec.seeds.resolved_strategy() == SeedStrategy::even;
+  std::vector<EigenFamily> families = spec.trajectory.families;
+  if (families.empty()) families = {EigenFamily::major};
+  if (spec.trajectory.families.empty() && !flow && even && scene.placement == SourcePlacement::along_trajectories)
+    families = {EigenFamily::major, EigenFamily::minor};
+  if (flow) families = {EigenFamily::major};  // a flow has one direction
+  scene.color = resolve_color(spec, loaded, families, scene.placement);
   const MagnitudeSampler magnitude = [&](const Vec3& x) -> std::optional<double> {
     if (flow) {
       const std::optional<Vec3> v = flow->sample(x);
@@ -399,7 +463,7 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
     separation = spec.seeds.separation.value_or(automatic_separation(body));
     if (!(*separation > 0.0)) separation = scene.domain.diagonal() / 10.0;  // no body: nothing will be found anyway
   }
-  scene.values = resolve_lengths(spec, scene.domain, loaded, separation);
+  scene.values = resolve_lengths(spec, scene.domain, loaded, separation, families);
   if (data.kind == DataKind::point_load) scene.values.singular_radius = data.point_load.singular_radius;
   const GlyphValues& values = scene.values;
   std::vector<Vec3> seeds;
@@ -412,11 +476,13 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
     seeds = all_seeds(values.seeds, scene.domain);
   }
 
-  // The source at a point: a tensor glyph or a streamball, coloured by the
-  // chosen scalar or by the colour array there.
-  const ColorScalar color = scene.color;
-  const ScalarField* color_array = color == ColorScalar::array ? loaded.color.get() : nullptr;
-  const SourceMaker make = [&](const Vec3& p) -> std::optional<GlyphSource> {
+  // The source at a point of a line of `family`: a tensor glyph or a
+  // streamball, coloured by the chosen scalar (each line's own eigenvalue
+  // for family_eigenvalue) or by the colour array there.
+  const ScalarField* color_array = scene.color == ColorScalar::array ? loaded.color.get() : nullptr;
+  const auto maker = [&](EigenFamily family) -> SourceMaker {
+    const ColorScalar color = scene.color == ColorScalar::family_eigenvalue ? family_eigenvalue(family) : scene.color;
+    return [&, color](const Vec3& p) -> std::optional<GlyphSource> {
     std::optional<GlyphSource> source;
     if (flow) {
       if (const std::optional<Vec3> v = flow->sample(p)) source = make_flow_source(p, *v, color);
@@ -429,7 +495,10 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
       source->scalar = *value;
     }
     return source;
+    };
   };
+  const ColorScalar color = scene.color;
+  const SourceMaker make = maker(values.families.front());
 
   std::optional<double> gap;  // between glyphs at data points, or lines evenly spaced
   if (scene.placement == SourcePlacement::at_data_points) {
@@ -454,10 +523,14 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
     // Each seed writes only its own slots, and the slots are concatenated in
     // seed order afterwards, so the result is independent of scheduling.
     if (!even) {
-      scene.trajectories.resize(seeds.size());
-      tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t i) {
-        scene.trajectories[i] = flow ? trace_streamline(*flow, seeds[i], values.trajectory)
-                                     : trace_trajectory(*tensors, seeds[i], values.trajectory);
+      // Every seed, once per family traced.
+      const std::size_t n = seeds.size();
+      scene.trajectories.resize(n * values.families.size());
+      tbb::parallel_for(std::size_t{0}, scene.trajectories.size(), [&](std::size_t i) {
+        TrajectoryOptions options = values.trajectory;
+        options.family = values.families[i / n];
+        scene.trajectories[i] = flow ? trace_streamline(*flow, seeds[i % n], options)
+                                     : trace_trajectory(*tensors, seeds[i % n], options);
       });
     } else {
       gap = line_gap(*separation);
@@ -465,15 +538,16 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
     double count = 0.0;
     for (const Trajectory& t : scene.trajectories) count += source_count(t, values.spacing);
     std::ostringstream what;
-    what << "the glyph sources (" << std::setprecision(count < 1e15 ? 15 : 3) << count << " of them along " << seeds.size()
+    what << "the glyph sources (" << std::setprecision(count < 1e15 ? 15 : 3) << count << " of them along "
+         << scene.trajectories.size()
          << " trajectories at glyphs.spacing " << values.spacing << ")";
     scene.memory_estimate = resident_bytes() + count * kBytesPerSource;
     check_memory(scene.memory_estimate, what.str(), "raise glyphs.spacing");
-    std::vector<std::vector<GlyphSource>> per_seed(seeds.size());
-    tbb::parallel_for(std::size_t{0}, seeds.size(), [&](std::size_t i) {
-      per_seed[i] = place_sources(scene.trajectories[i], values.spacing, make);
+    std::vector<std::vector<GlyphSource>> per_line(scene.trajectories.size());
+    tbb::parallel_for(std::size_t{0}, per_line.size(), [&](std::size_t i) {
+      per_line[i] = place_sources(scene.trajectories[i], values.spacing, maker(scene.trajectories[i].family));
     });
-    for (const std::vector<GlyphSource>& sources : per_seed)
+    for (const std::vector<GlyphSource>& sources : per_line)
       scene.sources.insert(scene.sources.end(), sources.begin(), sources.end());
   }
 
@@ -481,7 +555,8 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   std::vector<Vec3> eigenvalues;
   eigenvalues.reserve(scene.sources.size());
   for (const GlyphSource& s : scene.sources) eigenvalues.push_back(s.eigenvalues);
-  scene.values.mapping = automatic_glyph_mapping(spec.size, eigenvalues, scene.domain, glyph_extent, gap);
+  const bool on_lines = even && scene.placement == SourcePlacement::along_trajectories;
+  scene.values.mapping = automatic_glyph_mapping(spec.size, eigenvalues, scene.domain, glyph_extent, gap, on_lines);
   size_sources(scene.sources, scene.values.mapping);
   if (flow && spec.stretch != 1.0) stretch_sources(scene.sources, spec.stretch);
   if (scene.plane_axis)

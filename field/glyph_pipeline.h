@@ -81,7 +81,10 @@ struct SeedSpec {
 
 // The scene's [trajectories]; what it leaves out is automatic.
 struct TrajectorySpec {
-  EigenFamily family = EigenFamily::major;
+  // The families traced, each with lines of its own. Automatic (empty):
+  // major and minor for tensors seeded evenly (tension and compression
+  // lines, each coloured by its own eigenvalue), major otherwise.
+  std::vector<EigenFamily> families;
   std::optional<double> step, max_length;
   double degeneracy_tolerance = 1e-3;
   // Automatic: 0 for tensors; for a flow, a thousandth of its largest
@@ -136,7 +139,8 @@ struct GlyphValues {
   // they can be shown and pinned.
   SeedSpec seeds;
   double reference_magnitude = 0.0;  // even seeding's median magnitude
-  TrajectoryOptions trajectory;
+  TrajectoryOptions trajectory;  // its family: the first traced
+  std::vector<EigenFamily> families;  // every family traced, resolved
   double spacing = 0.0;
   int stride = 1;  // placement points
   GlyphMapping mapping;

@@ -44,6 +44,7 @@ const char* color_scalar_name(ColorScalar c) {
     case ColorScalar::lambda3: return "lambda3";
     case ColorScalar::mean: return "mean";
     case ColorScalar::von_mises: return "von_mises";
+    case ColorScalar::family_eigenvalue: return "family_eigenvalue";
     case ColorScalar::speed: return "speed";
     case ColorScalar::array: return "array";
     case ColorScalar::arc_length: return "arc_length";
@@ -67,6 +68,7 @@ double color_scalar(const Vec3& eigenvalues, ColorScalar which) {
       return std::sqrt(0.5 * ((l1 - l2) * (l1 - l2) + (l2 - l3) * (l2 - l3) +
                               (l3 - l1) * (l3 - l1)));
     case ColorScalar::speed:
+    case ColorScalar::family_eigenvalue:  // resolved per line by the pipeline; λ1 for a lone source
       return l1;
     case ColorScalar::array:
     case ColorScalar::arc_length:

@@ -28,7 +28,9 @@ struct GlyphMapping {
 // The scalar that colours a glyph: of a tensor's eigenvalues; a flow's
 // speed; a scalar array of the data file, sampled at the glyph's centre;
 // the position along a curve (0 at its start, 1 at its end).
-enum class ColorScalar { lambda1, lambda2, lambda3, mean, von_mises, speed, array, arc_length };
+// family_eigenvalue: each line's own family's (λ1 on major lines, λ3 on
+// minor ones), for several families in one picture.
+enum class ColorScalar { lambda1, lambda2, lambda3, mean, von_mises, family_eigenvalue, speed, array, arc_length };
 
 // Radii r_1, r_2, r_3 for eigenvalues λ1 ≥ λ2 ≥ λ3.
 Vec3 map_radii(const Vec3& eigenvalues, const GlyphMapping& mapping);

@@ -15,6 +15,10 @@ namespace {
 class Importance {
  public:
   Importance(const BodyLattice& pool, const EvenSeedingOptions& options) : options_(options) {
+    if (options.reference_magnitude) {
+      reference_ = *options.reference_magnitude;
+      return;
+    }
     std::vector<double> positive;
     for (double m : pool.magnitudes)
       if (m > 0.0 && std::isfinite(m)) positive.push_back(m);
@@ -184,7 +188,7 @@ EvenTrajectories evenly_spaced_trajectories(const DirectionSampler& sampler, con
     seed_separation = d;
     Trajectory t = trace_directions(stopping, c.point, trajectory);
     if (t.points.size() < 2 && c.origin != Origin::isolated) {
-      offer(c.point, c.magnitude, Origin::isolated);
+      if (options.lone_glyphs) offer(c.point, c.magnitude, Origin::isolated);
       continue;
     }
     stop_at_own_approach(t, options.stop_ratio * importance.separation(c.magnitude));

@@ -38,6 +38,13 @@ struct EvenSeedingOptions {
   bool importance = true;    // d follows the magnitude (the rule above)
   std::optional<Vec3> plane_normal;  // a 2-D result: neighbours beside the line, in its plane
   std::size_t max_lines = 4000;      // a guard against a separation far too small
+  // m_ref given rather than the pool's median: the families of one picture
+  // share the body's reference, so each is dense where its own stress is
+  // large against the stress typical of the body.
+  std::optional<double> reference_magnitude;
+  // Seeds where no line starts stand as lone glyphs (the last rule above);
+  // false: they are dropped (another family traces there).
+  bool lone_glyphs = true;
 };
 
 struct EvenTrajectories {

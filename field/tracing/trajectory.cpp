@@ -32,7 +32,11 @@ DirectionSample eigen_direction(const TensorField& field, const Vec3& x,
   const Eigensystem es = decompose(*s);
   const int k = static_cast<int>(options.family);
   const Vec3& l = es.values;
-  result.magnitude = l.cwiseAbs().maxCoeff();
+  result.magnitude = options.family_magnitude ? std::fabs(l(k)) : l.cwiseAbs().maxCoeff();
+  if (options.family_magnitude && std::fabs(l(k)) < options.min_family_value) {
+    result.stop = StopReason::low_magnitude;
+    return result;
+  }
   // The followed eigenvector is only defined while its eigenvalue is
   // separated from its neighbours in the ordering; λ1 ≥ λ2 ≥ λ3, so the
   // nearest other eigenvalue is always an adjacent one.
@@ -210,6 +214,7 @@ Trajectory trace_directions(const DirectionSampler& sampler, const Vec3& seed,
     throw std::invalid_argument("trajectory: max_length must be >= 0");
 
   Trajectory result;
+  result.family = options.family;
   result.points.push_back(seed);
   const DirectionSample first = sampler(seed);
   if (!first.ok) {

@@ -36,11 +36,17 @@ struct TrajectoryOptions {
   TraceDirection direction = TraceDirection::both;
   // Eigenvectors are sign-free; a flow's vectors are not (streamlines).
   bool signed_directions = false;
+  // Tracing several families in one picture: each line's magnitude is its
+  // own eigenvalue's |λ_k| (not max |λ|), and it stops where that falls
+  // below this (a tension line ends where the tension fades; 0: never).
+  bool family_magnitude = false;
+  double min_family_value = 0.0;
 };
 
 struct Trajectory {
   // Ordered from the backward end through the seed to the forward end.
   std::vector<Vec3> points;
+  EigenFamily family = EigenFamily::major;  // the eigenvector it follows (tensor lines)
   std::size_t seed_index = 0;
   StopReason backward_stop = StopReason::max_length;
   StopReason forward_stop = StopReason::max_length;

@@ -46,9 +46,18 @@ double median_glyph_size(const std::vector<GlyphSource>& sources, double extent,
   return sizes[sizes.size() / 2];
 }
 
+// "major", or "major+minor" for several families, as the scene names them.
+std::string family_names(const std::vector<EigenFamily>& families) {
+  static const char* const names[] = {"major", "medium", "minor"};
+  std::string text;
+  for (EigenFamily f : families) text += (text.empty() ? "" : "+") + std::string(names[int(f)]);
+  return text;
+}
+
 // The colour bar's automatic title.
 std::string scalar_title(ColorScalar scalar, const SceneSpec& spec) {
   switch (scalar) {
+    case ColorScalar::family_eigenvalue: return "each line's eigenvalue: λ₁ on major, λ₃ on minor";
     case ColorScalar::lambda1: return "major eigenvalue λ₁";
     case ColorScalar::lambda2: return "medium eigenvalue λ₂";
     case ColorScalar::lambda3: return "minor eigenvalue λ₃";
@@ -149,9 +158,13 @@ void record_field_values(PreparedScene& p) {
       p.resolve("seeds.separation", *v.seeds.separation);
       p.resolve("seeds.importance", *v.seeds.importance);
       // The seeds it took, so a pinned scene takes the same ones first.
-      toml::array points;
-      for (const Vec3& seed : v.seeds.points) points.push_back(toml_vec3(seed));
-      p.resolve("seeds.points", std::move(points));
+      // Not for several families: each would take the others' seeds too,
+      // and the rule alone, deterministic, gives the same lines again.
+      if (v.families.size() == 1) {
+        toml::array points;
+        for (const Vec3& seed : v.seeds.points) points.push_back(toml_vec3(seed));
+        p.resolve("seeds.points", std::move(points));
+      }
     } else if (s.seeds.grids.empty() && s.seeds.points.empty()) {
       toml::array grids;
       for (const SeedGridSpec& g : v.seeds.grids)
@@ -162,6 +175,8 @@ void record_field_values(PreparedScene& p) {
     // Seeds are recorded in the frame they were made in.
     p.resolve("seeds.frame", v.seeds.frame == SeedFrame::bounds ? "bounds" : "world");
   }
+  if (!p.glyphs.flow && p.glyphs.placement != SourcePlacement::at_data_points)
+    p.resolve("trajectories.family", family_names(v.families));
   p.resolve("trajectories.step", v.trajectory.step);
   p.resolve("trajectories.max_length", v.trajectory.max_length);
   p.resolve("trajectories.min_magnitude", v.trajectory.min_magnitude);

@@ -137,8 +137,10 @@ void read_seeds(TableReader& seeds, SeedSpec& spec) {
 }
 
 void read_trajectories(TableReader& t, TrajectorySpec& spec) {
-  spec.family = t.choice<EigenFamily>("family", {{"major", EigenFamily::major}, {"medium", EigenFamily::medium},
-                                    {"minor", EigenFamily::minor}});
+  if (t.has("family"))
+    spec.families = t.choice<std::vector<EigenFamily>>(
+        "family", {{"major", {EigenFamily::major}}, {"medium", {EigenFamily::medium}}, {"minor", {EigenFamily::minor}},
+                   {"major+minor", {EigenFamily::major, EigenFamily::minor}}});
   spec.step = t.optional_number("step");
   spec.max_length = t.optional_number("max_length");
   spec.degeneracy_tolerance = t.number("degeneracy");
@@ -216,7 +218,7 @@ void read_glyphs(TableReader& g, GlyphPipelineSpec& spec, const std::string& bas
   } else if (g.has("color_by")) {
     std::vector<std::pair<std::string, ColorScalar>> names;
     for (ColorScalar c : {ColorScalar::lambda1, ColorScalar::lambda2, ColorScalar::lambda3, ColorScalar::mean,
-                          ColorScalar::von_mises, ColorScalar::speed, ColorScalar::arc_length})
+                          ColorScalar::von_mises, ColorScalar::family_eigenvalue, ColorScalar::speed, ColorScalar::arc_length})
       names.emplace_back(color_scalar_name(c), c);
     spec.color = g.choice("color_by", names);
   }

@@ -94,7 +94,7 @@ std::vector<std::string> view_choices() {
 std::vector<std::string> color_by_choices() {
   std::vector<std::string> names;
   for (ColorScalar c : {ColorScalar::lambda1, ColorScalar::lambda2, ColorScalar::lambda3, ColorScalar::mean,
-                        ColorScalar::von_mises, ColorScalar::speed, ColorScalar::arc_length})
+                        ColorScalar::von_mises, ColorScalar::family_eigenvalue, ColorScalar::speed, ColorScalar::arc_length})
     names.emplace_back(color_scalar_name(c));
   return names;
 }
@@ -161,7 +161,9 @@ std::vector<KeySchema> build_keys() {
       Key("seeds.grid.m", T::integer, "seeds along edge_v").range(1, 10000).fallback("3"),
 
       // [trajectories]
-      Key("trajectories.family", T::choice, "the eigenvector followed").choices({"major", "medium", "minor"}).fallback("\"major\""),
+      Key("trajectories.family", T::choice, "the eigenvector followed (\"major+minor\": both, each with its own lines)")
+          .choices({"major", "medium", "minor", "major+minor"})
+          .automatic("\"major+minor\" for tensors seeded evenly (tension and compression lines), else \"major\""),
       Key("trajectories.step", T::number, "RK4 step, in arc length").length().automatic("D/400"),
       Key("trajectories.max_length", T::number, "longest trajectory in each direction").length().automatic("2·D"),
       Key("trajectories.degeneracy", T::number, "stop where the eigenvalue gap is below this fraction of max|λ|")
@@ -185,7 +187,8 @@ std::vector<KeySchema> build_keys() {
       Key("glyphs.ceiling", T::number, "largest radius (inf for none)").length().infinite_allowed()
           .automatic("three times the reference glyph's"),
       Key("glyphs.color_by", T::choice, "the colour scalar, or \"array:NAME\"").choices(color_by_choices())
-          .automatic("the traced family's eigenvalue (major: \"lambda1\") for tensors, \"speed\" for a flow"),
+          .automatic("the traced family's eigenvalue (major: \"lambda1\"; several families: \"family_eigenvalue\", "
+                     "each line's own) for tensors, \"speed\" for a flow"),
       Key("glyphs.thickness", T::number, "2-D data: the glyphs' thickness across the plane").length()
           .automatic("each glyph's smaller in-plane diameter"),
       Key("glyphs.stretch", T::number, "streamballs: the radius along the flow times this").range(1.0, 100.0).fallback("1"),

@@ -162,6 +162,9 @@ for step in 1 2; do
   [[ $(shared "$work/series/grows/kirsch_plate_series_data.step=$step.png") == "$first" ]] ||
     fail "step $step has its own scale or range: $(shared "$work/series/grows/kirsch_plate_series_data.step=$step.png") against $first"
 done
+# ... and one picture size (an animation's frames must not jump).
+sizes=$(for step in 0 1 2; do oiiotool --info "$work/series/grows/kirsch_plate_series_data.step=$step.png" | grep -o '[0-9]* x *[0-9]*'; done | sort -u)
+[[ $(grep -c . <<<"$sizes") == 1 ]] || fail "a series' steps differ in size: $sizes"
 # The same steps as files given together: --series shares the scale;
 # without it each file is scaled on its own.
 steps=("$src"/scenes/data/formats/kirsch_plate_series_{0,1,2}.vtu)

@@ -62,10 +62,11 @@ std::string grid_file(const std::string& name, const Box3& box, const std::array
   return written_by<vtkXMLImageDataWriter>(image, test_temp_dir("default_features") / name);
 }
 
-GlyphScene default_scene(const std::string& path) {
+GlyphScene default_scene(const std::string& path, std::vector<EigenFamily> families = {}) {
   GlyphPipelineSpec spec;
   spec.data.kind = DataKind::vtk_file;
   spec.data.file.path = path;
+  spec.trajectory.families = std::move(families);
   return build_glyph_scene(spec, kExtent);
 }
 
@@ -186,6 +187,27 @@ TEST(DefaultFeatures, ABentBeamGetsLinesInBothHalves) {
   for (const GlyphSource& s : scene.sources) (s.centre.y() > 0 ? top : bottom) += 1;
   EXPECT_GT(top, scene.sources.size() / 5);
   EXPECT_GT(bottom, scene.sources.size() / 5);
+  // Tension against compression: the default traces both families, so
+  // the compressed half has long minor (compression) lines of its own,
+  // coloured by their negative λ3, as the stretched half has major ones
+  // coloured by a positive λ1.
+  std::size_t tension = 0, compression = 0;
+  for (const Trajectory& t : scene.trajectories) {
+    if (t.length() < L / 4) continue;
+    const double y = t.points[t.seed_index].y();
+    if (t.family == EigenFamily::major && y < -0.1) ++tension;
+    if (t.family == EigenFamily::minor && y > 0.1) ++compression;
+  }
+  EXPECT_GE(tension, 2u);
+  EXPECT_GE(compression, 2u) << "no compression line along the compressed half";
+  double most_compressive = 0.0, most_tensile = 0.0;
+  for (const GlyphSource& s : scene.sources) {
+    if (s.centre.y() > 0.3) most_compressive = std::min(most_compressive, s.scalar);
+    if (s.centre.y() < -0.3) most_tensile = std::max(most_tensile, s.scalar);
+  }
+  const double peak = q * L * L / 8.0 * (h / 2) / I;  // |σxx| at mid-span's faces
+  EXPECT_LT(most_compressive, -0.5 * peak) << "the compressed half is not coloured as compression";
+  EXPECT_GT(most_tensile, 0.5 * peak);
 }
 
 // Stress in pascals and the same as "strain" a million times smaller: the
@@ -247,7 +269,8 @@ TEST(DefaultFeatures, ADegenerateSeedIsTheSameInEveryUnit) {
 TEST(DefaultFeatures, ADegenerateFieldIsToldWhatHelps) {
   const Box3 cube{Vec3(0, 0, 0), Vec3(1, 1, 1)};
   const auto warnings_of = [&](const std::string& name, const Sym3& constant) {
-    const GlyphScene scene = default_scene(grid_file(name, cube, {5, 5, 5}, [&](const Vec3&) { return constant; }));
+    const GlyphScene scene = default_scene(grid_file(name, cube, {5, 5, 5}, [&](const Vec3&) { return constant; }),
+                                           {EigenFamily::major});
     std::string all;
     for (const std::string& w : scene.warnings) all += w + "\n";
     return all;
@@ -258,6 +281,13 @@ TEST(DefaultFeatures, ADegenerateFieldIsToldWhatHelps) {
   Sym3 compression;  // uniaxial: λ1 = λ2 = 0, λ3 = −1
   compression.zz = -1.0;
   EXPECT_NE(warnings_of("compression.vti", compression).find("trajectories.family = \"minor\""), std::string::npos);
+  // The default traces the minor family too: lines, and nothing to warn of.
+  const GlyphScene both = default_scene(grid_file("compression.vti", cube, {5, 5, 5}, [&](const Vec3&) {
+    return compression;
+  }));
+  EXPECT_TRUE(both.warnings.empty()) << both.warnings.front();
+  ASSERT_FALSE(both.trajectories.empty());
+  for (const Trajectory& t : both.trajectories) EXPECT_EQ(t.family, EigenFamily::minor);
 }
 
 }  // namespace

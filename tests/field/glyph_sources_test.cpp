@@ -196,7 +196,7 @@ GlyphPipelineSpec point_load_scene() {
   grid.edge_v = Vec3(0, 1.2, 0);
   grid.n = grid.m = 3;
   spec.seeds.grids.push_back(grid);
-  spec.trajectory.family = EigenFamily::minor;
+  spec.trajectory.families = {EigenFamily::minor};
   spec.trajectory.step = 0.02;
   spec.trajectory.max_length = 1.0;
   spec.spacing = 0.1;

@@ -160,7 +160,7 @@ TEST(SphereAgainstExact, DenseBlendedHyperstreamsurface) {
   grid.edge_v = Vec3(0, 0.9, 0);
   grid.n = grid.m = 7;
   spec.seeds.grids.push_back(grid);
-  spec.trajectory.family = EigenFamily::minor;
+  spec.trajectory.families = {EigenFamily::minor};
   spec.spacing = 0.02;
   spec.size.mapping = RadiusMapping::normalized;
   spec.size.scale = 0.13;

@@ -105,7 +105,7 @@ file = "x.exr"
   EXPECT_EQ(spec.pipeline.data.point_load.bounds.hi, Vec3(2, 4, 0));
   EXPECT_EQ(spec.pipeline.data.sample_grid, (std::array<int, 3>{5, 6, 7}));
   EXPECT_EQ(spec.pipeline.seeds.grids.at(0).n, 7);
-  EXPECT_EQ(spec.pipeline.trajectory.family, EigenFamily::medium);
+  EXPECT_EQ(spec.pipeline.trajectory.families, std::vector<EigenFamily>{EigenFamily::medium});
   EXPECT_EQ(spec.pipeline.trajectory.step.value(), 0.005);
   EXPECT_EQ(spec.pipeline.spacing.value(), 0.02);
   EXPECT_EQ(spec.pipeline.size.ceiling.value(), 0.3);
