@@ -5,19 +5,6 @@ does) and stored as POINT data, 9 components, array "stress", active
 tensors; the (vertex) displacement is point data too."""
 import common
 
-pb = common.solve_sfepy('beam_bending_conf.py')
-stress = pb.evaluate('ev_cauchy_stress.i.Omega(solid.D, u)', mode='el_avg')
-full = common.sfepy_sym_to_full(stress.reshape(-1, 6))
-mesh = pb.domain.mesh
-u = pb.get_variables()['u'].get_state_in_region(pb.domain.regions['Omega'])
-u = u[:mesh.n_nod]  # Q2 field: the first n_nod DOFs are the mesh vertices
-
-ug = common.unstructured_grid(mesh.coors, [common.sfepy_cells(pb)])
-common.check_positive_volumes(ug)
-ug.GetCellData().AddArray(common.vtk_array(full, 'stress'))
-point_stress = common.cell_to_point(ug, 'stress')
-ug.GetCellData().RemoveArray('stress')
-ug.GetPointData().SetTensors(common.vtk_array(point_stress, 'stress'))
-ug.GetPointData().SetVectors(common.vtk_array(u, 'displacement'))
+ug, full, point_stress = common.sfepy_stress_grid(common.solve_sfepy('beam_bending_conf.py'))
 common.write_xml(ug, common.out_path('beam_bending.vtu'))
 print('point stress range', point_stress.min(), point_stress.max())

@@ -142,6 +142,26 @@ def solve_sfepy(conf_name, **define_args):
     return pb
 
 
+def sfepy_stress_grid(pb):
+    """The solved SfePy problem as a VTK unstructured grid: the
+    element-averaged Cauchy stress averaged onto the points (9 components,
+    array "stress", active tensors) and the vertex displacement (active
+    vectors). Returns (grid, cell stress (n, 9), point stress (n, 9))."""
+    stress = pb.evaluate('ev_cauchy_stress.i.Omega(solid.D, u)', mode='el_avg')
+    full = sfepy_sym_to_full(stress.reshape(-1, 6))
+    mesh = pb.domain.mesh
+    u = pb.get_variables()['u'].get_state_in_region(pb.domain.regions['Omega'])
+    u = u[:mesh.n_nod]  # a P2/Q2 field: the first n_nod DOFs are the mesh vertices
+    ug = unstructured_grid(mesh.coors, [sfepy_cells(pb)])
+    check_positive_volumes(ug)
+    ug.GetCellData().AddArray(vtk_array(full, 'stress'))
+    point_stress = cell_to_point(ug, 'stress')
+    ug.GetCellData().RemoveArray('stress')
+    ug.GetPointData().SetTensors(vtk_array(point_stress, 'stress'))
+    ug.GetPointData().SetVectors(vtk_array(u, 'displacement'))
+    return ug, full, point_stress
+
+
 def sfepy_cells(pb):
     """(vtk_cell_type, conn) of the SfePy problem's (single-type) mesh."""
     mesh = pb.domain.mesh
