@@ -347,6 +347,26 @@ double median_magnitude(const BodyLattice& body) {
   return *middle;
 }
 
+// The families traced when the scene names none: major and minor
+// (tension and compression lines) where the body holds both signs (λ1 > 0
+// and λ3 < 0 somewhere, beyond 1 % of the largest |λ|); else the family
+// of the one sign there, which carries the largest stresses: major for
+// tension (and positive-definite data, as diffusion), minor for a body
+// all in compression.
+std::vector<EigenFamily> automatic_families(const BodyLattice& body, const TensorField& tensors) {
+  double most_tensile = 0.0, most_compressive = 0.0;
+  for (const Vec3& p : body.points)
+    if (const std::optional<Sym3> t = tensors.sample(p)) {
+      const Vec3 l = decompose(*t).values;
+      most_tensile = std::max(most_tensile, l(0));
+      most_compressive = std::min(most_compressive, l(2));
+    }
+  const double largest = std::max(most_tensile, -most_compressive);
+  const bool tension = most_tensile > 0.01 * largest, compression = -most_compressive > 0.01 * largest;
+  if (tension && compression) return {EigenFamily::major, EigenFamily::minor};
+  return {compression ? EigenFamily::minor : EigenFamily::major};
+}
+
 // Evenly spaced trajectories (even_seeding.h) through the body, for each
 // family traced. Each family keeps its own lines apart: lines of two
 // families cross at right angles by nature. With several families, each
@@ -442,12 +462,6 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   // the step, the spacing and the glyph size.
   const bool even = scene.placement != SourcePlacement::at_data_points &&
                     spec.seeds.resolved_strategy() == SeedStrategy::even;
-  std::vector<EigenFamily> families = spec.trajectory.families;
-  if (families.empty()) families = {EigenFamily::major};
-  if (spec.trajectory.families.empty() && !flow && even && scene.placement == SourcePlacement::along_trajectories)
-    families = {EigenFamily::major, EigenFamily::minor};
-  if (flow) families = {EigenFamily::major};  // a flow has one direction
-  scene.color = resolve_color(spec, loaded, families, scene.placement);
   const MagnitudeSampler magnitude = [&](const Vec3& x) -> std::optional<double> {
     if (flow) {
       const std::optional<Vec3> v = flow->sample(x);
@@ -463,6 +477,12 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
     separation = spec.seeds.separation.value_or(automatic_separation(body));
     if (!(*separation > 0.0)) separation = scene.domain.diagonal() / 10.0;  // no body: nothing will be found anyway
   }
+  std::vector<EigenFamily> families = spec.trajectory.families;
+  if (families.empty()) families = {EigenFamily::major};
+  if (spec.trajectory.families.empty() && !flow && even && scene.placement == SourcePlacement::along_trajectories)
+    families = automatic_families(body, *tensors);
+  if (flow) families = {EigenFamily::major};  // a flow has one direction
+  scene.color = resolve_color(spec, loaded, families, scene.placement);
   scene.values = resolve_lengths(spec, scene.domain, loaded, separation, families);
   if (data.kind == DataKind::point_load) scene.values.singular_radius = data.point_load.singular_radius;
   const GlyphValues& values = scene.values;

@@ -163,7 +163,8 @@ std::vector<KeySchema> build_keys() {
       // [trajectories]
       Key("trajectories.family", T::choice, "the eigenvector followed (\"major+minor\": both, each with its own lines)")
           .choices({"major", "medium", "minor", "major+minor"})
-          .automatic("\"major+minor\" for tensors seeded evenly (tension and compression lines), else \"major\""),
+          .automatic("tensors seeded evenly: \"major+minor\" where tension and compression are both present, else "
+                     "the family of the one sign (\"major\" for tension, \"minor\" for compression); else \"major\""),
       Key("trajectories.step", T::number, "RK4 step, in arc length").length().automatic("D/400"),
       Key("trajectories.max_length", T::number, "longest trajectory in each direction").length().automatic("2·D"),
       Key("trajectories.degeneracy", T::number, "stop where the eigenvalue gap is below this fraction of max|λ|")
