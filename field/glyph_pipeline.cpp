@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 #include <tbb/parallel_for.h>
@@ -336,15 +337,15 @@ namespace {
 // and the compression lines take over there.
 constexpr double kFamilyFloor = 0.05;
 
-// The median of the magnitudes over the body: m_ref of even_seeding.h.
-double median_magnitude(const BodyLattice& body) {
-  std::vector<double> positive;
-  for (double m : body.magnitudes)
-    if (m > 0.0 && std::isfinite(m)) positive.push_back(m);
-  if (positive.empty()) return 0.0;
-  const auto middle = positive.begin() + std::ptrdiff_t(positive.size() / 2);
-  std::nth_element(positive.begin(), middle, positive.end());
-  return *middle;
+// The eigenvalues at the body lattice's points, sampled once for the
+// choice of families and each family's own magnitudes (NaN where the data
+// has none).
+std::vector<Vec3> eigenvalues_in_body(const BodyLattice& body, const TensorField& tensors) {
+  std::vector<Vec3> values(body.points.size(), Vec3::Constant(std::numeric_limits<double>::quiet_NaN()));
+  tbb::parallel_for(std::size_t{0}, values.size(), [&](std::size_t i) {
+    if (const std::optional<Sym3> t = tensors.sample(body.points[i])) values[i] = decompose(*t).values;
+  });
+  return values;
 }
 
 // The families traced when the scene names none: major and minor
@@ -353,11 +354,10 @@ double median_magnitude(const BodyLattice& body) {
 // of the one sign there, which carries the largest stresses: major for
 // tension (and positive-definite data, as diffusion), minor for a body
 // all in compression.
-std::vector<EigenFamily> automatic_families(const BodyLattice& body, const TensorField& tensors) {
+std::vector<EigenFamily> automatic_families(const std::vector<Vec3>& body_eigenvalues) {
   double most_tensile = 0.0, most_compressive = 0.0;
-  for (const Vec3& p : body.points)
-    if (const std::optional<Sym3> t = tensors.sample(p)) {
-      const Vec3 l = decompose(*t).values;
+  for (const Vec3& l : body_eigenvalues)
+    if (l.allFinite()) {
       most_tensile = std::max(most_tensile, l(0));
       most_compressive = std::min(most_compressive, l(2));
     }
@@ -374,8 +374,8 @@ std::vector<EigenFamily> automatic_families(const BodyLattice& body, const Tenso
 // where that fades, and leaves no lone glyphs (another family traces
 // there), unless no family finds a line anywhere. The seeds taken are
 // recorded in the values, in the frame the scene gives seeds in.
-EvenTrajectories trace_evenly(GlyphScene& scene, const BodyLattice& body, const MagnitudeSampler& magnitude,
-                              const TensorField* tensors, const VectorField* flow) {
+EvenTrajectories trace_evenly(GlyphScene& scene, const BodyLattice& body, const std::vector<Vec3>& body_eigenvalues,
+                              const MagnitudeSampler& magnitude, const TensorField* tensors, const VectorField* flow) {
   GlyphValues& values = scene.values;
   EvenSeedingOptions options;
   options.separation = *values.seeds.separation;
@@ -391,7 +391,6 @@ EvenTrajectories trace_evenly(GlyphScene& scene, const BodyLattice& body, const 
   const auto trace_family = [&](EigenFamily family, bool per_family) {
     TrajectoryOptions trajectory = values.trajectory;
     trajectory.family = family;
-    if (flow) trajectory.signed_directions = true;
     BodyLattice pool = body;
     MagnitudeSampler own = magnitude;
     if (per_family) {
@@ -401,7 +400,10 @@ EvenTrajectories trace_evenly(GlyphScene& scene, const BodyLattice& body, const 
         const std::optional<Sym3> t = tensors->sample(x);
         return t ? std::optional<double>(std::fabs(decompose(*t).values(int(family)))) : std::nullopt;
       };
-      for (std::size_t i = 0; i < pool.points.size(); ++i) pool.magnitudes[i] = own(pool.points[i]).value_or(0.0);
+      for (std::size_t i = 0; i < pool.points.size(); ++i) {
+        const double m = std::fabs(body_eigenvalues[i](int(family)));
+        pool.magnitudes[i] = std::isfinite(m) ? m : 0.0;
+      }
     }
     const DirectionSampler direction = [&](const Vec3& x) {
       return flow ? flow_direction(*flow, x, trajectory) : eigen_direction(*tensors, x, trajectory);
@@ -477,18 +479,21 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
     separation = spec.seeds.separation.value_or(automatic_separation(body));
     if (!(*separation > 0.0)) separation = scene.domain.diagonal() / 10.0;  // no body: nothing will be found anyway
   }
-  std::vector<EigenFamily> families = spec.trajectory.families;
-  if (families.empty()) families = {EigenFamily::major};
-  if (spec.trajectory.families.empty() && !flow && even && scene.placement == SourcePlacement::along_trajectories)
-    families = automatic_families(body, *tensors);
-  if (flow) families = {EigenFamily::major};  // a flow has one direction
+  // Tensor lines need their eigenvalues over the body; a flow has one
+  // direction, no families.
+  const std::vector<Vec3> body_eigenvalues = flow ? std::vector<Vec3>{} : eigenvalues_in_body(body, *tensors);
+  std::vector<EigenFamily> families = {EigenFamily::major};
+  if (!flow && !spec.trajectory.families.empty())
+    families = spec.trajectory.families;
+  else if (!flow && even && scene.placement == SourcePlacement::along_trajectories)
+    families = automatic_families(body_eigenvalues);
   scene.color = resolve_color(spec, loaded, families, scene.placement);
   scene.values = resolve_lengths(spec, scene.domain, loaded, separation, families);
   if (data.kind == DataKind::point_load) scene.values.singular_radius = data.point_load.singular_radius;
   const GlyphValues& values = scene.values;
   std::vector<Vec3> seeds;
   if (even) {
-    EvenTrajectories lines = trace_evenly(scene, body, magnitude, tensors, flow);
+    EvenTrajectories lines = trace_evenly(scene, body, body_eigenvalues, magnitude, tensors, flow);
     seeds = std::move(lines.seeds);
     scene.trajectories = std::move(lines.trajectories);
   } else if (scene.placement != SourcePlacement::at_data_points) {
@@ -503,18 +508,18 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   const auto maker = [&](EigenFamily family) -> SourceMaker {
     const ColorScalar color = scene.color == ColorScalar::family_eigenvalue ? family_eigenvalue(family) : scene.color;
     return [&, color](const Vec3& p) -> std::optional<GlyphSource> {
-    std::optional<GlyphSource> source;
-    if (flow) {
-      if (const std::optional<Vec3> v = flow->sample(p)) source = make_flow_source(p, *v, color);
-    } else if (const std::optional<Sym3> s = tensors->sample(p)) {
-      source = make_source(p, *s, color);
-    }
-    if (source && color_array) {
-      const std::optional<double> value = color_array->sample(p);
-      if (!value) return std::nullopt;
-      source->scalar = *value;
-    }
-    return source;
+      std::optional<GlyphSource> source;
+      if (flow) {
+        if (const std::optional<Vec3> v = flow->sample(p)) source = make_flow_source(p, *v, color);
+      } else if (const std::optional<Sym3> s = tensors->sample(p)) {
+        source = make_source(p, *s, color);
+      }
+      if (source && color_array) {
+        const std::optional<double> value = color_array->sample(p);
+        if (!value) return std::nullopt;
+        source->scalar = *value;
+      }
+      return source;
     };
   };
   const ColorScalar color = scene.color;

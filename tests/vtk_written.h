@@ -4,10 +4,18 @@
 
 #include <gtest/gtest.h>
 #include <vtkDataObject.h>
+#include <vtkDataSet.h>
+#include <vtkDoubleArray.h>
 #include <vtkSmartPointer.h>
 
 #include <filesystem>
+#include <functional>
+#include <limits>
+#include <optional>
 #include <string>
+
+#include "base/vec3.h"
+#include "field/tensor/sym3.h"
 
 namespace hsb {
 
@@ -20,6 +28,26 @@ std::string written_by(vtkDataObject* data, const std::filesystem::path& path) {
   writer->SetFileName(path.string().c_str());
   EXPECT_EQ(writer->Write(), 1) << path;
   return path.string();
+}
+
+// A 6-component array named `name` of `tensor` at each of `data`'s points,
+// in VTK's symmetric order (XX YY ZZ XY YZ XZ); NaN where it gives none.
+inline vtkSmartPointer<vtkDoubleArray> tensors_at_points(
+    vtkDataSet* data, const std::string& name, const std::function<std::optional<Sym3>(const Vec3&)>& tensor) {
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName(name.c_str());
+  a->SetNumberOfComponents(6);
+  a->SetNumberOfTuples(data->GetNumberOfPoints());
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i) {
+    double p[3];
+    data->GetPoint(i, p);
+    const std::optional<Sym3> s = tensor(Vec3(p[0], p[1], p[2]));
+    const double v[6] = {s ? s->xx : nan, s ? s->yy : nan, s ? s->zz : nan,
+                         s ? s->xy : nan, s ? s->yz : nan, s ? s->xz : nan};
+    a->SetTuple(i, v);
+  }
+  return a;
 }
 
 }  // namespace hsb

@@ -1,5 +1,6 @@
 #include "field/tracing/body_lattice.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -70,6 +71,16 @@ BodyLattice lattice_in_body(const Box3& bounds, const MagnitudeSampler& magnitud
     lattice = sample_lattice(bounds, magnitude, counts, h);
   }
   return lattice;
+}
+
+double median_magnitude(const BodyLattice& body) {
+  std::vector<double> positive;
+  for (double m : body.magnitudes)
+    if (m > 0.0 && std::isfinite(m)) positive.push_back(m);
+  if (positive.empty()) return 0.0;
+  const auto middle = positive.begin() + std::ptrdiff_t(positive.size() / 2);
+  std::nth_element(positive.begin(), middle, positive.end());
+  return *middle;
 }
 
 }  // namespace hsb

@@ -30,6 +30,10 @@ struct BodyLattice {
 // keep too few points: the lattice is refined, up to `limit` points, until
 // `wanted` fall inside. Sampled in parallel; the result does not depend on
 // the thread count.
+// The median of the lattice's positive, finite magnitudes (0 if none):
+// the magnitude typical of the body.
+double median_magnitude(const BodyLattice& body);
+
 BodyLattice lattice_in_body(const Box3& bounds, const MagnitudeSampler& magnitude, std::optional<int> plane_axis,
                             std::size_t target = 32768, std::size_t wanted = 4096, std::size_t limit = 1 << 20);
 

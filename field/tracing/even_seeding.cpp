@@ -14,20 +14,8 @@ namespace {
 // The local separation and the order of seeds, both from the magnitude.
 class Importance {
  public:
-  Importance(const BodyLattice& pool, const EvenSeedingOptions& options) : options_(options) {
-    if (options.reference_magnitude) {
-      reference_ = *options.reference_magnitude;
-      return;
-    }
-    std::vector<double> positive;
-    for (double m : pool.magnitudes)
-      if (m > 0.0 && std::isfinite(m)) positive.push_back(m);
-    if (!positive.empty()) {
-      const auto middle = positive.begin() + std::ptrdiff_t(positive.size() / 2);
-      std::nth_element(positive.begin(), middle, positive.end());
-      reference_ = *middle;
-    }
-  }
+  Importance(const BodyLattice& pool, const EvenSeedingOptions& options)
+      : options_(options), reference_(options.reference_magnitude.value_or(median_magnitude(pool))) {}
 
   double reference() const { return reference_; }
   bool active() const { return options_.importance && reference_ > 0.0; }

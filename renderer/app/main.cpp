@@ -178,8 +178,8 @@ int main(int argc, char** argv) {
                    "data file): a re-run batch renders only what changed");
   render->add_flag("--series", as_series,
                    "The scenes or data files given are the steps of one series (plate_050.vtu plate_100.vtu ...):\n"
-                   "one glyph scale and colour range for all, so a growing load shows as growing glyphs, as the\n"
-                   "steps of a .pvd or Exodus file already do");
+                   "one glyph scale, colour range, picture size and camera for all, so a growing load shows as\n"
+                   "growing glyphs in frames that do not jump, as the steps of a .pvd or Exodus file already do");
   render->add_option("--shard", shard_text,
                      "K/N: render only the K-th of N shares of the batch (item i when i mod N = K-1), e.g.\n"
                      "--shard $((SLURM_ARRAY_TASK_ID+1))/$SLURM_ARRAY_TASK_COUNT in a Slurm job array");
@@ -368,8 +368,8 @@ int main(int argc, char** argv) {
     if (!item.error.empty()) throw hsb::SceneError(item.error);
     progress.start(i, std::filesystem::path(item.scene).filename().string() +
                           (item.variant.empty() ? "" : " [" + item.variant + "]"));
-    // A series' steps share one glyph scale and colour range, computed
-    // once per series (a batch may render its steps one after another).
+    // A series' steps share one glyph scale, colour range, size and camera,
+    // computed once per series (a batch may render its steps one after another).
     std::vector<std::string> job_overrides = item.overrides;
     if (!item.series.empty()) {
       std::string key = item.series.front().scene;

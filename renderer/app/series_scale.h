@@ -1,5 +1,5 @@
 #pragma once
-// One glyph scale and one colour range across the steps of a time series,
+// One glyph scale, colour range and frame across the steps of a time series,
 // so that a growing load shows as growing glyphs and warming colours, not
 // as the same picture with other tick labels. Each step is rendered on its
 // own (a cluster node may render one step alone), so every step computes
@@ -19,8 +19,12 @@ struct SeriesMember {
 // The --set values that pin what the steps share, for every key the scene
 // leaves automatic: glyphs.scale, glyphs.floor and glyphs.ceiling of the
 // step with the largest stresses (the smallest automatic scale: no other
-// step's glyphs grow past its ceiling), and color.map and color.range over
-// the glyphs of all steps, by the rules of a single picture.
+// step's glyphs grow past its ceiling), color.map and color.range over
+// the glyphs of all steps, by the rules of a single picture, and that
+// step's render.width, render.height and camera (its glyphs frame the
+// others'), so an animation's frames neither jump nor change size. That
+// step is prepared a second time for its picture size and camera: once
+// per series, not per image.
 std::vector<std::string> shared_series_settings(const std::vector<SeriesMember>& members);
 
 }  // namespace hsb

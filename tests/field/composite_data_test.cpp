@@ -50,18 +50,9 @@ vtkSmartPointer<vtkUnstructuredGrid> tet_body(double scale = 1.0, double x0 = 0.
   split->SetInputData(image);
   split->Update();
   vtkSmartPointer<vtkUnstructuredGrid> grid = split->GetOutput();
-  auto stress = vtkSmartPointer<vtkDoubleArray>::New();
-  stress->SetName("stress");
-  stress->SetNumberOfComponents(6);
-  stress->SetNumberOfTuples(grid->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) {
-    double p[3];
-    grid->GetPoint(i, p);
-    const Sym3 s = linear_tensor(Vec3(p[0], p[1], p[2]), scale);
-    const double t[6] = {s.xx, s.yy, s.zz, s.xy, s.yz, s.xz};
-    stress->SetTuple(i, t);
-  }
-  grid->GetPointData()->SetTensors(stress);
+  grid->GetPointData()->SetTensors(tensors_at_points(grid, "stress", [&](const Vec3& p) -> std::optional<Sym3> {
+    return linear_tensor(p, scale);
+  }));
   return grid;
 }
 

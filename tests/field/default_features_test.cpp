@@ -44,21 +44,11 @@ std::string grid_file(const std::string& name, const Box3& box, const std::array
   image->SetOrigin(box.lo.x(), box.lo.y(), box.lo.z());
   const Vec3 size = box.size();
   image->SetSpacing(size.x() / (n[0] - 1), size.y() / (n[1] - 1), size.z() / (n[2] - 1));
-  auto a = vtkSmartPointer<vtkDoubleArray>::New();
-  a->SetName("stress");
-  a->SetNumberOfComponents(6);
-  a->SetNumberOfTuples(image->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < image->GetNumberOfPoints(); ++i) {
-    double p[3];
-    image->GetPoint(i, p);
-    const std::optional<Sym3> s = stress(Vec3(p[0], p[1], p[2]));
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    // VTK's symmetric order: XX YY ZZ XY YZ XZ.
-    const double v[6] = {s ? s->xx * unit : nan, s ? s->yy * unit : nan, s ? s->zz * unit : nan,
-                         s ? s->xy * unit : nan, s ? s->yz * unit : nan, s ? s->xz * unit : nan};
-    for (int c = 0; c < 6; ++c) a->SetComponent(i, c, v[c]);
-  }
-  image->GetPointData()->AddArray(a);
+  image->GetPointData()->AddArray(tensors_at_points(image, "stress", [&](const Vec3& p) -> std::optional<Sym3> {
+    std::optional<Sym3> s = stress(p);
+    if (s) *s = unit * *s;
+    return s;
+  }));
   return written_by<vtkXMLImageDataWriter>(image, test_temp_dir("default_features") / name);
 }
 
