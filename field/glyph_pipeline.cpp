@@ -367,13 +367,44 @@ std::vector<EigenFamily> automatic_families(const std::vector<Vec3>& body_eigenv
   return {compression ? EigenFamily::minor : EigenFamily::major};
 }
 
+// Where the traced families have no direction (every one of them
+// degenerate) over a tenth of the body or more, nothing is drawn there:
+// say how much, and what shows it. An isotropic background (a diffusion
+// volume's fluid, a hydrostatic state) would otherwise fill the picture
+// with spheres that hide the part that has a direction.
+void warn_where_no_direction(GlyphScene& scene, const std::vector<Vec3>& body_eigenvalues) {
+  const GlyphValues& values = scene.values;
+  std::size_t inside = 0, undirected = 0, isotropic = 0;
+  for (const Vec3& l : body_eigenvalues) {
+    if (!l.allFinite()) continue;
+    ++inside;
+    const double tolerance = values.trajectory.degeneracy_tolerance;
+    const bool none = std::none_of(values.families.begin(), values.families.end(), [&](EigenFamily f) {
+      return eigenvector_defined(l, f, tolerance);
+    });
+    undirected += none;
+    isotropic += none && !eigenvector_defined(l, EigenFamily::medium, tolerance) &&
+                 !eigenvector_defined(l, EigenFamily::major, tolerance) &&
+                 !eigenvector_defined(l, EigenFamily::minor, tolerance);
+  }
+  if (inside == 0 || 10 * undirected < inside) return;
+  std::ostringstream text;
+  text << "no line is drawn over " << int(std::lround(100.0 * double(undirected) / double(inside)))
+       << " % of the body, where "
+       << (2 * isotropic >= undirected ? "the tensor is isotropic (λ1 = λ2 = λ3): no direction exists there"
+                                       : "the traced family's eigenvalues are repeated: its direction is undefined")
+       << "; glyphs.placement = \"points\" shows the sizes there";
+  scene.warnings.push_back(text.str());
+}
+
 // Evenly spaced trajectories (even_seeding.h) through the body, for each
 // family traced. Each family keeps its own lines apart: lines of two
 // families cross at right angles by nature. With several families, each
-// is as dense as its own |λ_k| against the body's typical stress, ends
-// where that fades, and leaves no lone glyphs (another family traces
-// there), unless no family finds a line anywhere. The seeds taken are
-// recorded in the values, in the frame the scene gives seeds in.
+// is as dense as its own |λ_k| against the body's typical stress and ends
+// where that fades. No lone glyphs stand where a family has no direction
+// (spheres in an isotropic background would hide the part of the body
+// that has one), unless no family finds a line anywhere. The seeds taken
+// are recorded in the values, in the frame the scene gives seeds in.
 EvenTrajectories trace_evenly(GlyphScene& scene, const BodyLattice& body, const std::vector<Vec3>& body_eigenvalues,
                               const MagnitudeSampler& magnitude, const TensorField* tensors, const VectorField* flow) {
   GlyphValues& values = scene.values;
@@ -382,10 +413,8 @@ EvenTrajectories trace_evenly(GlyphScene& scene, const BodyLattice& body, const 
   options.importance = *values.seeds.importance;
   if (scene.plane_axis) options.plane_normal = Vec3::Unit(*scene.plane_axis);
   const bool several = values.families.size() > 1;
-  if (several) {
-    options.reference_magnitude = median_magnitude(body);
-    options.lone_glyphs = false;
-  }
+  if (several) options.reference_magnitude = median_magnitude(body);
+  options.lone_glyphs = false;
   const std::vector<Vec3> given = all_seeds(values.seeds, scene.domain);
   EvenTrajectories all;
   const auto trace_family = [&](EigenFamily family, bool per_family) {
@@ -415,11 +444,13 @@ EvenTrajectories trace_evenly(GlyphScene& scene, const BodyLattice& body, const 
     for (Trajectory& t : lines.trajectories) all.trajectories.push_back(std::move(t));
   };
   for (EigenFamily family : values.families) trace_family(family, several);
-  if (several && all.trajectories.empty()) {
+  if (all.trajectories.empty()) {
     // Isotropic everywhere: no family has a direction; lone glyphs show
     // the sizes at least.
     options.lone_glyphs = true;
     trace_family(values.families.front(), false);
+  } else if (tensors) {
+    warn_where_no_direction(scene, body_eigenvalues);
   }
   values.reference_magnitude = all.reference_magnitude;
   const Box3& b = scene.domain;

@@ -43,7 +43,9 @@ struct EvenSeedingOptions {
   // large against the stress typical of the body.
   std::optional<double> reference_magnitude;
   // Seeds where no line starts stand as lone glyphs (the last rule above);
-  // false: they are dropped (another family traces there).
+  // false: they are dropped (the picture's lines elsewhere, or another
+  // family, show the field; the pipeline falls back to lone glyphs only
+  // where no line is found anywhere).
   bool lone_glyphs = true;
 };
 

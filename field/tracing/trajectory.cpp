@@ -16,6 +16,18 @@ double Trajectory::length() const {
   return total;
 }
 
+bool eigenvector_defined(const Vec3& l, EigenFamily family, double tolerance) {
+  // An eigenvector is only defined while its eigenvalue is separated from
+  // its neighbours in the ordering; λ1 ≥ λ2 ≥ λ3, so the nearest other
+  // eigenvalue is always an adjacent one.
+  const int k = static_cast<int>(family);
+  double gap = std::numeric_limits<double>::infinity();
+  if (k > 0) gap = std::min(gap, l(k - 1) - l(k));
+  if (k < 2) gap = std::min(gap, l(k) - l(k + 1));
+  const double scale = l.cwiseAbs().maxCoeff();
+  return scale > 0.0 && gap >= tolerance * scale;
+}
+
 DirectionSample eigen_direction(const TensorField& field, const Vec3& x,
                                 const TrajectoryOptions& options) {
   DirectionSample result;
@@ -37,14 +49,7 @@ DirectionSample eigen_direction(const TensorField& field, const Vec3& x,
     result.stop = StopReason::low_magnitude;
     return result;
   }
-  // The followed eigenvector is only defined while its eigenvalue is
-  // separated from its neighbours in the ordering; λ1 ≥ λ2 ≥ λ3, so the
-  // nearest other eigenvalue is always an adjacent one.
-  double gap = std::numeric_limits<double>::infinity();
-  if (k > 0) gap = std::min(gap, l(k - 1) - l(k));
-  if (k < 2) gap = std::min(gap, l(k) - l(k + 1));
-  const double scale = l.cwiseAbs().maxCoeff();
-  if (scale == 0.0 || gap < options.degeneracy_tolerance * scale) {
+  if (!eigenvector_defined(l, options.family, options.degeneracy_tolerance)) {
     result.stop = StopReason::degenerate;
     return result;
   }

@@ -66,6 +66,11 @@ struct DirectionSample {
 };
 using DirectionSampler = std::function<DirectionSample(const Vec3&)>;
 
+// Whether `family`'s eigenvector is defined for eigenvalues l (λ1 ≥ λ2 ≥
+// λ3): its eigenvalue stands apart from the adjacent ones by at least
+// `tolerance` of the largest |λ|.
+bool eigenvector_defined(const Vec3& l, EigenFamily family, double tolerance);
+
 // The eigenvector of `options.family` at `x`: stops at the domain boundary,
 // at degenerate eigenvalues and below the magnitude threshold.
 DirectionSample eigen_direction(const TensorField& field, const Vec3& x,

@@ -280,5 +280,30 @@ TEST(DefaultFeatures, ADegenerateFieldIsToldWhatHelps) {
   for (const Trajectory& t : both.trajectories) EXPECT_EQ(t.family, EigenFamily::minor);
 }
 
+// An isotropic background (a body under pressure, a diffusion volume's
+// fluid) with one anisotropic spot: lines in the spot, and no lone
+// spheres in the background to hide it; a warning says how much of the
+// body has no direction and what would show it.
+TEST(DefaultFeatures, AnIsotropicBackgroundLeavesTheAnisotropicSpotAlone) {
+  const Box3 cube{Vec3(0, 0, 0), Vec3(1, 1, 1)};
+  const Vec3 spot(0.65, 0.4, 0.55);
+  constexpr double kRadius = 0.15;
+  const GlyphScene scene = default_scene(grid_file("pressure_spot.vti", cube, {31, 31, 31}, [&](const Vec3& p) {
+    Sym3 s;
+    s.xx = s.yy = s.zz = -1e5;
+    s.xy = 2e4 * std::exp(-(p - spot).squaredNorm() / (kRadius * kRadius));
+    return std::optional<Sym3>(s);
+  }));
+  ASSERT_FALSE(scene.sources.empty());
+  // Beyond 2.6 R the shear is under 1e-3 of the pressure: no direction.
+  for (const GlyphSource& s : scene.sources)
+    EXPECT_LT((s.centre - spot).norm(), 2.7 * kRadius) << "a glyph in the isotropic background";
+  EXPECT_LT(nearest_glyph(scene, spot), 0.5 * kRadius) << "no glyph at the spot";
+  std::string all;
+  for (const std::string& w : scene.warnings) all += w + "\n";
+  EXPECT_NE(all.find("isotropic"), std::string::npos) << all;
+  EXPECT_NE(all.find("glyphs.placement = \"points\""), std::string::npos) << all;
+}
+
 }  // namespace
 }  // namespace hsb
