@@ -32,13 +32,19 @@ MeshLocator::MeshLocator(vtkDataSet* data) : impl_(std::make_unique<Impl>()) {
   bounds_ = Box3{Vec3(b[0], b[2], b[4]), Vec3(b[1], b[3], b[5])};
   // A point on a cell's face is inside it up to round-off, not more: a looser
   // tolerance would let trajectories cut across a hollow body's hole. (VTK
-  // 9.1's static locator ignores it and uses each cell's own test, which is
-  // as strict; it is kept for locators that use it.)
+  // 9.1's static locator ignores FindCell's tolerance argument and uses
+  // each cell's own test, which is as strict.)
   const double tolerance = 1e-9 * bounds_.diagonal();
   impl_->tolerance2 = tolerance * tolerance;
   impl_->max_cell_size = std::size_t(data->GetMaxCellSize());
   impl_->locator = vtkSmartPointer<vtkStaticCellLocator>::New();
   impl_->locator->SetDataSet(data);
+  // The locator's own tolerance pads every cell's bounds before the cell's
+  // test; its default is an absolute 0.001, which for a part measured in
+  // metres (a 1 mm part) covers the whole mesh, so every query tested every
+  // cell: 160 µs a query instead of 1 µs. Relative to the data's size, it
+  // costs the same in any unit.
+  impl_->locator->SetTolerance(tolerance);
   impl_->locator->BuildLocator();
   // Some data sets build their cell links lazily on first access; do it here,
   // on one thread, before sampling goes parallel.
