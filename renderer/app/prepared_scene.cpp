@@ -307,7 +307,7 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   colors.reserve(p.glyphs.sources.size());
   for (const GlyphSource& g : p.glyphs.sources) colors.push_back(color.to_scene_linear(p.scale.srgb(g.scalar)));
   p.field = make_blob_field(p.glyphs.sources, colors, s.surface.influence_radius, s.surface.kernel, s.surface.blend,
-                            s.surface.isovalue);
+                            s.surface.isovalue, s.surface.shape, s.surface.sharpness);
 
   // A box frames an analytic domain, a shell shows a mesh's boundary;
   // sources the scene gives itself have neither.
@@ -344,7 +344,8 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   // Exact wherever it applies: it was the faster of the two over the
   // figure scenes, and exact; blinn summed has no polynomial form.
   p.trace.intersector = s.render.intersector.value_or(
-      exact_crossing_supported(s.surface.kernel, s.surface.blend) ? Intersector::exact : Intersector::sphere);
+      exact_crossing_supported(s.surface.kernel, s.surface.blend, s.surface.shape) ? Intersector::exact
+                                                                                    : Intersector::sphere);
   p.resolve("render.intersector", p.trace.intersector == Intersector::exact ? "exact" : "sphere");
   p.trace.min_step = p.resolve("render.min_step", s.render.min_step.value_or(kMinStepPerDiagonal * diagonal));
   p.trace.max_steps = s.render.max_steps;

@@ -181,7 +181,7 @@ void read_curve(TableReader& c, CurveSpec& spec) {
   c.finish();
 }
 
-void read_glyphs(TableReader& g, GlyphPipelineSpec& spec, const std::string& base_dir) {
+void read_glyphs(TableReader& g, GlyphPipelineSpec& spec, SurfaceSpec& surface, const std::string& base_dir) {
   spec.placement = g.choice<SourcePlacement>("placement", {{"trajectories", SourcePlacement::along_trajectories},
                                           {"seeds", SourcePlacement::at_seeds},
                                           {"points", SourcePlacement::at_data_points},
@@ -197,6 +197,11 @@ void read_glyphs(TableReader& g, GlyphPipelineSpec& spec, const std::string& bas
   } else if (spec.placement == SourcePlacement::list) {
     g.fail_at("placement", "= \"list\" needs glyphs.file, a CSV file of sources");
   }
+  surface.shape = g.choice<GlyphShape>("shape", {{"ellipsoid", GlyphShape::ellipsoid},
+                                                 {"superquadric", GlyphShape::superquadric}});
+  if (g.has("sharpness") && surface.shape != GlyphShape::superquadric)
+    g.fail_at("sharpness", "applies only to glyphs.shape = \"superquadric\"");
+  surface.sharpness = g.number("sharpness");
   spec.stretch = g.number("stretch");
   spec.thickness = g.optional_number("thickness");
   spec.spacing = g.optional_number("spacing");
@@ -347,7 +352,11 @@ void read_render(TableReader& r, SceneSpec& spec) {
   spec.shading.shell_edge_opacity = r.number("shell_edge_opacity");
   if (r.has("intersector")) render.intersector = r.choice<Intersector>("intersector", {{"sphere", Intersector::sphere}, {"exact", Intersector::exact}});
   else r.allow("intersector");
-  if (render.intersector == Intersector::exact && !exact_crossing_supported(spec.surface.kernel, spec.surface.blend))
+  if (render.intersector == Intersector::exact && !shape_is_quadric(spec.surface.shape))
+    r.fail_at("intersector", "= \"exact\" needs glyphs.shape = \"ellipsoid\": a superquadric's distance is not a "
+                             "polynomial along a ray (use \"sphere\")");
+  if (render.intersector == Intersector::exact &&
+      !exact_crossing_supported(spec.surface.kernel, spec.surface.blend, spec.surface.shape))
     r.fail_at("intersector", "= \"exact\" needs surface.kernel \"wyvill\" or \"quartic\" (or surface.blend = \"max\"): "
                              "blinn's exponential is not a polynomial along a ray");
   render.min_step = r.optional_number("min_step");
@@ -449,7 +458,7 @@ SceneSpec load_scene_text(const std::string& text, const std::string& path, cons
   // Every table is read, present or not, so every key takes the schema's default.
   TableReader data = top.table("data"), seeds = top.table("seeds"), trajectories = top.table("trajectories"),
               glyphs = top.table("glyphs");
-  read_glyphs(glyphs, spec.pipeline, base_dir);
+  read_glyphs(glyphs, spec.pipeline, spec.surface, base_dir);
   if (spec.pipeline.placement == SourcePlacement::curve || spec.pipeline.placement == SourcePlacement::list) {
     // The sources come from the scene: no data set to read.
     if (top.has("data")) top.fail_at("data", "is not read with glyphs.placement = \"curve\" or \"list\"");

@@ -192,6 +192,9 @@ std::vector<KeySchema> build_keys() {
                      "each line's own) for tensors, \"speed\" for a flow"),
       Key("glyphs.thickness", T::number, "2-D data: the glyphs' thickness across the plane").length()
           .automatic("each glyph's smaller in-plane diameter"),
+      Key("glyphs.shape", T::choice, "each glyph's form").choices({"ellipsoid", "superquadric"}).fallback("\"ellipsoid\""),
+      Key("glyphs.sharpness", T::number, "superquadric: γ, how sharp its edges (Teem's tend glyph -sh)")
+          .range(0.0, 10.0).fallback("3"),
       Key("glyphs.stretch", T::number, "streamballs: the radius along the flow times this").range(1.0, 100.0).fallback("1"),
       Key("glyphs.file", T::string, "placement = \"list\": the CSV file of sources").none(),
       Key("glyphs.curve.kind", T::choice, "the curve").choices({"line", "circle", "helix", "polyline"}).fallback("\"helix\""),

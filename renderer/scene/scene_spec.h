@@ -29,6 +29,9 @@ struct SurfaceSpec {
   Blend blend = Blend::sum;
   double influence_radius = 1.0;  // R of eq. 10/11, fixed for all sources
   double isovalue = 0.5;          // C
+  // Read from [glyphs]: each glyph's form, and a superquadric's sharpness γ.
+  GlyphShape shape = GlyphShape::ellipsoid;
+  double sharpness = 3.0;
 };
 
 struct ColorSpec {

@@ -21,17 +21,25 @@ BlobSource make_blob_source(const Vec3& centre, const Mat3& axes, const Vec3& ra
 BlobField make_blob_field(const std::vector<GlyphSource>& glyphs,
                           const std::vector<std::array<float, 3>>& colors,
                           double influence_radius, KernelKind kernel, Blend blend,
-                          double isovalue) {
+                          double isovalue, GlyphShape shape, double sharpness) {
   if (colors.size() != glyphs.size())
     throw std::invalid_argument("make_blob_field: one colour per glyph is required");
   BlobField field;
   field.kernel = kernel;
   field.blend = blend;
   field.isovalue = isovalue;
+  field.shape = shape;
   field.sources.reserve(glyphs.size());
-  for (std::size_t i = 0; i < glyphs.size(); ++i)
+  for (std::size_t i = 0; i < glyphs.size(); ++i) {
+    // W_s = W/σ: the bounding ellipsoid's radii are σ R r_k.
+    double sigma = 1.0;
+    if (shape == GlyphShape::superquadric) {
+      field.shapes.push_back(superquadric_params(glyphs[i].radii, sharpness));
+      sigma = field.shapes.back().bound_scale;
+    }
     field.sources.push_back(make_blob_source(glyphs[i].centre, glyphs[i].axes, glyphs[i].radii,
-                                             influence_radius, colors[i], glyphs[i].scalar));
+                                             sigma * influence_radius, colors[i], glyphs[i].scalar));
+  }
   return field;
 }
 
@@ -67,10 +75,16 @@ Box3 influence_bounds(const BlobField& field) {
   return all;
 }
 
+double source_g(const BlobField& field, std::size_t i, const Vec3& x) {
+  const BlobSource& s = field.sources[i];
+  const Vec3 q = scaled_offset(s, shape_matrix(s), x);
+  return field.shapes.empty() ? q.squaredNorm() : shape_g(field.shape, field.shapes[i], q);
+}
+
 double field_value(const BlobField& field, const Vec3& x) {
   double f = 0.0;
-  for (const BlobSource& s : field.sources) {
-    const double k = kernel_value(field.kernel, scaled_offset(s, shape_matrix(s), x).squaredNorm());
+  for (std::size_t i = 0; i < field.sources.size(); ++i) {
+    const double k = kernel_value(field.kernel, source_g(field, i, x));
     f = field.blend == Blend::sum ? f + k : std::max(f, k);
   }
   return f;

@@ -8,6 +8,7 @@
 
 #include "base/box3.h"
 #include "field/glyphs/glyph_sources.h"
+#include "renderer/surface/glyph_shape.h"
 #include "renderer/surface/kernel.h"
 
 namespace hsb {
@@ -32,17 +33,25 @@ static_assert(sizeof(BlobSource) == 64, "one source per cache line");
 
 struct BlobField {
   std::vector<BlobSource> sources;
+  // The sources' shape (glyph_shape.h): their W is the bounding ellipsoid's,
+  // and `shapes` holds each one's parameters (empty for ellipsoids).
+  GlyphShape shape = GlyphShape::ellipsoid;
+  std::vector<ShapeParams> shapes;
   KernelKind kernel = KernelKind::wyvill;
   Blend blend = Blend::sum;
   double isovalue = 0.5;
 };
 
 // Sources from the field library's glyphs with the fixed influence radius R
-// (paper §4.2) and one scene-linear colour per glyph.
+// (paper §4.2) and one scene-linear colour per glyph, in `shape` (with
+// `sharpness` for superquadrics).
 BlobField make_blob_field(const std::vector<GlyphSource>& glyphs,
                           const std::vector<std::array<float, 3>>& colors,
                           double influence_radius, KernelKind kernel, Blend blend,
-                          double isovalue);
+                          double isovalue, GlyphShape shape = GlyphShape::ellipsoid, double sharpness = 3.0);
+
+// Source i's g at x, whatever the shape.
+double source_g(const BlobField& field, std::size_t i, const Vec3& x);
 
 BlobSource make_blob_source(const Vec3& centre, const Mat3& axes, const Vec3& radii,
                             double influence_radius, const std::array<float, 3>& color, double scalar = 0.0);
@@ -52,7 +61,7 @@ BlobSource make_blob_source(const Vec3& centre, const Mat3& axes, const Vec3& ra
 Mat3 shape_matrix(const BlobSource& s);
 Vec3 scaled_offset(const BlobSource& s, const Mat3& w, const Vec3& x);
 
-// The axis-aligned box of the influence ellipsoid g ≤ 1.
+// The axis-aligned box of the (bounding) influence ellipsoid g_e ≤ 1.
 Box3 influence_bounds(const BlobSource& s);
 
 // Union of all sources' influence bounds.

@@ -266,7 +266,8 @@ void BlobGeometry::first_crossings(const RayInterval* rays, int count, FieldRay*
       const unsigned bit = 1u << i;
       if (!(looking & bit)) continue;
       if (!tracers[i].spans.empty()) {
-        const double hit = tracers[i].first_crossing(field_, window[i].tmin, window[i].tmax, settings_, stats, query);
+        const double hit = tracers[i].first_crossing(field_, window[i].origin, window[i].direction, window[i].tmin,
+                                                         window[i].tmax, settings_, stats, query);
         if (hit >= 0.0) {
           hits[i] = hit;
           looking &= ~bit;
@@ -349,7 +350,7 @@ double BlobGeometry::first_crossing_of(const RayInterval& ray, FieldRay& tracer,
   if (!(t < end)) return -1.0;
   collect_spans(RayInterval{ray.origin, ray.direction, t, end});
   if (tracer.spans.empty()) return -1.0;
-  return tracer.first_crossing(field_, t, end, settings_, stats, query);
+  return tracer.first_crossing(field_, ray.origin, ray.direction, t, end, settings_, stats, query);
 }
 
 double BlobGeometry::first_crossing_near(const NearbySources& nearby, const RayInterval& ray, FieldRay& tracer,

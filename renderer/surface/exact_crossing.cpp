@@ -89,8 +89,8 @@ constexpr double kRunningSumTolerance = 1e-10;
 
 }  // namespace
 
-bool exact_crossing_supported(KernelKind kernel, Blend blend) {
-  return blend == Blend::max || kernel_traits(kernel).exact;
+bool exact_crossing_supported(KernelKind kernel, Blend blend, GlyphShape shape) {
+  return shape_is_quadric(shape) && (blend == Blend::max || kernel_traits(kernel).exact);
 }
 
 double FieldRay::exact_crossing(const BlobField& field, double tmin, double tmax, TraceStats& stats) {

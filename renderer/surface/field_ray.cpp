@@ -10,31 +10,39 @@
 
 namespace hsb {
 
+namespace {
+
+// F so far with one more source's value k: the sum, or for a union the max.
+inline double blended(Blend blend, double f, double k) { return blend == Blend::sum ? f + k : std::max(f, k); }
+
+}  // namespace
+
 double FieldRay::value_at(const BlobField& field, double t, TraceStats& stats) const {
   const std::vector<std::uint32_t>& active = sweep_.active();
   ++stats.field_evaluations;
   stats.kernel_evaluations += active.size();
   double f = 0.0;
-  if (field.blend == Blend::sum) {
-    for (std::uint32_t i : active) f += kernel_value(field.kernel, spans[i].g(t));
-  } else {
-    for (std::uint32_t i : active) f = std::max(f, kernel_value(field.kernel, spans[i].g(t)));
-  }
+  for (std::uint32_t i : active) f = blended(field.blend, f, kernel_value(field.kernel, g_at(field, i, t)));
   return f;
 }
 
-// An upper bound on dF/dt from t to the end of the current segment. Only a
-// source the ray is still approaching (t < t_c) can raise F, and on its
-// support |d K(u(t))/dt| ≤ √a · max|dK/du| because u = √g changes at rate at
-// most √a. Past t_c a source only falls, whichever segment we are in, so
-// dropping it keeps the bound valid for the rest of the ray: it is one-sided,
-// which is all that stepping towards F = C from below needs.
+// An upper bound on dF/dt from t to the end of the current segment. On its
+// support |d K(u(t))/dt| ≤ σ√a · max|dK/du|, because √g_e changes at rate
+// at most √a and the shape's u at most σ times faster (glyph_shape.h; σ = 1
+// for the ellipsoid). For an ellipsoid only a source the ray is still
+// approaching (t < t_c) can raise F: past t_c it only falls, whichever
+// segment we are in, so dropping it keeps the bound valid for the rest of
+// the ray: it is one-sided, which is all that stepping towards F = C from
+// below needs. Another shape's own closest approach is not t_c, so it
+// counts on its whole support.
 double FieldRay::slope_bound_at(const BlobField& field, double t) const {
+  const bool quadric = shape_is_quadric(field.shape);
   double rate = 0.0;
   for (std::uint32_t i : sweep_.active()) {
     const RaySpan& s = spans[i];
-    if (t >= s.t_c) continue;
-    rate = field.blend == Blend::sum ? rate + std::sqrt(s.a) : std::max(rate, std::sqrt(s.a));
+    if (quadric && t >= s.t_c) continue;
+    const double own = std::sqrt(s.a) * (quadric ? 1.0 : double(field.shapes[s.source].bound_scale));
+    rate = field.blend == Blend::sum ? rate + own : std::max(rate, own);
   }
   return rate * kernel_max_du_slope(field.kernel);
 }
@@ -68,30 +76,44 @@ double FieldRay::crowd_peak(double tmin, double last_peak) const {
   return tmin + std::min(1.0, double(moment) / double(height)) * length;
 }
 
-double FieldRay::first_crossing(const BlobField& field, double tmin, double tmax,
-                                const TraceSettings& settings, TraceStats& stats, CrossingQuery query) {
+double FieldRay::first_crossing(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin,
+                                double tmax, const TraceSettings& settings, TraceStats& stats,
+                                CrossingQuery query) {
+  const bool quadric = shape_is_quadric(field.shape);
+  shape_rays_.clear();
+  if (!quadric) {
+    shape_rays_.reserve(spans.size());
+    for (const RaySpan& s : spans) {
+      const BlobSource& source = field.sources[s.source];
+      const Mat3 w = shape_matrix(source);
+      shape_rays_.push_back({scaled_offset(source, w, origin), w * direction});
+    }
+  }
   // Bounds from the sources one at a time, before anything is ordered, in
-  // one pass. The earliest entry into a single source's own level surface:
-  // F ≥ C there whatever the others add. F at tmin: a ray that starts
-  // inside the surface crosses at once. The sum of each source's largest
-  // value on the ray: when even that is below C, so is F.
+  // one pass. The earliest entry into a single source's own level surface
+  // (for another shape, into the ellipsoid g_e = g_level/σ² inside it): F ≥
+  // C there whatever the others add. F at tmin: a ray that starts inside
+  // the surface crosses at once. The sum of each source's largest value on
+  // the ray (from g_e, an upper bound for every shape): when even that is
+  // below C, so is F.
   const double c = field.isovalue;
   const double g_level = level_g(field.kernel, c);
   double upper = -1.0, at_start = 0.0, peaks = 0.0, last_peak = tmin;
   peaks_.resize(spans.size());
-  for (std::size_t i = 0; i < spans.size(); ++i) {
+  for (std::uint32_t i = 0; i < spans.size(); ++i) {
     const RaySpan& s = spans[i];
-    const double t = single_source_entry(s, g_level, tmin, tmax);
+    const double sigma = quadric ? 1.0 : double(field.shapes[s.source].bound_scale);
+    const double t = single_source_entry(s, g_level / (sigma * sigma), tmin, tmax);
     if (t >= 0.0 && (upper < 0.0 || t < upper)) upper = t;
-    if (s.t0 <= tmin) at_start += kernel_value(field.kernel, s.g(tmin));
+    if (s.t0 <= tmin) at_start = blended(field.blend, at_start, kernel_value(field.kernel, g_at(field, i, tmin)));
     peaks_[i] = kernel_value(field.kernel, s.g(peak_t(s)));
     peaks += peaks_[i];
     last_peak = std::max(last_peak, peak_t(s));
   }
   stats.kernel_evaluations += 2 * spans.size();
   stats.spans += spans.size();
-  // For a union of glyphs the single sources are the whole answer.
-  if (field.blend == Blend::max || (upper >= 0.0 && query == CrossingQuery::any)) return upper;
+  // For a union of ellipsoids the single sources are the whole answer.
+  if ((field.blend == Blend::max && quadric) || (upper >= 0.0 && query == CrossingQuery::any)) return upper;
   if (at_start >= c) return tmin;
   if (peaks < c) return -1.0;
   // A crowd of sources that no single one reaches C in (a blended cap)
@@ -100,8 +122,9 @@ double FieldRay::first_crossing(const BlobField& field, double tmin, double tmax
   const double t_crowd = crowd_peak(tmin, last_peak);
   if (upper < 0.0 || t_crowd < upper) {
     double f = 0.0;
-    for (const RaySpan& s : spans)
-      if (s.t0 <= t_crowd && t_crowd <= s.t1) f += kernel_value(field.kernel, s.g(t_crowd));
+    for (std::uint32_t i = 0; i < spans.size(); ++i)
+      if (spans[i].t0 <= t_crowd && t_crowd <= spans[i].t1)
+        f = blended(field.blend, f, kernel_value(field.kernel, g_at(field, i, t_crowd)));
     stats.kernel_evaluations += spans.size();
     if (f >= c) {
       if (query == CrossingQuery::any) return t_crowd;
@@ -110,8 +133,9 @@ double FieldRay::first_crossing(const BlobField& field, double tmin, double tmax
   }
 
   const double end = upper >= 0.0 ? upper : tmax;
-  const double t = settings.intersector == Intersector::exact ? exact_crossing(field, tmin, end, stats)
-                                                              : sphere_trace(field, tmin, end, settings, stats);
+  // The exact intersector needs g quadratic along the ray.
+  const double t = settings.intersector == Intersector::exact && quadric ? exact_crossing(field, tmin, end, stats)
+                                                                         : sphere_trace(field, tmin, end, settings, stats);
   // Short of the bound only by round-off: the bound itself is on the surface.
   return t >= 0.0 ? t : upper;
 }
@@ -188,14 +212,16 @@ SurfaceSample FieldRay::surface_at(const BlobField& field, const Vec3& origin,
   for (const std::uint32_t i : contributing_) {
     const RaySpan& span = spans[i];
     const BlobSource& s = field.sources[span.source];
-    // q = W(x − c), g = |q|² and ∇g = 2 Wᵀ q.
+    // q = W_s(x − c); the shape gives g and ∇_q g, and ∇g = W_sᵀ ∇_q g.
     const Mat3 w = shape_matrix(s);
     const Vec3 q = scaled_offset(s, w, x);
-    const double g = q.squaredNorm();
+    Vec3 grad_q;
+    const double g = field.shapes.empty() ? (grad_q = 2.0 * q, q.squaredNorm())
+                                          : shape_g_gradient(field.shape, field.shapes[span.source], q, grad_q);
     const double k = kernel_value(field.kernel, g);
     if (k <= 0.0) continue;
     ++sample.crowd;
-    const Vec3 grad_g = 2.0 * (w.transpose() * q);
+    const Vec3 grad_g = w.transpose() * grad_q;
     const Vec3 source_color(s.color[0], s.color[1], s.color[2]);
     const bool strongest = k > best;
     if (strongest) {

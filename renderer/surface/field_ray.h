@@ -64,8 +64,12 @@ class FieldRay {
   // the question); the walk stops there. Segments where the running bound
   // (field_bound.h) proves F < C are skipped without summing their sources,
   // so a ray through k supports costs about k log k, not k².
-  double first_crossing(const BlobField& field, double tmin, double tmax, const TraceSettings& settings,
-                        TraceStats& stats, CrossingQuery query = CrossingQuery::first);
+  //
+  // The ray o + t d is the one the spans were computed for: shapes other
+  // than the ellipsoid evaluate their own g along it (glyph_shape.h).
+  double first_crossing(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin,
+                        double tmax, const TraceSettings& settings, TraceStats& stats,
+                        CrossingQuery query = CrossingQuery::first);
 
   // Normal and colour at ray parameter t; uses the spans of the last
   // first_crossing() call, which cover every source that is non-zero there.
@@ -88,6 +92,13 @@ class FieldRay {
   bool next_segment(const BlobField& field, double tmax, double& start, double& end, TraceStats& stats);
 
   double crowd_peak(double tmin, double last_peak) const;
+  // Span i's g at t: its quadratic for the ellipsoid, the shape's own
+  // function along the ray otherwise.
+  double g_at(const BlobField& field, std::uint32_t i, double t) const {
+    if (shape_rays_.empty()) return spans[i].g(t);
+    const ShapeRay& r = shape_rays_[i];
+    return shape_g(field.shape, field.shapes[spans[i].source], r.q0 + t * r.v);
+  }
   double value_at(const BlobField& field, double t, TraceStats& stats) const;
   double slope_bound_at(const BlobField& field, double t) const;
   double refine(const BlobField& field, double lo, double hi, double f_lo, double f_hi,
@@ -96,10 +107,16 @@ class FieldRay {
   SupportSweep sweep_;
   FieldUpperBound bound_;
   std::vector<double> peaks_;  // each span's largest value on its interval
+  // Each span's ray in its source's stored frame, q_s(t) = q0 + t v; only
+  // for shapes other than the ellipsoid.
+  struct ShapeRay {
+    Vec3 q0, v;
+  };
+  std::vector<ShapeRay> shape_rays_;
   mutable std::vector<std::uint32_t> contributing_;  // surface_at()'s scratch
 };
 
 // Whether exact_crossing() handles this field.
-bool exact_crossing_supported(KernelKind kernel, Blend blend);
+bool exact_crossing_supported(KernelKind kernel, Blend blend, GlyphShape shape = GlyphShape::ellipsoid);
 
 }  // namespace hsb

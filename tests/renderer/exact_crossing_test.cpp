@@ -9,6 +9,7 @@
 #include "field/glyph_pipeline.h"
 #include "renderer/render/ray_scene.h"
 #include "tests/renderer/blob_pair.h"
+#include "tests/renderer/sampled_crossing.h"
 
 namespace hsb {
 namespace {
@@ -42,9 +43,9 @@ Crossings both(const BlobGeometry& blobs, const BlobField& field, const Vec3& o,
   TraceStats stats;
   collect_whole_ray(blobs, o, d, ray);
   const std::vector<RaySpan> spans = ray.spans;
-  const double exact = ray.first_crossing(field, 0.0, 1e30, settings_for(Intersector::exact, scene_size), stats);
+  const double exact = ray.first_crossing(field, o, d, 0.0, 1e30, settings_for(Intersector::exact, scene_size), stats);
   ray.spans = spans;
-  const double sphere = ray.first_crossing(field, 0.0, 1e30, settings_for(Intersector::sphere, scene_size), stats);
+  const double sphere = ray.first_crossing(field, o, d, 0.0, 1e30, settings_for(Intersector::sphere, scene_size), stats);
   return {exact, sphere};
 }
 
@@ -121,7 +122,7 @@ TEST(ExactCrossing, IsolatedGlyphIsTheExactEllipsoid) {
       FieldRay ray;
       TraceStats stats;
       collect_whole_ray(blobs, o, d, ray);
-      const double t = ray.first_crossing(field, 0.0, 1e30, settings_for(Intersector::exact, 1.0), stats);
+      const double t = ray.first_crossing(field, o, d, 0.0, 1e30, settings_for(Intersector::exact, 1.0), stats);
       if (disc <= 1e-12 * a) return;  // tangent within round-off: either answer
       ++hits;
       ASSERT_GE(t, 0.0);
@@ -137,8 +138,9 @@ TEST(ExactCrossing, TwoSourcesBlendExactly) {
   const BlobGeometry blobs(device.get(), pair, settings_for(Intersector::exact, 1.0));
   FieldRay ray;
   TraceStats stats;
-  collect_whole_ray(blobs, Vec3(0, -5, 0), Vec3(0, 1, 0), ray);
-  const double t = ray.first_crossing(pair, 0.0, 1e30, settings_for(Intersector::exact, 1.0), stats);
+  const Vec3 o(0, -5, 0), d(0, 1, 0);
+  collect_whole_ray(blobs, o, d, ray);
+  const double t = ray.first_crossing(pair, o, d, 0.0, 1e30, settings_for(Intersector::exact, 1.0), stats);
   EXPECT_NEAR(t, 5.0 - blob_pair_crossing_y(), 1e-12);
 }
 
@@ -215,22 +217,7 @@ double brute_force_crossing(const BlobField& field, const std::vector<RaySpan>& 
       if (s.t0 <= t && t <= s.t1) sum += kernel_value(field.kernel, s.g(t));
     return sum;
   };
-  const int n = 4000;
-  double previous = 0.0;
-  for (int k = 0; k <= n; ++k) {
-    const double t = t_end * k / n;
-    if (f(t) >= field.isovalue) {
-      if (k == 0) return 0.0;
-      double lo = previous, hi = t;
-      for (int i = 0; i < 60; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (f(mid) >= field.isovalue ? hi : lo) = mid;
-      }
-      return hi;
-    }
-    previous = t;
-  }
-  return -1.0;
+  return sampled_crossing(f, field.isovalue, t_end, 4000);
 }
 
 TEST(ExactCrossing, CrowdOfOverlappingSourcesMatchesBruteForce) {
@@ -250,7 +237,7 @@ TEST(ExactCrossing, CrowdOfOverlappingSourcesMatchesBruteForce) {
       collect_whole_ray(blobs, o, d, ray);
       const std::vector<RaySpan> spans = ray.spans;
       crossed += int(spans.size());
-      const double t = ray.first_crossing(field, 0.0, 1e30, settings_for(Intersector::exact, 4.0), stats);
+      const double t = ray.first_crossing(field, o, d, 0.0, 1e30, settings_for(Intersector::exact, 4.0), stats);
       const double expected = brute_force_crossing(field, spans, t_end);
       // A crossing the samples can straddle unseen is thinner than
       // t_end / 4,000; the grazing rays where that happens are few.
@@ -263,7 +250,7 @@ TEST(ExactCrossing, CrowdOfOverlappingSourcesMatchesBruteForce) {
       EXPECT_NEAR(t, expected, 1e-7 * t_end);
       // A shadow ray's question, on the same spans: any crossing at all.
       ray.spans = spans;
-      const double any = ray.first_crossing(field, 0.0, 1e30, settings_for(Intersector::exact, 4.0), stats,
+      const double any = ray.first_crossing(field, o, d, 0.0, 1e30, settings_for(Intersector::exact, 4.0), stats,
                                             CrossingQuery::any);
       ASSERT_GE(any, 0.0);
       EXPECT_GE(field_value(field, o + any * d), field.isovalue * (1.0 - 1e-9));

@@ -135,7 +135,7 @@ TEST(Blending, ColourIsTheInfluenceWeightedMixAndNormalIsTheGradient) {
     ASSERT_TRUE(ray_span(pair.sources[i], i, 0, o, d, 0.0, 100.0, span));
     tracer.spans.push_back(span);
   }
-  const double t = tracer.first_crossing(pair, 0.0, 100.0, TraceSettings{}, stats);
+  const double t = tracer.first_crossing(pair, o, d, 0.0, 100.0, TraceSettings{}, stats);
   ASSERT_GT(t, 0.0);
   const Vec3 x = o + t * d;
   EXPECT_NEAR(field_value(pair, x), 0.5, 1e-9);

@@ -17,6 +17,7 @@ std::string scene_for(const std::string& key) {
   if (key == "glyphs.curve.from" || key == "glyphs.curve.to")
     return "[glyphs]\nplacement = \"curve\"\n[glyphs.curve]\nkind = \"line\"\n";
   if (key.rfind("glyphs.curve.", 0) == 0) return "[glyphs]\nplacement = \"curve\"\n";
+  if (key == "glyphs.sharpness") return "[glyphs]\nshape = \"superquadric\"\n";
   if (key == "data.field" || key == "data.association" || key == "data.cell_tensors" || key == "data.components")
     return "[data]\nfile = \"" + data_file + "\"\n";
   return "";

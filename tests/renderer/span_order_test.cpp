@@ -54,17 +54,17 @@ TEST(SpanOrder, FirstCrossingAndSurfaceAreTheSameBitsInAnyOrder) {
         FieldRay reference;
         TraceStats stats;
         reference.spans = spans;
-        const double t = reference.first_crossing(field, 0.0, 4.0, settings, stats);
+        const double t = reference.first_crossing(field, o, d, 0.0, 4.0, settings, stats);
         const SurfaceSample expected = t >= 0.0 ? reference.surface_at(field, o, d, t) : SurfaceSample{};
         hits += t >= 0.0;
         for (int shuffle = 0; shuffle < 4; ++shuffle) {
           FieldRay other;
           other.spans = spans;
           std::shuffle(other.spans.begin(), other.spans.end(), rng);
-          ASSERT_EQ(other.first_crossing(field, 0.0, 4.0, settings, stats), t) << "ray " << r;
+          ASSERT_EQ(other.first_crossing(field, o, d, 0.0, 4.0, settings, stats), t) << "ray " << r;
           FieldRay shadow;
           shadow.spans = other.spans;
-          EXPECT_EQ(shadow.first_crossing(field, 0.0, 4.0, settings, stats, CrossingQuery::any) >= 0.0, t >= 0.0);
+          EXPECT_EQ(shadow.first_crossing(field, o, d, 0.0, 4.0, settings, stats, CrossingQuery::any) >= 0.0, t >= 0.0);
           if (t < 0.0) continue;
           const SurfaceSample got = other.surface_at(field, o, d, t);
           EXPECT_EQ(got.normal, expected.normal) << "ray " << r;

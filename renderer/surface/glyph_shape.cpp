@@ -1,0 +1,116 @@
+#include "renderer/surface/glyph_shape.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hsb {
+
+namespace {
+
+// ‖(x, y)‖_p for p ≥ 2 and its partial derivatives, each in [−1, 1]. The
+// terms are divided by the larger one first: |x|^p for p = 2·10⁶ would
+// overflow or vanish, (|x|/m)^p is 1 for the larger term and harmless for
+// the other.
+struct PNorm {
+  double value = 0.0, dx = 0.0, dy = 0.0;
+};
+PNorm p_norm(double x, double y, double p) {
+  const double ax = std::fabs(x), ay = std::fabs(y), m = std::max(ax, ay);
+  if (m == 0.0) return {};
+  const double rx = ax / m, ry = ay / m;
+  const double px = std::pow(rx, p), py = std::pow(ry, p);
+  const double sum = px + py;  // in [1, 2]
+  const double root = std::pow(sum, 1.0 / p);
+  // ∂‖·‖/∂x = sign(x) (|x|/‖·‖)^{p−1} = sign(x) r_x^{p−1} · root / sum.
+  const double scale = root / sum;
+  PNorm n;
+  n.value = m * root;
+  n.dx = rx > 0.0 ? std::copysign(px / rx * scale, x) : 0.0;
+  n.dy = ry > 0.0 ? std::copysign(py / ry * scale, y) : 0.0;
+  return n;
+}
+
+// The superquadric gauge N at q (the glyph's own scaled frame) and ∇N.
+double superquadric_gauge(const ShapeParams& s, const Vec3& q, Vec3* gradient) {
+  const int z = s.axis, a = (z + 1) % 3, b = (z + 2) % 3;
+  const PNorm equator = p_norm(q[a], q[b], 2.0 / double(s.alpha));
+  const PNorm whole = p_norm(equator.value, q[z], 2.0 / double(s.beta));
+  if (gradient) {
+    (*gradient)[a] = whole.dx * equator.dx;
+    (*gradient)[b] = whole.dx * equator.dy;
+    (*gradient)[z] = whole.dy;
+  }
+  return whole.value;
+}
+
+// σ = max |q|/N(q) = 1/min N over the unit sphere. For fixed |(q_a, q_b)| = ρ
+// the equatorial p-norm (p ≥ 2) is smallest at |q_a| = |q_b|, where it is
+// c ρ with c = 2^{1/p − 1/2}; what is left is the smallest ‖(c cos θ,
+// sin θ)‖_r over θ ∈ [0, π/2]: sampled, then refined between the best
+// sample's neighbours, and σ rounded up by 10⁻⁶ so the bound holds to
+// float precision.
+double superquadric_bound_scale(double alpha, double beta) {
+  const double p = 2.0 / alpha, r = 2.0 / beta, c = std::pow(2.0, 1.0 / p - 0.5);
+  const auto gauge = [&](double theta) { return p_norm(c * std::cos(theta), std::sin(theta), r).value; };
+  constexpr int kSamples = 64;
+  const double step = 0.5 * M_PI / kSamples;
+  int best = 0;
+  double least = gauge(0.0);
+  for (int i = 1; i <= kSamples; ++i)
+    if (const double n = gauge(i * step); n < least) least = n, best = i;
+  double lo = std::max(0, best - 1) * step, hi = std::min(kSamples, best + 1) * step;
+  const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
+  for (int i = 0; i < 40; ++i) {
+    const double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
+    const double na = gauge(a), nb = gauge(b);
+    least = std::min({least, na, nb});
+    if (na < nb) hi = b;
+    else lo = a;
+  }
+  return (1.0 + 1e-6) / least;
+}
+
+}  // namespace
+
+double shape_g(GlyphShape shape, const ShapeParams& params, const Vec3& q_s) {
+  if (shape == GlyphShape::ellipsoid) return q_s.squaredNorm();
+  const double n = superquadric_gauge(params, double(params.bound_scale) * q_s, nullptr);
+  return n * n;
+}
+
+double shape_g_gradient(GlyphShape shape, const ShapeParams& params, const Vec3& q_s, Vec3& gradient) {
+  if (shape == GlyphShape::ellipsoid) {
+    gradient = 2.0 * q_s;
+    return q_s.squaredNorm();
+  }
+  // g = N(σ q_s)², so ∇g = 2 N ∇N · σ.
+  const double sigma = params.bound_scale;
+  Vec3 dn;
+  const double n = superquadric_gauge(params, sigma * q_s, &dn);
+  gradient = (2.0 * sigma * n) * dn;
+  return n * n;
+}
+
+ShapeParams superquadric_params(const Vec3& radii, double sharpness) {
+  std::array<int, 3> order{0, 1, 2};  // radii from largest to smallest
+  std::sort(order.begin(), order.end(), [&](int i, int j) { return radii[i] > radii[j]; });
+  const double r1 = radii[order[0]], r2 = radii[order[1]], r3 = radii[order[2]];
+  const double sum = r1 + r2 + r3;
+  ShapeParams s;
+  if (!(sum > 0.0)) return s;
+  const double cl = std::min(0.99, (r1 - r2) / sum), cp = std::min(0.99, 2.0 * (r2 - r3) / sum);
+  const double linear = std::pow(1.0 - cl, sharpness), planar = std::pow(1.0 - cp, sharpness);
+  if (cl > cp) {
+    s.axis = std::uint8_t(order[0]);
+    s.alpha = float(planar);
+    s.beta = float(linear);
+  } else {
+    s.axis = std::uint8_t(order[2]);
+    s.alpha = float(linear);
+    s.beta = float(planar);
+  }
+  s.bound_scale = float(superquadric_bound_scale(s.alpha, s.beta));
+  return s;
+}
+
+}  // namespace hsb

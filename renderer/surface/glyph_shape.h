@@ -1,0 +1,72 @@
+#pragma once
+// The glyph's distance function: the one place that knows a source's
+// shape. A source's influence is K(g) with g = u², u its distance from the
+// centre in the glyph's scaled frame, 1 at the edge of its influence.
+//
+// Every shape keeps a bounding ellipsoid in the source record: the stored
+// matrix W_s (blob_field.h) gives the quadratic g_e = |W_s (x − c)|², and
+// each shape guarantees g_e ≤ g, so K(g) ≤ K(g_e). The spans, the span BVH's
+// boxes, the peaks and the running polynomial bound of F (field_bound.h)
+// are all computed from g_e: they are upper bounds of the influence for
+// every shape, and exact for the ellipsoid. What must be exact (F itself,
+// its gradient, the slope bound of sphere tracing) asks the shape here.
+//
+//  - ellipsoid: u = |q| with q = W (x − c), W = diag(1/(R r_k)) Vᵀ (paper
+//    eq. 11). W_s = W, g = g_e: quadratic along a ray, so F is a polynomial
+//    between support endpoints for the polynomial kernels and the exact
+//    intersector applies.
+//  - superquadric (Kindlmann 2004): u = N(q), the superquadric gauge
+//      N(q) = ‖(‖(q_a, q_b)‖_{2/α}, q_z)‖_{2/β},
+//    with z the symmetry axis and (a, b) the other two. N is a norm for
+//    α, β ≤ 2 and its unit ball lies in the cube [−1, 1]³ (N ≥ max|q_k|).
+//    Each source's bound scale σ = max |q|/N(q) over directions (1 for
+//    the ellipsoid's exponents, at most √3 for a cube) gives W_s = W/σ:
+//    g_e = |q|²/σ² ≤ N². For α, β ≤ 1 (every sharpness ≥ 0) N ≤ |q| and N
+//    is 1-Lipschitz in q (|∇N| ≤ 1, Schultz and Kindlmann's nested norms),
+//    so along a ray u changes at most σ times as fast as √g_e, and the
+//    ball |q| ≤ u lies inside the glyph's level surface N ≤ u: entering
+//    g_e = u²/σ² enters the glyph. N is C¹ away from the centre for
+//    0 < α, β < 2: the "edges" of sharp glyphs are bands of high curvature,
+//    not creases, so the gradient is defined everywhere on the surface
+//    (each norm is evaluated divided by its largest term, so exponents of
+//    10⁶ stay finite).
+
+#include <array>
+#include <cstdint>
+
+#include "base/vec3.h"
+
+namespace hsb {
+
+enum class GlyphShape { ellipsoid, superquadric };
+
+// A source's shape beyond its axes and radii; the ellipsoid has none.
+struct ShapeParams {
+  float alpha = 1.0f, beta = 1.0f;  // superquadric: equatorial and axial exponents
+  // σ: W_s = W/σ bounds the influence (g_e ≤ g), u's rate along a ray is at
+  // most σ times √g_e's, and g_e ≤ g_level/σ² lies inside the level surface.
+  float bound_scale = 1.0f;
+  std::uint8_t axis = 2;            // superquadric: the symmetry axis, a row of W (0, 1 or 2)
+};
+// Whether g is the quadratic g_e itself: F is then a polynomial along a ray
+// for the polynomial kernels (the exact intersector), one source alone is
+// entered where g_e reaches its level, and a source past its closest
+// approach only falls.
+inline bool shape_is_quadric(GlyphShape shape) { return shape == GlyphShape::ellipsoid; }
+
+// g = u² at q_s = W_s (x − c), the point in the stored (bounding) frame
+// (for the ellipsoid, |q_s|² whatever the parameters).
+double shape_g(GlyphShape shape, const ShapeParams& params, const Vec3& q_s);
+// g and its gradient with respect to q_s (the world gradient is W_sᵀ times it).
+double shape_g_gradient(GlyphShape shape, const ShapeParams& params, const Vec3& q_s, Vec3& gradient);
+
+// Kindlmann's superquadric for a glyph of radii r (in W's row order):
+// Westin's measures of the radii sorted by size, c_l = (ρ1 − ρ2)/Σρ and
+// c_p = 2(ρ2 − ρ3)/Σρ, each at most 0.99; a linear glyph (c_l > c_p) is
+// round about its longest axis with α = (1 − c_p)^γ, β = (1 − c_l)^γ, a
+// planar one about its shortest with α = (1 − c_l)^γ, β = (1 − c_p)^γ.
+// γ = `sharpness` (Teem's `tend glyph -sh`); 0 gives the ellipsoid's
+// exponents.
+ShapeParams superquadric_params(const Vec3& radii, double sharpness);
+
+}  // namespace hsb
