@@ -30,6 +30,10 @@ void write_povray_scene(const BlobField& field, const CameraSpec& camera, const 
     throw std::invalid_argument(
         "POV-Ray's blob is the quartic kernel, summed: set surface.kernel = \"quartic\" and "
         "surface.blend = \"sum\" to export this scene");
+  if (!shape_is_quadric(field.shape))
+    throw std::invalid_argument(
+        "POV-Ray's blob components are ellipsoids: set glyphs.shape = \"ellipsoid\" to export this scene "
+        "(a superquadric has no blob equivalent)");
   std::ofstream pov(pov_path);
   if (!pov) throw std::runtime_error(pov_path + ": cannot write");
   pov.precision(9);

@@ -78,5 +78,22 @@ TEST(Export, SourcesAndTrajectoriesReadBackWithTheirArrays) {
   }
 }
 
+// POV-Ray's blob has ellipsoids only: a superquadric scene is refused with
+// the key that fixes it, and nothing is written.
+TEST(Export, POVRayRefusesSuperquadricsAndWritesNothing) {
+  const auto dir = test_temp_dir("export_pov_test", true);
+  const std::string scene = (dir / "s.toml").string();
+  std::ofstream(scene) << "[seeds]\npoints = [[0, 0, 0.5]]\n"
+                          "[glyphs]\nshape = \"superquadric\"\n"
+                          "[surface]\nkernel = \"quartic\"\n";
+  try {
+    run_export_job({scene, {}, (dir / "out").string(), ExportFormat::pov});
+    FAIL() << "a superquadric scene was exported to POV-Ray";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("glyphs.shape = \"ellipsoid\""), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "s.pov"));
+}
+
 }  // namespace
 }  // namespace hsb
