@@ -374,17 +374,17 @@ std::vector<EigenFamily> automatic_families(const std::vector<Vec3>& body_eigenv
 // with spheres that hide the part that has a direction.
 void warn_where_no_direction(GlyphScene& scene, const std::vector<Vec3>& body_eigenvalues) {
   const GlyphValues& values = scene.values;
+  const double tolerance = values.trajectory.degeneracy_tolerance;
   std::size_t inside = 0, undirected = 0, isotropic = 0;
   for (const Vec3& l : body_eigenvalues) {
     if (!l.allFinite()) continue;
     ++inside;
-    const double tolerance = values.trajectory.degeneracy_tolerance;
     const bool none = std::none_of(values.families.begin(), values.families.end(), [&](EigenFamily f) {
       return eigenvector_defined(l, f, tolerance);
     });
     undirected += none;
-    isotropic += none && !eigenvector_defined(l, EigenFamily::medium, tolerance) &&
-                 !eigenvector_defined(l, EigenFamily::major, tolerance) &&
+    // λ1 = λ2 (no major direction) and λ2 = λ3 (no minor one): isotropic.
+    isotropic += none && !eigenvector_defined(l, EigenFamily::major, tolerance) &&
                  !eigenvector_defined(l, EigenFamily::minor, tolerance);
   }
   if (inside == 0 || 10 * undirected < inside) return;

@@ -355,8 +355,7 @@ void read_render(TableReader& r, SceneSpec& spec) {
   if (render.intersector == Intersector::exact && !shape_is_quadric(spec.surface.shape))
     r.fail_at("intersector", "= \"exact\" needs glyphs.shape = \"ellipsoid\": a superquadric's distance is not a "
                              "polynomial along a ray (use \"sphere\")");
-  if (render.intersector == Intersector::exact &&
-      !exact_crossing_supported(spec.surface.kernel, spec.surface.blend, spec.surface.shape))
+  if (render.intersector == Intersector::exact && !exact_crossing_supported(spec.surface.kernel, spec.surface.blend))
     r.fail_at("intersector", "= \"exact\" needs surface.kernel \"wyvill\" or \"quartic\" (or surface.blend = \"max\"): "
                              "blinn's exponential is not a polynomial along a ray");
   render.min_step = r.optional_number("min_step");

@@ -77,8 +77,7 @@ Box3 influence_bounds(const BlobField& field) {
 
 double source_g(const BlobField& field, std::size_t i, const Vec3& x) {
   const BlobSource& s = field.sources[i];
-  const Vec3 q = scaled_offset(s, shape_matrix(s), x);
-  return field.shapes.empty() ? q.squaredNorm() : shape_g(field.shape, field.shapes[i], q);
+  return shape_g(field.shape, shape_params(field, i), scaled_offset(s, shape_matrix(s), x));
 }
 
 double field_value(const BlobField& field, const Vec3& x) {

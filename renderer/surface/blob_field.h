@@ -50,6 +50,13 @@ BlobField make_blob_field(const std::vector<GlyphSource>& glyphs,
                           double influence_radius, KernelKind kernel, Blend blend,
                           double isovalue, GlyphShape shape = GlyphShape::ellipsoid, double sharpness = 3.0);
 
+// Source i's shape parameters: the defaults (σ = 1) for ellipsoids, which
+// store none.
+inline const ShapeParams& shape_params(const BlobField& field, std::size_t i) {
+  static const ShapeParams none;
+  return field.shapes.empty() ? none : field.shapes[i];
+}
+
 // Source i's g at x, whatever the shape.
 double source_g(const BlobField& field, std::size_t i, const Vec3& x);
 

@@ -41,7 +41,7 @@ double FieldRay::slope_bound_at(const BlobField& field, double t) const {
   for (std::uint32_t i : sweep_.active()) {
     const RaySpan& s = spans[i];
     if (quadric && t >= s.t_c) continue;
-    const double own = std::sqrt(s.a) * (quadric ? 1.0 : double(field.shapes[s.source].bound_scale));
+    const double own = std::sqrt(s.a) * double(shape_params(field, s.source).bound_scale);
     rate = field.blend == Blend::sum ? rate + own : std::max(rate, own);
   }
   return rate * kernel_max_du_slope(field.kernel);
@@ -102,7 +102,7 @@ double FieldRay::first_crossing(const BlobField& field, const Vec3& origin, cons
   peaks_.resize(spans.size());
   for (std::uint32_t i = 0; i < spans.size(); ++i) {
     const RaySpan& s = spans[i];
-    const double sigma = quadric ? 1.0 : double(field.shapes[s.source].bound_scale);
+    const double sigma = shape_params(field, s.source).bound_scale;
     const double t = single_source_entry(s, g_level / (sigma * sigma), tmin, tmax);
     if (t >= 0.0 && (upper < 0.0 || t < upper)) upper = t;
     if (s.t0 <= tmin) at_start = blended(field.blend, at_start, kernel_value(field.kernel, g_at(field, i, tmin)));
@@ -216,8 +216,7 @@ SurfaceSample FieldRay::surface_at(const BlobField& field, const Vec3& origin,
     const Mat3 w = shape_matrix(s);
     const Vec3 q = scaled_offset(s, w, x);
     Vec3 grad_q;
-    const double g = field.shapes.empty() ? (grad_q = 2.0 * q, q.squaredNorm())
-                                          : shape_g_gradient(field.shape, field.shapes[span.source], q, grad_q);
+    const double g = shape_g_gradient(field.shape, shape_params(field, span.source), q, grad_q);
     const double k = kernel_value(field.kernel, g);
     if (k <= 0.0) continue;
     ++sample.crowd;

@@ -97,7 +97,7 @@ class FieldRay {
   double g_at(const BlobField& field, std::uint32_t i, double t) const {
     if (shape_rays_.empty()) return spans[i].g(t);
     const ShapeRay& r = shape_rays_[i];
-    return shape_g(field.shape, field.shapes[spans[i].source], r.q0 + t * r.v);
+    return shape_g(field.shape, shape_params(field, spans[i].source), r.q0 + t * r.v);
   }
   double value_at(const BlobField& field, double t, TraceStats& stats) const;
   double slope_bound_at(const BlobField& field, double t) const;
