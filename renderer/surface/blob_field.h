@@ -15,6 +15,9 @@ namespace hsb {
 
 enum class Blend { sum, max };
 
+// F so far with one more source's value k: the sum, or for a union the max.
+inline double blended(Blend blend, double f, double k) { return blend == Blend::sum ? f + k : (f > k ? f : k); }
+
 // One anisotropic metaball (paper eq. 11). The shape is stored as the matrix
 // W = diag(1/(R r_k)) Vᵀ, so that g(x) = |W (x − c)|² = (x − c)ᵀ M (x − c)
 // with M = WᵀW. Each row of W is a scaled unit vector, so single precision

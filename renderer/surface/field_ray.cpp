@@ -10,39 +10,28 @@
 
 namespace hsb {
 
-namespace {
-
-// F so far with one more source's value k: the sum, or for a union the max.
-inline double blended(Blend blend, double f, double k) { return blend == Blend::sum ? f + k : std::max(f, k); }
-
-}  // namespace
-
 double FieldRay::value_at(const BlobField& field, double t, TraceStats& stats) const {
+  if (!quadric_) return shape_value_at(field, t, stats);
   const std::vector<std::uint32_t>& active = sweep_.active();
   ++stats.field_evaluations;
   stats.kernel_evaluations += active.size();
   double f = 0.0;
-  for (std::uint32_t i : active) f = blended(field.blend, f, kernel_value(field.kernel, g_at(field, i, t)));
+  for (std::uint32_t i : active) f = blended(field.blend, f, kernel_value(field.kernel, spans[i].g(t)));
   return f;
 }
 
 // An upper bound on dF/dt from t to the end of the current segment. On its
-// support |d K(u(t))/dt| ≤ σ√a · max|dK/du|, because √g_e changes at rate
-// at most √a and the shape's u at most σ times faster (glyph_shape.h; σ = 1
-// for the ellipsoid). For an ellipsoid only a source the ray is still
-// approaching (t < t_c) can raise F: past t_c it only falls, whichever
-// segment we are in, so dropping it keeps the bound valid for the rest of
-// the ray: it is one-sided, which is all that stepping towards F = C from
-// below needs. Another shape's own closest approach is not t_c, so it
-// counts on its whole support.
+// support |d K(g(t))/dt| ≤ √a · max|dK/du|, because √g changes at rate at
+// most √a. Only a source the ray is still approaching (t < t_c) can raise
+// F: past t_c it only falls, whichever segment we are in, so dropping it
+// keeps the bound valid for the rest of the ray: it is one-sided, which is
+// all that stepping towards F = C from below needs.
 double FieldRay::slope_bound_at(const BlobField& field, double t) const {
-  const bool quadric = shape_is_quadric(field.shape);
   double rate = 0.0;
   for (std::uint32_t i : sweep_.active()) {
     const RaySpan& s = spans[i];
-    if (quadric && t >= s.t_c) continue;
-    const double own = std::sqrt(s.a) * double(shape_params(field, s.source).bound_scale);
-    rate = field.blend == Blend::sum ? rate + own : std::max(rate, own);
+    if (t >= s.t_c) continue;
+    rate = field.blend == Blend::sum ? rate + std::sqrt(s.a) : std::max(rate, std::sqrt(s.a));
   }
   return rate * kernel_max_du_slope(field.kernel);
 }
@@ -79,32 +68,32 @@ double FieldRay::crowd_peak(double tmin, double last_peak) const {
 double FieldRay::first_crossing(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin,
                                 double tmax, const TraceSettings& settings, TraceStats& stats,
                                 CrossingQuery query) {
-  const bool quadric = shape_is_quadric(field.shape);
-  shape_rays_.clear();
-  if (!quadric) {
-    shape_rays_.reserve(spans.size());
-    for (const RaySpan& s : spans) {
-      const BlobSource& source = field.sources[s.source];
-      const Mat3 w = shape_matrix(source);
-      shape_rays_.push_back({scaled_offset(source, w, origin), w * direction});
-    }
-  }
+  quadric_ = shape_is_quadric(field.shape);
+  if (!quadric_) prepare_shape_rays(field, origin, direction);
   // Bounds from the sources one at a time, before anything is ordered, in
-  // one pass. The earliest entry into a single source's own level surface
-  // (for another shape, into the ellipsoid g_e = g_level/σ² inside it): F ≥
-  // C there whatever the others add. F at tmin: a ray that starts inside
-  // the surface crosses at once. The sum of each source's largest value on
-  // the ray (from g_e, an upper bound for every shape): when even that is
-  // below C, so is F.
+  // one pass. The earliest entry into a single source's own level surface:
+  // F ≥ C there whatever the others add. F at tmin: a ray that starts
+  // inside the surface crosses at once. The sum of each source's largest
+  // value on the ray (from g_e, an upper bound for every shape): when even
+  // that is below C, so is F.
   const double c = field.isovalue;
   const double g_level = level_g(field.kernel, c);
   double upper = -1.0, at_start = 0.0, peaks = 0.0, last_peak = tmin;
   peaks_.resize(spans.size());
+  entries_.clear();
   for (std::uint32_t i = 0; i < spans.size(); ++i) {
     const RaySpan& s = spans[i];
-    const double sigma = shape_params(field, s.source).bound_scale;
-    const double t = single_source_entry(s, g_level / (sigma * sigma), tmin, tmax);
-    if (t >= 0.0 && (upper < 0.0 || t < upper)) upper = t;
+    // Entering the bounding ellipsoid's level surface g_e = g_level: the
+    // ellipsoid's own entry, and for another shape the earliest its own
+    // surface (inside that one) can be entered.
+    const double t = single_source_entry(s, g_level, tmin, tmax);
+    if (t >= 0.0) {
+      if (quadric_) {
+        if (upper < 0.0 || t < upper) upper = t;
+      } else {
+        entries_.push_back({t, i});
+      }
+    }
     if (s.t0 <= tmin) at_start = blended(field.blend, at_start, kernel_value(field.kernel, g_at(field, i, tmin)));
     peaks_[i] = kernel_value(field.kernel, s.g(peak_t(s)));
     peaks += peaks_[i];
@@ -112,8 +101,9 @@ double FieldRay::first_crossing(const BlobField& field, const Vec3& origin, cons
   }
   stats.kernel_evaluations += 2 * spans.size();
   stats.spans += spans.size();
-  // For a union of ellipsoids the single sources are the whole answer.
-  if ((field.blend == Blend::max && quadric) || (upper >= 0.0 && query == CrossingQuery::any)) return upper;
+  if (!quadric_) upper = first_shape_entry(field, g_level, tmax, stats);
+  // For a union the single sources are the whole answer.
+  if (field.blend == Blend::max || (upper >= 0.0 && query == CrossingQuery::any)) return upper;
   if (at_start >= c) return tmin;
   if (peaks < c) return -1.0;
   // A crowd of sources that no single one reaches C in (a blended cap)
@@ -134,8 +124,9 @@ double FieldRay::first_crossing(const BlobField& field, const Vec3& origin, cons
 
   const double end = upper >= 0.0 ? upper : tmax;
   // The exact intersector needs g quadratic along the ray.
-  const double t = settings.intersector == Intersector::exact && quadric ? exact_crossing(field, tmin, end, stats)
-                                                                         : sphere_trace(field, tmin, end, settings, stats);
+  const double t = !quadric_ ? shape_trace(field, tmin, end, settings, stats)
+                   : settings.intersector == Intersector::exact ? exact_crossing(field, tmin, end, stats)
+                                                                : sphere_trace(field, tmin, end, settings, stats);
   // Short of the bound only by round-off: the bound itself is on the surface.
   return t >= 0.0 ? t : upper;
 }

@@ -91,11 +91,31 @@ class FieldRay {
   // active source, and F < C not proven. False when none is left.
   bool next_segment(const BlobField& field, double tmax, double& start, double& end, TraceStats& stats);
 
+  // Shapes other than the ellipsoid (shape_trace.cpp). Their g is not
+  // quadratic along the ray; u = √g is convex along it.
+  //  - Each span's ray in its source's stored frame (shape_rays_), the
+  //    spans narrowed to the box that holds the shape's support, dropped
+  //    where the ray misses it, and put in spatial rank order.
+  void prepare_shape_rays(const BlobField& field, const Vec3& origin, const Vec3& direction);
+  //  - The earliest exact entry into one source's own level surface u =
+  //    √g_level among entries_ (each span's outer bound), or −1.
+  double first_shape_entry(const BlobField& field, double g_level, double tmax, TraceStats& stats);
+  //  - F at t, over the spans whose interval holds t; keeps each one's u and
+  //    du/dt there for proven_below_until().
+  double shape_value_at(const BlobField& field, double t, TraceStats& stats) const;
+  //  - The largest s ≤ tmax up to which F < C is proven from what the
+  //    last shape_value_at() found (to within a hundredth of the way, or
+  //    min_step).
+  double proven_below_until(const BlobField& field, double tmax, double min_step) const;
+  //  - The first crossing in [tmin, tmax] by stepping from proof to proof.
+  double shape_trace(const BlobField& field, double tmin, double tmax, const TraceSettings& settings,
+                     TraceStats& stats);
+
   double crowd_peak(double tmin, double last_peak) const;
   // Span i's g at t: its quadratic for the ellipsoid, the shape's own
   // function along the ray otherwise.
   double g_at(const BlobField& field, std::uint32_t i, double t) const {
-    if (shape_rays_.empty()) return spans[i].g(t);
+    if (quadric_) return spans[i].g(t);
     const ShapeRay& r = shape_rays_[i];
     return shape_g(field.shape, shape_params(field, spans[i].source), r.q0 + t * r.v);
   }
@@ -112,7 +132,21 @@ class FieldRay {
   struct ShapeRay {
     Vec3 q0, v;
   };
+  bool quadric_ = true;  // the field's shape is the ellipsoid (shape_is_quadric)
   std::vector<ShapeRay> shape_rays_;
+  struct SpanRay {
+    RaySpan span;
+    ShapeRay ray;
+  };
+  std::vector<SpanRay> shape_scratch_;  // prepare_shape_rays()'s
+  // Each span's u and du/dt where shape_value_at() last looked.
+  mutable std::vector<double> u_, du_dt_;
+  mutable double probed_at_ = 0.0;
+  struct Entry {
+    double t;            // where the ray enters the bounding ellipsoid's level surface
+    std::uint32_t span;
+  };
+  std::vector<Entry> entries_;
   mutable std::vector<std::uint32_t> contributing_;  // surface_at()'s scratch
 };
 

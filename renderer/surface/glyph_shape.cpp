@@ -91,6 +91,51 @@ double shape_g_gradient(GlyphShape shape, const ShapeParams& params, const Vec3&
   return n * n;
 }
 
+double shape_u_rate(GlyphShape shape, const ShapeParams& params, const Vec3& q_s, const Vec3& v_s, double& du_dt) {
+  if (shape == GlyphShape::ellipsoid) {
+    const double u = q_s.norm();
+    du_dt = u > 0.0 ? q_s.dot(v_s) / u : -v_s.norm();
+    return u;
+  }
+  // u = N(σ q_s): du/dt = σ ∇N · v_s.
+  const double sigma = params.bound_scale;
+  Vec3 dn;
+  const double u = superquadric_gauge(params, sigma * q_s, &dn);
+  du_dt = sigma * dn.dot(v_s);
+  return u;
+}
+
+double shape_entry(GlyphShape shape, const ShapeParams& params, const Vec3& q0, const Vec3& v, double u_level,
+                   double lo, double hi) {
+  double t = lo;
+  for (int i = 0; i < 60; ++i) {
+    double slope;
+    const double excess = shape_u_rate(shape, params, q0 + t * v, v, slope) - u_level;
+    if (excess <= 0.0) return t;
+    if (slope >= 0.0) return -1.0;
+    const double next = t - excess / slope;
+    if (next > hi) return -1.0;
+    // Converged: the root lies within round-off of next.
+    if (next - t <= 1e-13 * (std::fabs(t) + std::fabs(next)) || excess <= 1e-13 * u_level) return next;
+    t = next;
+  }
+  return -1.0;  // not settled: no bound from this source, which is always safe
+}
+
+bool clip_to_shape_box(const ShapeParams& params, const Vec3& q0, const Vec3& v, double& t0, double& t1) {
+  const double half = 1.0 / double(params.bound_scale);
+  for (int k = 0; k < 3; ++k) {
+    if (v[k] == 0.0) {
+      if (std::fabs(q0[k]) > half) return false;
+      continue;
+    }
+    const double a = (-half - q0[k]) / v[k], b = (half - q0[k]) / v[k];
+    t0 = std::max(t0, std::min(a, b));
+    t1 = std::min(t1, std::max(a, b));
+  }
+  return t0 <= t1;
+}
+
 ShapeParams superquadric_params(const Vec3& radii, double sharpness) {
   std::array<int, 3> order{0, 1, 2};  // radii from largest to smallest
   std::sort(order.begin(), order.end(), [&](int i, int j) { return radii[i] > radii[j]; });

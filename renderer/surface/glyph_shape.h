@@ -60,6 +60,27 @@ double shape_g(GlyphShape shape, const ShapeParams& params, const Vec3& q_s);
 // g and its gradient with respect to q_s (the world gradient is W_sᵀ times it).
 double shape_g_gradient(GlyphShape shape, const ShapeParams& params, const Vec3& q_s, Vec3& gradient);
 
+// u = √g at q_s and, through du_dt, its rate of change along v_s: the ray
+// q_s(t) = q0 + t v_s in the stored frame. u is convex along every ray for
+// both shapes (a norm of q), so du/dt never falls as t grows: past the
+// closest approach it stays ≥ 0, and before it |du/dt| only shrinks. The
+// sphere tracer's slope bound rests on that.
+double shape_u_rate(GlyphShape shape, const ShapeParams& params, const Vec3& q_s, const Vec3& v_s, double& du_dt);
+
+// The ray's first t in [lo, hi] with u(q0 + t v) ≤ u_level, or −1: Newton's
+// method from lo on the convex u − u_level, whose every iterate stays at or
+// before the first root (a convex function lies above its tangents), so it
+// converges from one side without overshooting; where du/dt ≥ 0 while
+// still outside, the ray has passed its closest approach and never enters.
+double shape_entry(GlyphShape shape, const ShapeParams& params, const Vec3& q0, const Vec3& v, double u_level,
+                   double lo, double hi);
+
+// Narrows [t0, t1] to where the ray q0 + t v (stored frame) is inside the
+// box that holds the shape's support u ≤ 1: for the superquadric the cube
+// |q_k| ≤ 1 of its own frame, |q_s,k| ≤ 1/σ, much tighter than the bounding
+// ellipsoid for sharp glyphs. False when nothing is left.
+bool clip_to_shape_box(const ShapeParams& params, const Vec3& q0, const Vec3& v, double& t0, double& t1);
+
 // Kindlmann's superquadric for a glyph of radii r (in W's row order):
 // Westin's measures of the radii sorted by size, c_l = (ρ1 − ρ2)/Σρ and
 // c_p = 2(ρ2 − ρ3)/Σρ, each at most 0.99; a linear glyph (c_l > c_p) is
