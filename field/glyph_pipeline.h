@@ -18,6 +18,7 @@
 
 #include "field/glyphs/curve_sources.h"
 #include "field/glyphs/glyph_sources.h"
+#include "field/glyphs/sign_convention.h"
 #include "field/glyphs/triangle_mesh.h"
 #include "field/reading/vtk_data.h"
 #include "field/sampling/point_load.h"
@@ -35,6 +36,7 @@ struct DataSpec {
   // When all three are ≥ 2, the data set is sampled onto a grid of these
   // dimensions spanning its bounds, and everything downstream reads the grid.
   std::array<int, 3> sample_grid{0, 0, 0};
+  SignConvention sign = SignConvention::tension_positive;
 };
 
 struct SeedGridSpec {

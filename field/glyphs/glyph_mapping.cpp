@@ -48,6 +48,7 @@ const char* color_scalar_name(ColorScalar c) {
     case ColorScalar::speed: return "speed";
     case ColorScalar::array: return "array";
     case ColorScalar::arc_length: return "arc_length";
+    case ColorScalar::none: return "none";
   }
   return "?";
 }
@@ -72,6 +73,7 @@ double color_scalar(const Vec3& eigenvalues, ColorScalar which) {
       return l1;
     case ColorScalar::array:
     case ColorScalar::arc_length:
+    case ColorScalar::none:
       return 0.0;
   }
   return l3;  // unreachable for valid enum values

@@ -30,7 +30,9 @@ struct GlyphMapping {
 // the position along a curve (0 at its start, 1 at its end).
 // family_eigenvalue: each line's own family's (λ1 on major lines, λ3 on
 // minor ones), for several families in one picture.
-enum class ColorScalar { lambda1, lambda2, lambda3, mean, von_mises, family_eigenvalue, speed, array, arc_length };
+// none: one neutral colour for every glyph, and no colour bar (a picture
+// whose shapes carry the meaning, or one printed in grey).
+enum class ColorScalar { lambda1, lambda2, lambda3, mean, von_mises, family_eigenvalue, speed, array, arc_length, none };
 
 // Radii r_1, r_2, r_3 for eigenvalues λ1 ≥ λ2 ≥ λ3.
 Vec3 map_radii(const Vec3& eigenvalues, const GlyphMapping& mapping);

@@ -86,6 +86,7 @@ std::vector<GlyphSource> read_source_list(const std::string& path, double glyph_
       whole({"r1", "r2", "r3"}, "r1, r2, r3 (the radii)");
       whole({"ax", "ay", "az", "bx", "by", "bz"}, "ax, ay, az, bx, by, bz (two axes)");
       whole({"qw", "qx", "qy", "qz"}, "qw, qx, qy, qz (a quaternion)");
+      whole({"l1", "l2", "l3"}, "l1, l2, l3 (the signed eigenvalues)");
       continue;
     }
     if (cells.size() != width)
@@ -130,6 +131,8 @@ std::vector<GlyphSource> read_source_list(const std::string& path, double glyph_
       s.axes = q.normalized().toRotationMatrix();
     }
     if (columns.count("scalar")) s.scalar = value("scalar");
+    // The signed values the radii stand for: a signed glyph shows their signs.
+    if (columns.count("l1")) s.eigenvalues = Vec3(value("l1"), value("l2"), value("l3"));
     sources.push_back(s);
   }
   if (columns.empty()) throw DataError(path + ": no header row: expected column names such as x, y, z, r");

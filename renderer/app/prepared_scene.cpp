@@ -67,6 +67,7 @@ std::string scalar_title(ColorScalar scalar, const SceneSpec& spec) {
     case ColorScalar::array:
       return spec.pipeline.placement == SourcePlacement::list ? "scalar" : spec.pipeline.data.file.color_array;
     case ColorScalar::arc_length: return "position along the curve";
+    case ColorScalar::none: return "";
   }
   return "";
 }
@@ -269,10 +270,20 @@ LegendLayout legend_for(const PreparedScene& p, int width, int height) {
   return layout_legend(p.scale, o.colorbar_title.value_or(scalar_title(p.glyphs.color, p.spec)), style, width, height);
 }
 
+// The sRGB colour every glyph gets with glyphs.color_by = "none": a middle
+// grey, dark enough to stand out from a white background and a light
+// shell, light enough for shading to model it.
+constexpr Rgb kUncoloured{0.62f, 0.62f, 0.62f};
+
+// Source i's sRGB colour on `scale`.
+Rgb source_srgb(const PreparedScene& p, const ColorScale& scale, std::size_t i) {
+  return p.glyphs.color == ColorScalar::none ? kUncoloured : scale.srgb(p.glyphs.sources[i].scalar);
+}
+
 void set_color_scale(PreparedScene& p, const ColorScale& scale, const ColorManagement& color) {
   p.scale = scale;
   for (std::size_t i = 0; i < p.field.sources.size(); ++i)
-    p.field.sources[i].color = color.to_scene_linear(scale.srgb(p.glyphs.sources[i].scalar));
+    p.field.sources[i].color = color.to_scene_linear(source_srgb(p, scale, i));
 }
 
 ColorManagement scene_color_management(const SceneSpec& spec) {
@@ -305,9 +316,10 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   p.resolve("color.range", toml::array{p.scale.lo, p.scale.hi});
   std::vector<std::array<float, 3>> colors;
   colors.reserve(p.glyphs.sources.size());
-  for (const GlyphSource& g : p.glyphs.sources) colors.push_back(color.to_scene_linear(p.scale.srgb(g.scalar)));
+  for (std::size_t i = 0; i < p.glyphs.sources.size(); ++i)
+    colors.push_back(color.to_scene_linear(source_srgb(p, p.scale, i)));
   p.field = make_blob_field(p.glyphs.sources, colors, s.surface.influence_radius, s.surface.kernel, s.surface.blend,
-                            s.surface.isovalue, s.surface.shape, s.surface.sharpness);
+                            s.surface.isovalue, s.surface.shape, s.surface.sharpness, s.pipeline.data.sign);
 
   // A box frames an analytic domain, a shell shows a mesh's boundary;
   // sources the scene gives itself have neither.
@@ -356,7 +368,8 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   p.output.dpi = s.output.dpi;
   if (exr) p.render.planes = s.output.layers;
   PictureReserve reserve;
-  if (s.output.colorbar && !p.field.sources.empty() && !exr) {
+  // No colour, no colour bar.
+  if (s.output.colorbar && !p.field.sources.empty() && !exr && p.glyphs.color != ColorScalar::none) {
     p.output.legend = legend_for(p, p.render.width, p.render.height);
     if (shaped) {  // the legend's part is added to the body's shape, not taken from it
       const bool right = p.output.legend->style.placement == LegendPlacement::right;

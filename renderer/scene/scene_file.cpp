@@ -67,6 +67,8 @@ void read_data(TableReader& data, DataSpec& spec, const std::string& base_dir) {
   const std::optional<std::string> file = data.optional_string("file");
   spec.kind = data.choice("kind", file ? DataKind::vtk_file : DataKind::point_load,
                           {{"point_load", DataKind::point_load}, {"vtk", DataKind::vtk_file}});
+  spec.sign = data.choice<SignConvention>("sign", {{"tension-positive", SignConvention::tension_positive},
+                                                   {"compression-positive", SignConvention::compression_positive}});
   if (spec.kind == DataKind::vtk_file) {
     if (!file || file->empty())
       data.fail_at("file", "is required when data.kind = \"vtk\" (a file of " + readable_formats_text() + ")");
@@ -198,9 +200,10 @@ void read_glyphs(TableReader& g, GlyphPipelineSpec& spec, SurfaceSpec& surface, 
     g.fail_at("placement", "= \"list\" needs glyphs.file, a CSV file of sources");
   }
   surface.shape = g.choice<GlyphShape>("shape", {{"ellipsoid", GlyphShape::ellipsoid},
-                                                 {"superquadric", GlyphShape::superquadric}});
-  if (g.has("sharpness") && surface.shape != GlyphShape::superquadric)
-    g.fail_at("sharpness", "applies only to glyphs.shape = \"superquadric\"");
+                                                 {"superquadric", GlyphShape::superquadric},
+                                                 {"signed", GlyphShape::signed_superquadric}});
+  if (g.has("sharpness") && surface.shape == GlyphShape::ellipsoid)
+    g.fail_at("sharpness", "applies only to glyphs.shape = \"superquadric\" or \"signed\"");
   surface.sharpness = g.number("sharpness");
   spec.stretch = g.number("stretch");
   spec.thickness = g.optional_number("thickness");
@@ -223,7 +226,8 @@ void read_glyphs(TableReader& g, GlyphPipelineSpec& spec, SurfaceSpec& surface, 
   } else if (g.has("color_by")) {
     std::vector<std::pair<std::string, ColorScalar>> names;
     for (ColorScalar c : {ColorScalar::lambda1, ColorScalar::lambda2, ColorScalar::lambda3, ColorScalar::mean,
-                          ColorScalar::von_mises, ColorScalar::family_eigenvalue, ColorScalar::speed, ColorScalar::arc_length})
+                          ColorScalar::von_mises, ColorScalar::family_eigenvalue, ColorScalar::speed, ColorScalar::arc_length,
+                        ColorScalar::none})
       names.emplace_back(color_scalar_name(c), c);
     spec.color = g.choice("color_by", names);
   }

@@ -94,7 +94,8 @@ std::vector<std::string> view_choices() {
 std::vector<std::string> color_by_choices() {
   std::vector<std::string> names;
   for (ColorScalar c : {ColorScalar::lambda1, ColorScalar::lambda2, ColorScalar::lambda3, ColorScalar::mean,
-                        ColorScalar::von_mises, ColorScalar::family_eigenvalue, ColorScalar::speed, ColorScalar::arc_length})
+                        ColorScalar::von_mises, ColorScalar::family_eigenvalue, ColorScalar::speed, ColorScalar::arc_length,
+                        ColorScalar::none})
     names.emplace_back(color_scalar_name(c));
   return names;
 }
@@ -118,6 +119,8 @@ std::vector<KeySchema> build_keys() {
       Key("data.kind", T::choice, "the data set: Boussinesq's point load, or a VTK data file")
           .choices({"point_load", "vtk"})
           .derived("\"vtk\" when data.file is given, else \"point_load\""),
+      Key("data.sign", T::choice, "which stress is positive: tension (mechanics) or compression (geomechanics, soil and rock)")
+          .choices({"tension-positive", "compression-positive"}).fallback("\"tension-positive\""),
       Key("data.sample_grid", T::numbers, "resample onto a uniform grid of this many nodes per axis")
           .count(3).range(0, 1000).fallback("[0, 0, 0]"),
       Key("data.bounds", T::numbers, "the point load's domain [xmin, xmax, ymin, ymax, zmin, zmax]")
@@ -192,8 +195,8 @@ std::vector<KeySchema> build_keys() {
                      "each line's own) for tensors, \"speed\" for a flow"),
       Key("glyphs.thickness", T::number, "2-D data: the glyphs' thickness across the plane").length()
           .automatic("each glyph's smaller in-plane diameter"),
-      Key("glyphs.shape", T::choice, "each glyph's form").choices({"ellipsoid", "superquadric"}).fallback("\"ellipsoid\""),
-      Key("glyphs.sharpness", T::number, "superquadric: γ, how sharp its edges (Teem's tend glyph -sh)")
+      Key("glyphs.shape", T::choice, "each glyph's form").choices({"ellipsoid", "superquadric", "signed"}).fallback("\"ellipsoid\""),
+      Key("glyphs.sharpness", T::number, "superquadric and signed: γ, how sharp its edges (Teem's tend glyph -sh)")
           .range(0.0, 10.0).fallback("3"),
       Key("glyphs.stretch", T::number, "streamballs: the radius along the flow times this").range(1.0, 100.0).fallback("1"),
       Key("glyphs.file", T::string, "placement = \"list\": the CSV file of sources").none(),

@@ -21,7 +21,7 @@ BlobSource make_blob_source(const Vec3& centre, const Mat3& axes, const Vec3& ra
 BlobField make_blob_field(const std::vector<GlyphSource>& glyphs,
                           const std::vector<std::array<float, 3>>& colors,
                           double influence_radius, KernelKind kernel, Blend blend,
-                          double isovalue, GlyphShape shape, double sharpness) {
+                          double isovalue, GlyphShape shape, double sharpness, SignConvention sign) {
   if (colors.size() != glyphs.size())
     throw std::invalid_argument("make_blob_field: one colour per glyph is required");
   BlobField field;
@@ -33,8 +33,10 @@ BlobField make_blob_field(const std::vector<GlyphSource>& glyphs,
   for (std::size_t i = 0; i < glyphs.size(); ++i) {
     // W_s = W/σ: the bounding ellipsoid's radii are σ R r_k.
     double sigma = 1.0;
-    if (shape == GlyphShape::superquadric) {
-      field.shapes.push_back(superquadric_params(glyphs[i].radii, sharpness));
+    if (shape != GlyphShape::ellipsoid) {
+      field.shapes.push_back(shape == GlyphShape::superquadric
+                                 ? superquadric_params(glyphs[i].radii, sharpness)
+                                 : signed_params(glyphs[i].radii, glyphs[i].eigenvalues, sharpness, sign));
       sigma = field.shapes.back().bound_scale;
     }
     field.sources.push_back(make_blob_source(glyphs[i].centre, glyphs[i].axes, glyphs[i].radii,

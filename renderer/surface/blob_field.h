@@ -47,11 +47,13 @@ struct BlobField {
 
 // Sources from the field library's glyphs with the fixed influence radius R
 // (paper §4.2) and one scene-linear colour per glyph, in `shape` (with
-// `sharpness` for superquadrics).
+// `sharpness` for superquadrics, and `sign` telling a signed glyph which
+// eigenvalues compress).
 BlobField make_blob_field(const std::vector<GlyphSource>& glyphs,
                           const std::vector<std::array<float, 3>>& colors,
                           double influence_radius, KernelKind kernel, Blend blend,
-                          double isovalue, GlyphShape shape = GlyphShape::ellipsoid, double sharpness = 3.0);
+                          double isovalue, GlyphShape shape = GlyphShape::ellipsoid, double sharpness = 3.0,
+                          SignConvention sign = SignConvention::tension_positive);
 
 // Source i's shape parameters: the defaults (σ = 1) for ellipsoids, which
 // store none.

@@ -30,7 +30,8 @@ PNorm p_norm(double x, double y, double p) {
   return n;
 }
 
-// The superquadric gauge N at q (the glyph's own scaled frame) and ∇N.
+// The superquadric gauge N at q (the glyph's own scaled frame) and ∇N, with
+// the signed glyph's points where it has them.
 double superquadric_gauge(const ShapeParams& s, const Vec3& q, Vec3* gradient) {
   const int z = s.axis, a = (z + 1) % 3, b = (z + 2) % 3;
   const PNorm equator = p_norm(q[a], q[b], 2.0 / double(s.alpha));
@@ -40,7 +41,22 @@ double superquadric_gauge(const ShapeParams& s, const Vec3& q, Vec3* gradient) {
     (*gradient)[b] = whole.dx * equator.dy;
     (*gradient)[z] = whole.dy;
   }
-  return whole.value;
+  double n = whole.value;
+  for (int k = 0; k < 3; ++k) {
+    if (!(s.pointed & (1u << k))) continue;
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    const double across = std::hypot(q[i], q[j]);
+    const double cone = across / kConeBase + std::fabs(q[k]);
+    if (cone <= n) continue;
+    n = cone;
+    if (gradient) {
+      Vec3 g = Vec3::Zero();
+      if (across > 0.0) g[i] = q[i] / (across * kConeBase), g[j] = q[j] / (across * kConeBase);
+      g[k] = std::copysign(1.0, q[k]);
+      *gradient = g;
+    }
+  }
+  return n;
 }
 
 // σ = max |q|/N(q) = 1/min N over the unit sphere. For fixed |(q_a, q_b)| = ρ
@@ -134,6 +150,16 @@ bool clip_to_shape_box(const ShapeParams& params, const Vec3& q0, const Vec3& v,
     t1 = std::min(t1, std::max(a, b));
   }
   return t0 <= t1;
+}
+
+ShapeParams signed_params(const Vec3& radii, const Vec3& eigenvalues, double sharpness, SignConvention sign) {
+  ShapeParams s = superquadric_params(radii, sharpness);
+  const double largest = eigenvalues.cwiseAbs().maxCoeff();
+  for (int k = 0; k < 3; ++k)
+    if (is_compressive(eigenvalues[k], sign) && std::fabs(eigenvalues[k]) > 1e-3 * largest)
+      s.pointed |= std::uint8_t(1u << k);
+  if (s.pointed) s.lipschitz = float(std::sqrt(1.0 + 1.0 / (kConeBase * kConeBase)) * (1.0 + 1e-6));
+  return s;
 }
 
 ShapeParams superquadric_params(const Vec3& radii, double sharpness) {

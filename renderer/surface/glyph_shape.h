@@ -30,15 +30,38 @@
 //    not creases, so the gradient is defined everywhere on the surface
 //    (each norm is evaluated divided by its largest term, so exponents of
 //    10⁶ stay finite).
+//  - signed: the superquadric of the radii with a cone's point at both
+//    ends of every compressive axis k, u = max(N(q), C_k(q)) with the
+//    double cone C_k(q) = ‖q_⊥k‖/ρ + |q_k| (apex at q_k = ±1, base radius
+//    ρ = kConeBase). A maximum of norms is a norm, so the glyph stays
+//    convex, u stays convex along every ray and N ≤ u keeps σ and the
+//    cube; C_k ≤ √(1 + 1/ρ²)|q|, so u is Lipschitz with that constant
+//    (ShapeParams::lipschitz) instead of 1. Tension ends are the
+//    superquadric's flat or round faces, compression ends are points:
+//    the sign reads without colour, and a definite compression (three
+//    points) differs from a definite tension (none), which Schultz and
+//    Kindlmann's 2010 glyph, the same for T and −T, does not show. Their
+//    concave "thorns" (exponents up to 3) are left out on purpose: a
+//    non-convex gauge has no Lipschitz constant at its cusps, and the
+//    tracer's proofs rest on convexity. The gradient is the larger
+//    branch's (on the crease where they meet either is a subgradient,
+//    which is all the tangent bounds need); at a cone's apex its radial
+//    part is taken as 0.
 
 #include <array>
 #include <cstdint>
 
 #include "base/vec3.h"
+#include "field/glyphs/sign_convention.h"
 
 namespace hsb {
 
-enum class GlyphShape { ellipsoid, superquadric };
+enum class GlyphShape { ellipsoid, superquadric, signed_superquadric };
+
+// The signed glyph's cone base radius ρ, in the glyph's scaled frame: its
+// points have a half-angle of atan ρ ≈ 56° and replace the faces beyond
+// 0.38 of the way out.
+constexpr double kConeBase = 1.5;
 
 // A source's shape beyond its axes and radii; the ellipsoid has none.
 struct ShapeParams {
@@ -47,6 +70,10 @@ struct ShapeParams {
   // most σ times √g_e's, and g_e ≤ g_level/σ² lies inside the level surface.
   float bound_scale = 1.0f;
   std::uint8_t axis = 2;            // superquadric: the symmetry axis, a row of W (0, 1 or 2)
+  std::uint8_t pointed = 0;         // signed: bit k set when axis k (row k of W) is compressive
+  // Largest |∇u| in the glyph's own frame q = σ q_s: 1, or √(1 + 1/ρ²)
+  // with a point.
+  float lipschitz = 1.0f;
 };
 // Whether g is the quadratic g_e itself: F is then a polynomial along a ray
 // for the polynomial kernels (the exact intersector), one source alone is
@@ -89,5 +116,11 @@ bool clip_to_shape_box(const ShapeParams& params, const Vec3& q0, const Vec3& v,
 // γ = `sharpness` (Teem's `tend glyph -sh`); 0 gives the ellipsoid's
 // exponents.
 ShapeParams superquadric_params(const Vec3& radii, double sharpness);
+
+// The signed glyph: superquadric_params(radii, sharpness) with a point on
+// every axis whose eigenvalue is compressive under `sign` and larger than
+// a thousandth of the largest in magnitude (a zero eigenvalue's noise
+// must not flicker points on and off).
+ShapeParams signed_params(const Vec3& radii, const Vec3& eigenvalues, double sharpness, SignConvention sign);
 
 }  // namespace hsb

@@ -98,8 +98,9 @@ double FieldRay::proven_below_until(const BlobField& field, double tmax, double 
         u = du_dt_[i] < 0.0 ? u_[i] + du_dt_[i] * (to - t) : u_[i];
       } else {
         // Not yet entered: u ≥ 1 at the support's edge t0, and u changes
-        // at most σ√a per unit (glyph_shape.h).
-        const double rate = std::sqrt(span.a) * double(shape_params(field, span.source).bound_scale);
+        // at most Lσ√a per unit (glyph_shape.h).
+        const ShapeParams& shape = shape_params(field, span.source);
+        const double rate = std::sqrt(span.a) * double(shape.bound_scale) * double(shape.lipschitz);
         u = 1.0 - rate * (to - span.t0);
       }
       // And u ≥ √g_e, the bounding ellipsoid's, smallest where the ray is

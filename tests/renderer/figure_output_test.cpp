@@ -51,6 +51,25 @@ std::unique_ptr<OIIO::ImageInput> open_image(const std::string& path) {
   return in;
 }
 
+// glyphs.color_by = "none": every glyph one grey, and no colour bar to
+// explain a colour that says nothing; the signed glyphs of the point load
+// still differ where the stress is tension and where it is compression.
+TEST(UncolouredFigure, HasOneGreyAndNoColourBar) {
+  SceneSpec spec = load_scene_text(
+      "[[seeds.grid]]\ncorner = [-0.8, 0, -0.8]\nedge_u = [1.6, 0, 0]\nedge_v = [0, 0, 1.6]\nn = 4\nm = 4\n"
+      "[glyphs]\nplacement = \"seeds\"\nshape = \"signed\"\ncolor_by = \"none\"\n",
+      "uncoloured.toml", "");
+  const ColorManagement color("", "");
+  const std::unique_ptr<PreparedScene> p = prepare_scene(std::move(spec), color);
+  ASSERT_EQ(p->field.sources.size(), 16u);
+  EXPECT_FALSE(p->output.legend);
+  for (const BlobSource& s : p->field.sources) EXPECT_EQ(s.color, p->field.sources.front().color);
+  int pointed = 0, blunt = 0;
+  for (const ShapeParams& shape : p->field.shapes) (shape.pointed ? pointed : blunt) += 1;
+  EXPECT_EQ(pointed + blunt, 16);
+  EXPECT_GT(pointed, 0);  // the point load compresses somewhere in every glyph's neighbourhood
+}
+
 TEST_F(FigureOutput, TheColourUnderEachTickIsTheColormaps) {
   for (const char* placement : {"right", "bottom"}) {
     SCOPED_TRACE(placement);

@@ -1,8 +1,9 @@
-// Superquadric glyphs (renderer/surface/glyph_shape.h): Kindlmann's
-// exponents as Teem computes them, the bounds every shape promises the
-// renderer (g_e ≤ g, |∇u| ≤ σ in the stored frame, the inner ball inside
-// the glyph), and the sphere tracer on blended superquadrics against dense
-// sampling along random rays: no crossing missed, none misplaced.
+// Superquadric and signed glyphs (renderer/surface/glyph_shape.h):
+// Kindlmann's exponents as Teem computes them, the signed glyph's points,
+// the bounds every shape promises the renderer (g_e ≤ g, the cube, |∇u| ≤
+// Lσ in the stored frame, u convex along rays), and the tracer on blended
+// and united glyphs against dense sampling along random rays: no crossing
+// missed, none misplaced.
 
 #include <gtest/gtest.h>
 
@@ -41,43 +42,97 @@ TEST(Superquadric, ExponentsAreKindlmannsAsTeemComputesThem) {
   EXPECT_LE(cube.bound_scale, std::sqrt(3.0) * (1.0 + 1e-5));
 }
 
-std::vector<ShapeParams> sample_shapes() {
-  std::vector<ShapeParams> shapes;
+// Superquadrics of every proportion and sharpness, and signed glyphs of
+// every sign pattern.
+std::vector<std::pair<GlyphShape, ShapeParams>> sample_shapes() {
+  std::vector<std::pair<GlyphShape, ShapeParams>> shapes;
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(0.05, 1.0);
-  for (int i = 0; i < 40; ++i)
-    shapes.push_back(superquadric_params(Vec3(u(rng), u(rng), u(rng)), i % 2 ? 3.0 : 6.0));
+  for (int i = 0; i < 40; ++i) {
+    const Vec3 radii(u(rng), u(rng), u(rng));
+    const double sharpness = i % 2 ? 3.0 : 6.0;
+    shapes.emplace_back(GlyphShape::superquadric, superquadric_params(radii, sharpness));
+    const Vec3 signs(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1);
+    shapes.emplace_back(GlyphShape::signed_superquadric,
+                        signed_params(radii, signs.cwiseProduct(radii), sharpness, SignConvention::tension_positive));
+  }
   return shapes;
 }
 
 // The promises the tracer's bounds rest on, at random points of every
-// direction and scale: g_e ≤ g ≤ σ² g_e (the bounding and the inner
-// ellipsoid), and |∇u| ≤ σ in the stored frame (the slope bound), with the
-// analytic gradient matching finite differences.
-TEST(Superquadric, KeepsTheBoundsTheTracerRestsOn) {
+// direction and scale: g_e ≤ g (the bounding ellipsoid), u ≥ max|q_k| (the
+// cube) and |∇u| ≤ Lσ in the stored frame (the rate of a source not yet
+// reached), with the analytic gradient matching finite differences (a
+// signed glyph's crease, where two branches meet, aside).
+TEST(GlyphShapes, KeepTheBoundsTheTracerRestsOn) {
   std::mt19937 rng(11);
   std::normal_distribution<double> n;
-  for (const ShapeParams& s : sample_shapes()) {
+  int gradients = 0, mismatched = 0;
+  for (const auto& [shape, s] : sample_shapes()) {
     const double sigma = s.bound_scale;
     for (int i = 0; i < 400; ++i) {
       const Vec3 q = std::exp(n(rng)) * Vec3(n(rng), n(rng), n(rng));
       Vec3 grad;
-      const double g = shape_g_gradient(GlyphShape::superquadric, s, q, grad);
+      const double g = shape_g_gradient(shape, s, q, grad);
       const double g_e = q.squaredNorm();
       ASSERT_LE(g_e, g * (1.0 + 1e-9)) << "α " << s.alpha << " β " << s.beta;
-      ASSERT_LE(g, sigma * sigma * g_e * (1.0 + 1e-9));
-      // ∇u = ∇g / (2u).
       const double u = std::sqrt(g);
-      ASSERT_LE(grad.norm() / (2.0 * u), sigma * (1.0 + 1e-9));
+      ASSERT_GE(u * (1.0 + 1e-9), sigma * q.cwiseAbs().maxCoeff());
+      // ∇u = ∇g / (2u).
+      ASSERT_LE(grad.norm() / (2.0 * u), sigma * s.lipschitz * (1.0 + 1e-9));
       for (int k = 0; k < 3; ++k) {
         const double h = 1e-6 * q.norm();
         Vec3 lo = q, hi = q;
         lo[k] -= h, hi[k] += h;
-        const double numeric = (shape_g(GlyphShape::superquadric, s, hi) - shape_g(GlyphShape::superquadric, s, lo)) / (2 * h);
-        EXPECT_NEAR(grad[k], numeric, 1e-4 * (std::fabs(numeric) + grad.norm()));
+        const double numeric = (shape_g(shape, s, hi) - shape_g(shape, s, lo)) / (2 * h);
+        ++gradients;
+        if (std::fabs(grad[k] - numeric) > 1e-4 * (std::fabs(numeric) + grad.norm())) {
+          ++mismatched;
+          EXPECT_EQ(shape, GlyphShape::signed_superquadric) << "α " << s.alpha << " β " << s.beta;
+        }
       }
     }
   }
+  EXPECT_LT(mismatched, gradients / 1000);
+}
+
+// Newton's entry and the tangent-line bounds need u convex along every
+// ray: u(midpoint) ≤ the mean of u at the ends.
+TEST(GlyphShapes, AreConvexAlongEveryRay) {
+  std::mt19937 rng(13);
+  std::normal_distribution<double> n;
+  for (const auto& [shape, s] : sample_shapes())
+    for (int i = 0; i < 400; ++i) {
+      const Vec3 a(n(rng), n(rng), n(rng)), b(n(rng), n(rng), n(rng));
+      const double mid = std::sqrt(shape_g(shape, s, 0.5 * (a + b)));
+      ASSERT_LE(mid, 0.5 * (std::sqrt(shape_g(shape, s, a)) + std::sqrt(shape_g(shape, s, b))) + 1e-12);
+    }
+}
+
+// A signed glyph points the axes that compress, under either convention,
+// keeps every radius (u = 1 at each axis' end) and is sharper than the
+// superquadric near a point, the same elsewhere.
+TEST(GlyphShapes, SignedGlyphPointsTheAxesThatCompress) {
+  const Vec3 radii(1.0, 0.5, 0.25), eigenvalues(1.0, 0.5, -0.25);
+  const ShapeParams mechanics = signed_params(radii, eigenvalues, 3.0, SignConvention::tension_positive);
+  EXPECT_EQ(mechanics.pointed, 0b100);
+  const ShapeParams soil = signed_params(radii, eigenvalues, 3.0, SignConvention::compression_positive);
+  EXPECT_EQ(soil.pointed, 0b011);
+  // A zero eigenvalue's noise points nothing.
+  EXPECT_EQ(signed_params(radii, Vec3(1.0, -1e-9, 0.5), 3.0, SignConvention::tension_positive).pointed, 0);
+  const ShapeParams plain = superquadric_params(radii, 3.0);
+  const double sigma = plain.bound_scale;
+  const auto u = [&](GlyphShape shape, const ShapeParams& s, const Vec3& q) {
+    return std::sqrt(shape_g(shape, s, q / sigma));  // q in the glyph's own frame
+  };
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 end = Vec3::Unit(k);
+    EXPECT_NEAR(u(GlyphShape::signed_superquadric, mechanics, end), 1.0, 1e-6);
+  }
+  const Vec3 near_point(0.3, 0.3, 0.9), near_face(0.9, 0.3, 0.05);
+  EXPECT_GT(u(GlyphShape::signed_superquadric, mechanics, near_point),
+            1.05 * u(GlyphShape::superquadric, plain, near_point));
+  EXPECT_DOUBLE_EQ(u(GlyphShape::signed_superquadric, mechanics, near_face), u(GlyphShape::superquadric, plain, near_face));
 }
 
 Mat3 random_rotation(std::mt19937& rng) {
@@ -85,8 +140,9 @@ Mat3 random_rotation(std::mt19937& rng) {
   return Eigen::Quaterniond(n(rng), n(rng), n(rng), n(rng)).normalized().toRotationMatrix();
 }
 
-// A crowd of sharp, overlapping superquadrics of every proportion.
-BlobField superquadric_crowd(int count, double sharpness, Blend blend) {
+// A crowd of sharp, overlapping glyphs of every proportion (signed ones of
+// every sign pattern).
+BlobField superquadric_crowd(int count, double sharpness, Blend blend, GlyphShape shape = GlyphShape::superquadric) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<GlyphSource> glyphs;
@@ -96,16 +152,19 @@ BlobField superquadric_crowd(int count, double sharpness, Blend blend) {
     g.centre = Vec3(u(rng), u(rng), u(rng)) - Vec3::Constant(0.5);
     g.axes = random_rotation(rng);
     g.radii = Vec3(0.1 + 0.3 * u(rng), 0.05 + 0.2 * u(rng), 0.03 + 0.1 * u(rng));
+    g.eigenvalues = Vec3(i & 1 ? 1 : -1, i & 2 ? 1 : -1, i & 4 ? 1 : -1).cwiseProduct(g.radii);
     glyphs.push_back(g);
     colors.push_back({1.0f, 1.0f, 1.0f});
   }
-  return make_blob_field(glyphs, colors, 1.0, KernelKind::wyvill, blend, 0.5, GlyphShape::superquadric, sharpness);
+  return make_blob_field(glyphs, colors, 1.0, KernelKind::wyvill, blend, 0.5, shape, sharpness);
 }
 
-TEST(Superquadric, SphereTracerFindsEveryCrossingDenseSamplingFinds) {
-  for (const Blend blend : {Blend::sum, Blend::max}) {
-    SCOPED_TRACE(blend == Blend::sum ? "sum" : "max");
-    const BlobField field = superquadric_crowd(30, 3.0, blend);
+TEST(GlyphShapes, TracerFindsEveryCrossingDenseSamplingFinds) {
+  for (const auto& [shape, blend] : {std::pair{GlyphShape::superquadric, Blend::sum}, {GlyphShape::superquadric, Blend::max},
+                                     {GlyphShape::signed_superquadric, Blend::sum}, {GlyphShape::signed_superquadric, Blend::max}}) {
+    SCOPED_TRACE(std::string(shape == GlyphShape::superquadric ? "superquadric " : "signed ") +
+                 (blend == Blend::sum ? "sum" : "max"));
+    const BlobField field = superquadric_crowd(30, 3.0, blend, shape);
     TraceSettings settings;
     settings.intersector = Intersector::sphere;
     settings.min_step = 1e-7;

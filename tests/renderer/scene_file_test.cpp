@@ -208,6 +208,22 @@ TEST_F(SceneFile, ExactIntersectorOnlyWhereItApplies) {
             std::string::npos);
 }
 
+// The signed glyph: its key, the sign convention it reads, and a
+// sharpness that applies to it; a sharpness without a shape that has one
+// is located.
+TEST_F(SceneFile, SignedGlyphsAndTheSignConvention) {
+  const SceneSpec mechanics = load_scene(write(std::string(minimal) + "[glyphs]\nshape = \"signed\"\nsharpness = 2\n"));
+  EXPECT_EQ(mechanics.surface.shape, GlyphShape::signed_superquadric);
+  EXPECT_EQ(mechanics.surface.sharpness, 2.0);
+  EXPECT_EQ(mechanics.pipeline.data.sign, SignConvention::tension_positive);
+  const SceneSpec soil = load_scene(write(std::string(minimal) + "[data]\nsign = \"compression-positive\"\n"));
+  EXPECT_EQ(soil.pipeline.data.sign, SignConvention::compression_positive);
+  EXPECT_NE(error_of(std::string(minimal) + "[data]\nsign = \"positive\"\n").find("compression-positive"),
+            std::string::npos);
+  EXPECT_NE(error_of(std::string(minimal) + "[glyphs]\nsharpness = 2\n").find("glyphs.shape = \"superquadric\" or \"signed\""),
+            std::string::npos);
+}
+
 TEST_F(SceneFile, DataKindFollowsTheFile) {
   const std::string data = std::string(HSB_SOURCE_DIR) + "/scenes/data/cylinder_stress_coarse.vtu";
   const SceneSpec spec = load_scene(write("[data]\nfile = \"" + data + "\"\n"));
