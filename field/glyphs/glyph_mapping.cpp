@@ -53,6 +53,15 @@ const char* color_scalar_name(ColorScalar c) {
   return "?";
 }
 
+const std::vector<ColorScalar>& named_color_scalars() {
+  static const std::vector<ColorScalar> named{ColorScalar::lambda1,   ColorScalar::lambda2,
+                                              ColorScalar::lambda3,   ColorScalar::mean,
+                                              ColorScalar::von_mises, ColorScalar::family_eigenvalue,
+                                              ColorScalar::speed,     ColorScalar::arc_length,
+                                              ColorScalar::none};
+  return named;
+}
+
 double color_scalar(const Vec3& eigenvalues, ColorScalar which) {
   const double l1 = eigenvalues(0), l2 = eigenvalues(1), l3 = eigenvalues(2);
   switch (which) {

@@ -2,6 +2,7 @@
 // How eigenvalues become glyph radii and a colour scalar (paper §5).
 
 #include <limits>
+#include <vector>
 
 #include "field/tensor/eigensystem.h"
 
@@ -40,6 +41,10 @@ Vec3 map_radii(const Vec3& eigenvalues, const GlyphMapping& mapping);
 // The name a scene file gives `which` ("lambda3", "speed"; "array" is
 // written "array:NAME" there).
 const char* color_scalar_name(ColorScalar which);
+
+// The colour scalars a scene names by color_scalar_name() (every one but
+// `array`), in the order the scene keys list them.
+const std::vector<ColorScalar>& named_color_scalars();
 
 // The scalars that follow from the eigenvalues (a flow source's are its
 // speed three times); 0 for array and arc_length, which the caller sets.

@@ -225,10 +225,7 @@ void read_glyphs(TableReader& g, GlyphPipelineSpec& spec, SurfaceSpec& surface, 
     spec.data.file.color_array = name;
   } else if (g.has("color_by")) {
     std::vector<std::pair<std::string, ColorScalar>> names;
-    for (ColorScalar c : {ColorScalar::lambda1, ColorScalar::lambda2, ColorScalar::lambda3, ColorScalar::mean,
-                          ColorScalar::von_mises, ColorScalar::family_eigenvalue, ColorScalar::speed, ColorScalar::arc_length,
-                        ColorScalar::none})
-      names.emplace_back(color_scalar_name(c), c);
+    for (ColorScalar c : named_color_scalars()) names.emplace_back(color_scalar_name(c), c);
     spec.color = g.choice("color_by", names);
   }
   g.finish();

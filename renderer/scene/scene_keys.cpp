@@ -93,10 +93,7 @@ std::vector<std::string> view_choices() {
 
 std::vector<std::string> color_by_choices() {
   std::vector<std::string> names;
-  for (ColorScalar c : {ColorScalar::lambda1, ColorScalar::lambda2, ColorScalar::lambda3, ColorScalar::mean,
-                        ColorScalar::von_mises, ColorScalar::family_eigenvalue, ColorScalar::speed, ColorScalar::arc_length,
-                        ColorScalar::none})
-    names.emplace_back(color_scalar_name(c));
+  for (ColorScalar c : named_color_scalars()) names.emplace_back(color_scalar_name(c));
   return names;
 }
 

@@ -134,11 +134,6 @@ class FieldRay {
   };
   bool quadric_ = true;  // the field's shape is the ellipsoid (shape_is_quadric)
   std::vector<ShapeRay> shape_rays_;
-  struct SpanRay {
-    RaySpan span;
-    ShapeRay ray;
-  };
-  std::vector<SpanRay> shape_scratch_;  // prepare_shape_rays()'s
   // Each span's u and du/dt where shape_value_at() last looked.
   mutable std::vector<double> u_, du_dt_;
   mutable double probed_at_ = 0.0;

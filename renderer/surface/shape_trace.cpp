@@ -20,28 +20,23 @@
 namespace hsb {
 
 void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, const Vec3& direction) {
-  shape_scratch_.clear();
-  for (const RaySpan& s : spans) {
+  // Spatial rank order: every sum over the spans is then the same to the
+  // bit whatever order the BVH handed them over in.
+  std::sort(spans.begin(), spans.end(), [](const RaySpan& a, const RaySpan& b) { return a.rank < b.rank; });
+  shape_rays_.clear();
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < spans.size(); ++i) {
+    RaySpan s = spans[i];
     const BlobSource& source = field.sources[s.source];
     const Mat3 w = shape_matrix(source);
     const ShapeRay r{scaled_offset(source, w, origin), w * direction};
-    RaySpan clipped = s;
-    if (clip_to_shape_box(shape_params(field, s.source), r.q0, r.v, clipped.t0, clipped.t1))
-      shape_scratch_.push_back({clipped, r});
+    if (!clip_to_shape_box(shape_params(field, s.source), r.q0, r.v, s.t0, s.t1)) continue;
+    spans[kept++] = s;
+    shape_rays_.push_back(r);
   }
-  // Spatial rank order: every sum over the spans is then the same to the
-  // bit whatever order the BVH handed them over in.
-  std::sort(shape_scratch_.begin(), shape_scratch_.end(),
-            [](const SpanRay& a, const SpanRay& b) { return a.span.rank < b.span.rank; });
-  const std::size_t n = shape_scratch_.size();
-  spans.resize(n);
-  shape_rays_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    spans[i] = shape_scratch_[i].span;
-    shape_rays_[i] = shape_scratch_[i].ray;
-  }
-  u_.assign(n, 1.0);
-  du_dt_.assign(n, 0.0);
+  spans.resize(kept);
+  u_.assign(kept, 1.0);
+  du_dt_.assign(kept, 0.0);
 }
 
 double FieldRay::first_shape_entry(const BlobField& field, double g_level, double tmax, TraceStats& stats) {
