@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Every instruction set this processor has gives the same files, byte for
-# byte: fig09 (the field, the domain's edges) and the cylinder with its
-# shell and trajectory tubes, small. Also the switch itself: --isa and
+# byte: fig09 (the field, the domain's edges), the cylinder with its
+# shell and trajectory tubes, and signed glyphs (the shape tracer), small. Also the switch itself: --isa and
 # HSB_ISA, what --version says, and one clear error for a bad name.
 source "$(dirname "$0")/common.sh"
 
@@ -40,9 +40,11 @@ for isa in "${supported[@]}"; do
     fail "fig09 on $isa"
   "$hsb" --isa "$isa" render "$src/scenes/fig12_cylinder_hyperstreamlines.toml" --set render.trajectories=true \
     --set render.width=200 --set render.height=150 -o "$work/$isa" -q || fail "fig12 on $isa"
+  "$hsb" --isa "$isa" render "$src/tests/golden/scenes/signed_hyperstreamlines.toml" "${small[@]}" -o "$work/$isa" -q ||
+    fail "signed glyphs on $isa"
 done
 for isa in "${supported[@]}"; do
-  for image in fig09_point_load_hyperstreamsurface.png fig12_cylinder_hyperstreamlines.png; do
+  for image in fig09_point_load_hyperstreamsurface.png fig12_cylinder_hyperstreamlines.png signed_hyperstreamlines.png; do
     cmp -s "$work/${supported[0]}/$image" "$work/$isa/$image" ||
       fail "$image on $isa is not the same bytes as on ${supported[0]}"
   done
