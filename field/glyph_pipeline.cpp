@@ -129,7 +129,40 @@ GlyphValues resolve_lengths(const GlyphPipelineSpec& spec, const Box3& domain, c
   t.direction = spec.trajectory.direction;
   t.signed_directions = loaded.vectors != nullptr;
   v.spacing = spec.spacing.value_or(automatic_spacing(domain, spec.size.mapping, separation));
+  if (spec.placement == SourcePlacement::along_trajectories)
+    v.beads = spec.beads ? spec.beads : spec.signed_shapes && !spec.spacing ? std::optional<double>(0.0) : std::nullopt;
   return v;
+}
+
+// The sources of every trajectory as beads (BeadRule), once the mapping
+// that sizes them is known. `extent` turns a radius along the line into a
+// length (for a flow, with the stretch along it); where no glyph can be
+// made the walk steps on by `spacing`. The count is bounded before any is
+// made: no bead is shorter than the floor allows.
+template <typename Maker>
+std::vector<GlyphSource> beads_along(const std::vector<Trajectory>& trajectories, double overlap,
+                                     const GlyphMapping& mapping, double extent, double spacing, const Maker& maker) {
+  const double least_step = 2.0 * (1.0 - overlap) * extent * mapping.floor;
+  double count = 0.0;
+  for (const Trajectory& t : trajectories) count += t.points.empty() ? 0.0 : t.length() / least_step + 1.0;
+  std::ostringstream what;
+  what << "the glyph sources (up to " << std::setprecision(count < 1e15 ? 15 : 3) << std::floor(count)
+       << " beads along " << trajectories.size() << " trajectories at glyphs.floor " << mapping.floor << ")";
+  check_memory(resident_bytes() + count * kBytesPerSource, what.str(), "raise glyphs.floor or glyphs.beads");
+  std::vector<std::vector<GlyphSource>> per_line(trajectories.size());
+  tbb::parallel_for(std::size_t{0}, per_line.size(), [&](std::size_t i) {
+    const int along = trajectories[i].family == EigenFamily::medium  ? 1
+                      : trajectories[i].family == EigenFamily::minor ? 2
+                                                                      : 0;
+    BeadRule rule;
+    rule.overlap = overlap;
+    rule.least_step = std::min(least_step, spacing);
+    rule.half_length = [&, along](const GlyphSource& s) { return extent * map_radii(s.eigenvalues, mapping)[along]; };
+    per_line[i] = place_beads(trajectories[i], rule, maker(trajectories[i].family));
+  });
+  std::vector<GlyphSource> sources;
+  for (std::vector<GlyphSource>& line : per_line) sources.insert(sources.end(), line.begin(), line.end());
+  return sources;
 }
 
 const char* stop_name(StopReason r) {
@@ -613,6 +646,14 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   for (const GlyphSource& s : scene.sources) eigenvalues.push_back(s.eigenvalues);
   const bool on_lines = even && scene.placement == SourcePlacement::along_trajectories;
   scene.values.mapping = automatic_glyph_mapping(spec.size, eigenvalues, scene.domain, glyph_extent, gap, on_lines);
+  if (scene.values.beads) {
+    // Placed again, now that their sizes are known; the mapping keeps the
+    // statistics of the sources at `spacing`.
+    const double spaced = double(scene.sources.size());
+    scene.sources = beads_along(scene.trajectories, *scene.values.beads, scene.values.mapping,
+                                glyph_extent * (flow ? spec.stretch : 1.0), values.spacing, maker);
+    scene.memory_estimate += (double(scene.sources.size()) - spaced) * kBytesPerSource;
+  }
   size_sources(scene.sources, scene.values.mapping);
   if (flow && spec.stretch != 1.0) stretch_sources(scene.sources, spec.stretch);
   if (scene.plane_axis)

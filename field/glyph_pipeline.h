@@ -119,6 +119,13 @@ struct GlyphPipelineSpec {
   TrajectorySpec trajectory;
   SourcePlacement placement = SourcePlacement::along_trajectories;
   std::optional<double> spacing;  // arc length between sources
+  // Glyphs end to end along each trajectory instead (BeadRule): how much
+  // neighbours overlap, a fraction of their lengths. Automatic: 0 (tip to
+  // tip) when the glyphs' shape shows the sign (`signed_shapes`) and no
+  // spacing is given, as the sign of a line's own eigenvalue shows only at
+  // the glyphs' ends, which blending at a spacing would bury; else none.
+  std::optional<double> beads;
+  bool signed_shapes = false;
   std::optional<int> stride;      // placement points: every stride-th data point
   GlyphSizeSpec size;
   // Automatic: the traced family's eigenvalue (major: λ1) for tensors, the
@@ -144,6 +151,7 @@ struct GlyphValues {
   TrajectoryOptions trajectory;  // its family: the first traced
   std::vector<EigenFamily> families;  // every family traced, resolved
   double spacing = 0.0;
+  std::optional<double> beads;  // resolved: none when sources are spaced by `spacing`
   int stride = 1;  // placement points
   GlyphMapping mapping;
 };

@@ -74,12 +74,38 @@ void flatten_sources(std::vector<GlyphSource>& sources, const Vec3& normal, std:
   }
 }
 
+namespace {
+
+// Points of a polyline by arc length.
+class ArcLength {
+ public:
+  explicit ArcLength(const std::vector<Vec3>& points) : pts_(points), start_(points.size(), 0.0) {
+    for (std::size_t i = 1; i < pts_.size(); ++i) start_[i] = start_[i - 1] + (pts_[i] - pts_[i - 1]).norm();
+  }
+  Vec3 at(double s) const {
+    if (pts_.size() < 2 || s <= 0.0) return pts_.front();
+    // The segment that ends at or after s (the earlier one where s is a
+    // point's own arc length).
+    const std::size_t end = std::size_t(std::lower_bound(start_.begin(), start_.end(), s) - start_.begin());
+    if (end >= pts_.size()) return pts_.back();
+    const std::size_t i = end - 1;
+    const double length = (pts_[i + 1] - pts_[i]).norm();
+    const double t = length > 0.0 ? (s - start_[i]) / length : 0.0;
+    return pts_[i] + std::max(0.0, t) * (pts_[i + 1] - pts_[i]);
+  }
+
+ private:
+  const std::vector<Vec3>& pts_;
+  std::vector<double> start_;  // the arc length at each point
+};
+
+}  // namespace
+
 std::vector<GlyphSource> place_sources(const Trajectory& trajectory, double spacing, const SourceMaker& make) {
   if (!(spacing > 0.0) || !std::isfinite(spacing))
     throw std::invalid_argument("glyph sources: spacing must be finite and > 0");
   std::vector<GlyphSource> sources;
-  const std::vector<Vec3>& pts = trajectory.points;
-  if (pts.empty()) return sources;
+  if (trajectory.points.empty()) return sources;
 
   // As many sources as fit at `spacing`, the run centred on the curve so
   // both ends look alike.
@@ -88,25 +114,65 @@ std::vector<GlyphSource> place_sources(const Trajectory& trajectory, double spac
   const std::size_t count = static_cast<std::size_t>(source_count(trajectory, spacing));
   const double first = 0.5 * (total - static_cast<double>(count - 1) * spacing);
   sources.reserve(count);
+  const ArcLength curve(trajectory.points);
+  for (std::size_t i = 0; i < count; ++i)
+    if (std::optional<GlyphSource> s = make(curve.at(first + static_cast<double>(i) * spacing)))
+      sources.push_back(std::move(*s));
+  return sources;
+}
 
-  // Walk the polyline once: arc-length targets only increase.
-  std::size_t segment = 0;   // current segment is pts[segment] → pts[segment + 1]
-  double segment_start = 0;  // arc length at pts[segment]
-  for (std::size_t i = 0; i < count; ++i) {
-    const double target = first + static_cast<double>(i) * spacing;
-    Vec3 p = pts.back();
-    while (segment + 1 < pts.size()) {
-      const double seg_len = (pts[segment + 1] - pts[segment]).norm();
-      if (target <= segment_start + seg_len) {
-        const double t = seg_len > 0.0 ? (target - segment_start) / seg_len : 0.0;
-        p = pts[segment] + std::max(0.0, t) * (pts[segment + 1] - pts[segment]);
-        break;
+std::vector<double> bead_positions(const Trajectory& trajectory, const BeadRule& rule, const SourceMaker& make) {
+  if (!(rule.overlap > -1.0 && rule.overlap < 1.0) || !(rule.least_step > 0.0))
+    throw std::invalid_argument("glyph beads: overlap must be in [0, 1) and the least step > 0");
+  if (trajectory.points.empty()) return {};
+  const double total = trajectory.length();
+  const ArcLength curve(trajectory.points);
+  // The half-length of the glyph centred at arc length s, if one can be
+  // made there.
+  const auto half_length = [&](double s) -> std::optional<double> {
+    const std::optional<GlyphSource> source = make(curve.at(s));
+    if (!source) return std::nullopt;
+    return rule.half_length(*source);
+  };
+  const double keep = 1.0 - rule.overlap;
+  // The centres from arc length `first` on.
+  const auto walk_from = [&](double first) {
+    std::vector<double> at;
+    double s = first;
+    std::optional<double> h = half_length(s);
+    while (s <= total) {
+      if (!h) {  // no glyph here (outside the data): move on and look again
+        s += rule.least_step;
+        h = half_length(s);
+        continue;
       }
-      segment_start += seg_len;
-      ++segment;
+      at.push_back(s);
+      // The next centre s' solves s' = s + keep (h + h(s')): three rounds
+      // of the fixed point from h(s') = h are plenty, as a glyph changes
+      // little over its own length.
+      double step = 2.0 * keep * *h;
+      for (int round = 0; round < 3; ++round) {
+        const std::optional<double> next = half_length(s + std::max(step, rule.least_step));
+        if (!next) break;
+        step = keep * (*h + *next);
+      }
+      s += std::max(step, rule.least_step);
+      h = half_length(s);
     }
-    if (std::optional<GlyphSource> s = make(p)) sources.push_back(std::move(*s));
-  }
+    return at;
+  };
+  // Centred like place_sources' run: walked again from half the length
+  // the first walk left over, so both ends look alike.
+  const std::vector<double> from_start = walk_from(0.0);
+  if (from_start.empty()) return from_start;
+  return walk_from(0.5 * (total - from_start.back()));
+}
+
+std::vector<GlyphSource> place_beads(const Trajectory& trajectory, const BeadRule& rule, const SourceMaker& make) {
+  std::vector<GlyphSource> sources;
+  const ArcLength curve(trajectory.points);
+  for (double s : bead_positions(trajectory, rule, make))
+    if (std::optional<GlyphSource> source = make(curve.at(s))) sources.push_back(std::move(*source));
   return sources;
 }
 

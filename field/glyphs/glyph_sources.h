@@ -38,6 +38,23 @@ using SourceMaker = std::function<std::optional<GlyphSource>(const Vec3&)>;
 // left for size_sources(), once the mapping is known: its automatic scale
 // depends on all the sources' eigenvalues.
 std::vector<GlyphSource> place_sources(const Trajectory& trajectory, double spacing, const SourceMaker& make);
+// Glyphs end to end along a trajectory, as beads on a string, instead of
+// at a fixed spacing: each next centre where the two glyphs alone overlap
+// by `overlap` of their lengths along the line (0: tip touches tip), so a
+// glyph's end shows: flat ends butted together, points meeting points.
+struct BeadRule {
+  double overlap = 0.0;  // below 0: a gap of that fraction
+  // A made source's extent along the line from its centre (its radius
+  // along the followed axis, as a length).
+  std::function<double(const GlyphSource&)> half_length;
+  // The walk's least step, and its step where no source can be made.
+  double least_step = 1.0;
+};
+// The arc lengths of the beads' centres, the run centred on the curve.
+std::vector<double> bead_positions(const Trajectory& trajectory, const BeadRule& rule, const SourceMaker& make);
+// The beads themselves, made by `make` at those centres.
+std::vector<GlyphSource> place_beads(const Trajectory& trajectory, const BeadRule& rule, const SourceMaker& make);
+
 // The same with the tensor sampled at each centre.
 std::vector<GlyphSource> place_sources(const TensorField& field, const Trajectory& trajectory,
                                        double spacing, ColorScalar color);

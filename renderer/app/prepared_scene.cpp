@@ -185,7 +185,8 @@ void record_field_values(PreparedScene& p) {
     p.resolve("glyphs.placement", "points");  // data without volume takes it whatever the scene says
     p.resolve("glyphs.stride", v.stride);
   } else {
-    p.resolve("glyphs.spacing", v.spacing);
+    if (v.beads) p.resolve("glyphs.beads", *v.beads);
+    else p.resolve("glyphs.spacing", v.spacing);
   }
   p.resolve("glyphs.scale", v.mapping.scale);
   p.resolve("glyphs.floor", v.mapping.floor);

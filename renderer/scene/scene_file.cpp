@@ -208,6 +208,12 @@ void read_glyphs(TableReader& g, GlyphPipelineSpec& spec, SurfaceSpec& surface, 
   spec.stretch = g.number("stretch");
   spec.thickness = g.optional_number("thickness");
   spec.spacing = g.optional_number("spacing");
+  spec.beads = g.optional_number("beads");
+  if (spec.beads && spec.spacing)
+    g.fail_at("beads", "places the glyphs end to end, so glyphs.spacing has no use beside it: give one of the two");
+  if (spec.beads && spec.placement != SourcePlacement::along_trajectories)
+    g.fail_at("beads", "applies only to glyphs.placement = \"trajectories\"");
+  spec.signed_shapes = surface.shape == GlyphShape::signed_superquadric;
   spec.stride = g.optional_integer("stride");
   GlyphSizeSpec& size = spec.size;
   size.mapping = g.choice<RadiusMapping>("mapping", {{"linear", RadiusMapping::linear}, {"sqrt", RadiusMapping::sqrt},

@@ -180,6 +180,8 @@ std::vector<KeySchema> build_keys() {
           .choices({"trajectories", "seeds", "points", "curve", "list"}).fallback("\"trajectories\""),
       Key("glyphs.spacing", T::number, "arc length between sources along a trajectory").length()
           .automatic("D/40; D/25 for normalized and constant"),
+      Key("glyphs.beads", T::number, "glyphs end to end along each trajectory, overlapping by this fraction of their lengths (0: tip to tip; below 0, a gap), instead of every spacing")
+          .range(-0.9, 0.9).automatic("0 for shape = \"signed\" when spacing is not given; else off, sources every spacing"),
       Key("glyphs.stride", T::integer, "placement = \"points\": a glyph at every stride-th data point").range(1, std::numeric_limits<int>::max())
           .automatic("at most 20,000 glyphs"),
       Key("glyphs.mapping", T::choice, "radii from eigenvalues").choices({"linear", "sqrt", "normalized", "constant"}).fallback("\"sqrt\""),

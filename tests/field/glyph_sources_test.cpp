@@ -110,6 +110,63 @@ TEST(PlaceSources, RejectsBadSpacing) {
   EXPECT_THROW(place_sources(f, t, -1.0, ColorScalar::lambda3), std::invalid_argument);
 }
 
+// Beads whose half-length along the line is the distance from the origin
+// plus 0.05: growing along a straight line, so each gap has its own size.
+BeadRule growing_beads(double overlap) {
+  BeadRule rule;
+  rule.overlap = overlap;
+  rule.least_step = 1e-3;
+  rule.half_length = [](const GlyphSource& s) { return 0.05 + 0.1 * s.centre.norm(); };
+  return rule;
+}
+
+SourceMaker constant_maker(const ConstantField& f) {
+  return [&](const Vec3& p) -> std::optional<GlyphSource> {
+    const std::optional<Sym3> t = f.sample(p);
+    if (!t) return std::nullopt;
+    return make_source(p, *t, ColorScalar::lambda1);
+  };
+}
+
+TEST(PlaceBeads, NeighboursTouchTipToTip) {
+  const ConstantField f;
+  const Trajectory t = polyline({Vec3(0, 0, 0), Vec3(0.7, 0, 0), Vec3(2, 0, 0)});
+  for (double overlap : {0.0, 0.3, -0.2}) {
+    const BeadRule rule = growing_beads(overlap);
+    const std::vector<GlyphSource> beads = place_beads(t, rule, constant_maker(f));
+    ASSERT_GE(beads.size(), 5u) << overlap;
+    for (std::size_t i = 1; i < beads.size(); ++i) {
+      // The gap between centres is (1 − overlap) times the two
+      // half-lengths: the fixed point settles far below a glyph's size.
+      const double gap = (beads[i].centre - beads[i - 1].centre).norm();
+      const double reach = (1.0 - overlap) * (rule.half_length(beads[i]) + rule.half_length(beads[i - 1]));
+      EXPECT_NEAR(gap, reach, 1e-3 * reach) << overlap << " bead " << i;
+    }
+    // The run is centred: each end keeps less than a bead's length of line
+    // (the longest, 2 × 0.25, at the far end), so no bead is missing there.
+    const double front = beads.front().centre.x(), back = 2.0 - beads.back().centre.x();
+    EXPECT_GE(front, 0.0);
+    EXPECT_GE(back, 0.0);
+    EXPECT_LT(std::max(front, back), (1.0 - overlap) * 2.0 * 0.25) << overlap;
+    EXPECT_LT(front, back) << overlap;  // half the first walk's rest, and the rest grows with the beads
+  }
+}
+
+TEST(PlaceBeads, SkipsWhereNoGlyphCanBeMadeAndRefusesBadRules) {
+  ConstantField f;
+  f.box = {Vec3(-1, -1, -1), Vec3(0.5, 1, 1)};
+  const Trajectory t = polyline({Vec3(0, 0, 0), Vec3(1, 0, 0)});
+  const std::vector<GlyphSource> beads = place_beads(t, growing_beads(0.0), constant_maker(f));
+  ASSERT_FALSE(beads.empty());
+  for (const GlyphSource& b : beads) EXPECT_TRUE(f.box.contains(b.centre));
+  EXPECT_TRUE(place_beads(Trajectory{}, growing_beads(0.0), constant_maker(f)).empty());
+  BeadRule bad = growing_beads(1.0);
+  EXPECT_THROW(place_beads(t, bad, constant_maker(f)), std::invalid_argument);
+  bad = growing_beads(0.0);
+  bad.least_step = 0.0;
+  EXPECT_THROW(place_beads(t, bad, constant_maker(f)), std::invalid_argument);
+}
+
 TEST(MapRadii, EachMapping) {
   GlyphMapping m;
   m.scale = 2.0;
@@ -291,6 +348,37 @@ TEST(GlyphPipeline, MakeFieldChoosesGridOnlyWhenAllDimsGiven) {
   EXPECT_NE(dynamic_cast<PointLoadField*>(make_field(d).field.get()), nullptr);
   d.sample_grid = {5, 6, 7};
   EXPECT_NE(dynamic_cast<UniformGridField*>(make_field(d).field.get()), nullptr);
+}
+
+TEST(GlyphPipeline, SignedShapesAreBeadsOfTheirOwnLength) {
+  GlyphPipelineSpec spec = point_load_scene();
+  spec.spacing.reset();
+  spec.signed_shapes = true;
+  const double extent = 0.5;
+  const GlyphScene scene = build_glyph_scene(spec, extent);
+  ASSERT_TRUE(scene.values.beads);
+  EXPECT_EQ(*scene.values.beads, 0.0);
+  ASSERT_GE(scene.sources.size(), 20u);
+  // Minor lines: the glyph's third axis runs along the line. Consecutive
+  // beads of one line (the step between them along that axis; across it
+  // a new line has begun) touch tip to tip: their length along the line is
+  // their third radius.
+  std::size_t touching = 0;
+  for (std::size_t i = 1; i < scene.sources.size(); ++i) {
+    const GlyphSource &a = scene.sources[i - 1], &b = scene.sources[i];
+    const Vec3 step = b.centre - a.centre;
+    const double reach = extent * (a.radii[2] + b.radii[2]);
+    if (std::fabs(b.axes.col(2).dot(step.normalized())) < 0.95 || step.norm() > 2.0 * reach) continue;
+    EXPECT_NEAR(step.norm(), reach, 0.02 * reach) << i;
+    ++touching;
+  }
+  EXPECT_GE(touching, scene.sources.size() - 2 * scene.trajectories.size());
+  // A spacing given keeps sources every spacing; the sizes come from the
+  // sources at that spacing either way, so beads leave them as they are.
+  spec.spacing = scene.values.spacing;
+  const GlyphScene spaced = build_glyph_scene(spec, extent);
+  EXPECT_FALSE(spaced.values.beads);
+  EXPECT_EQ(spaced.values.mapping.scale, scene.values.mapping.scale);
 }
 
 }  // namespace

@@ -224,6 +224,26 @@ TEST_F(SceneFile, SignedGlyphsAndTheSignConvention) {
             std::string::npos);
 }
 
+// Beads: signed glyphs ask for them (the pipeline resolves it), a scene
+// may give them for any shape, never beside a spacing, and only along
+// trajectories.
+TEST_F(SceneFile, BeadsAlongTrajectories) {
+  const SceneSpec signed_glyphs = load_scene(write(std::string(minimal) + "[glyphs]\nshape = \"signed\"\n"));
+  EXPECT_TRUE(signed_glyphs.pipeline.signed_shapes);
+  EXPECT_FALSE(signed_glyphs.pipeline.beads);
+  const SceneSpec given = load_scene(write(std::string(minimal) + "[glyphs]\nbeads = -0.25\n"));
+  EXPECT_EQ(given.pipeline.beads, -0.25);
+  EXPECT_FALSE(given.pipeline.signed_shapes);
+  const std::string both = error_of(std::string(minimal) + "[glyphs]\nspacing = 0.1\nbeads = 0\n");
+  EXPECT_NE(both.find(":5:9: glyphs.beads places the glyphs end to end, so glyphs.spacing has no use"),
+            std::string::npos)
+      << both;
+  EXPECT_NE(error_of(std::string(minimal) + "[glyphs]\nplacement = \"seeds\"\nbeads = 0\n")
+                .find("glyphs.beads applies only to glyphs.placement = \"trajectories\""),
+            std::string::npos);
+  EXPECT_NE(error_of(std::string(minimal) + "[glyphs]\nbeads = 0.95\n").find("glyphs.beads"), std::string::npos);
+}
+
 TEST_F(SceneFile, DataKindFollowsTheFile) {
   const std::string data = std::string(HSB_SOURCE_DIR) + "/scenes/data/cylinder_stress_coarse.vtu";
   const SceneSpec spec = load_scene(write("[data]\nfile = \"" + data + "\"\n"));
