@@ -151,9 +151,7 @@ std::vector<GlyphSource> beads_along(const std::vector<Trajectory>& trajectories
   check_memory(resident_bytes() + count * kBytesPerSource, what.str(), "raise glyphs.floor or glyphs.beads");
   std::vector<std::vector<GlyphSource>> per_line(trajectories.size());
   tbb::parallel_for(std::size_t{0}, per_line.size(), [&](std::size_t i) {
-    const int along = trajectories[i].family == EigenFamily::medium  ? 1
-                      : trajectories[i].family == EigenFamily::minor ? 2
-                                                                      : 0;
+    const int along = int(trajectories[i].family);  // the followed eigenvector's axis
     BeadRule rule;
     rule.overlap = overlap;
     rule.least_step = std::min(least_step, spacing);

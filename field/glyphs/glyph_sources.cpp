@@ -121,59 +121,51 @@ std::vector<GlyphSource> place_sources(const Trajectory& trajectory, double spac
   return sources;
 }
 
-std::vector<double> bead_positions(const Trajectory& trajectory, const BeadRule& rule, const SourceMaker& make) {
+std::vector<GlyphSource> place_beads(const Trajectory& trajectory, const BeadRule& rule, const SourceMaker& make) {
   if (!(rule.overlap > -1.0 && rule.overlap < 1.0) || !(rule.least_step > 0.0))
-    throw std::invalid_argument("glyph beads: overlap must be in [0, 1) and the least step > 0");
+    throw std::invalid_argument("glyph beads: overlap must be in (-1, 1) and the least step > 0");
   if (trajectory.points.empty()) return {};
   const double total = trajectory.length();
   const ArcLength curve(trajectory.points);
-  // The half-length of the glyph centred at arc length s, if one can be
-  // made there.
-  const auto half_length = [&](double s) -> std::optional<double> {
-    const std::optional<GlyphSource> source = make(curve.at(s));
-    if (!source) return std::nullopt;
-    return rule.half_length(*source);
-  };
+  const auto made_at = [&](double s) { return make(curve.at(s)); };
   const double keep = 1.0 - rule.overlap;
-  // The centres from arc length `first` on.
+  // The beads from arc length `first` on, and where the last one stands.
+  struct Run {
+    std::vector<GlyphSource> beads;
+    double last = 0.0;
+  };
   const auto walk_from = [&](double first) {
-    std::vector<double> at;
+    Run run;
     double s = first;
-    std::optional<double> h = half_length(s);
+    std::optional<GlyphSource> bead = made_at(s);
     while (s <= total) {
-      if (!h) {  // no glyph here (outside the data): move on and look again
+      if (!bead) {  // no glyph here (outside the data): move on and look again
         s += rule.least_step;
-        h = half_length(s);
+        bead = made_at(s);
         continue;
       }
-      at.push_back(s);
       // The next centre s' solves s' = s + keep (h + h(s')): three rounds
       // of the fixed point from h(s') = h are plenty, as a glyph changes
       // little over its own length.
-      double step = 2.0 * keep * *h;
+      const double h = rule.half_length(*bead);
+      double step = 2.0 * keep * h;
       for (int round = 0; round < 3; ++round) {
-        const std::optional<double> next = half_length(s + std::max(step, rule.least_step));
+        const std::optional<GlyphSource> next = made_at(s + std::max(step, rule.least_step));
         if (!next) break;
-        step = keep * (*h + *next);
+        step = keep * (h + rule.half_length(*next));
       }
+      run.beads.push_back(std::move(*bead));
+      run.last = s;
       s += std::max(step, rule.least_step);
-      h = half_length(s);
+      bead = made_at(s);
     }
-    return at;
+    return run;
   };
   // Centred like place_sources' run: walked again from half the length
   // the first walk left over, so both ends look alike.
-  const std::vector<double> from_start = walk_from(0.0);
-  if (from_start.empty()) return from_start;
-  return walk_from(0.5 * (total - from_start.back()));
-}
-
-std::vector<GlyphSource> place_beads(const Trajectory& trajectory, const BeadRule& rule, const SourceMaker& make) {
-  std::vector<GlyphSource> sources;
-  const ArcLength curve(trajectory.points);
-  for (double s : bead_positions(trajectory, rule, make))
-    if (std::optional<GlyphSource> source = make(curve.at(s))) sources.push_back(std::move(*source));
-  return sources;
+  const Run from_start = walk_from(0.0);
+  if (from_start.beads.empty()) return {};
+  return walk_from(0.5 * (total - from_start.last)).beads;
 }
 
 }  // namespace hsb

@@ -50,9 +50,8 @@ struct BeadRule {
   // The walk's least step, and its step where no source can be made.
   double least_step = 1.0;
 };
-// The arc lengths of the beads' centres, the run centred on the curve.
-std::vector<double> bead_positions(const Trajectory& trajectory, const BeadRule& rule, const SourceMaker& make);
-// The beads themselves, made by `make` at those centres.
+// The beads along `trajectory`, each made by `make` at its centre, the run
+// centred on the curve.
 std::vector<GlyphSource> place_beads(const Trajectory& trajectory, const BeadRule& rule, const SourceMaker& make);
 
 // The same with the tensor sampled at each centre.

@@ -86,7 +86,7 @@ double field_value(const BlobField& field, const Vec3& x) {
   double f = 0.0;
   for (std::size_t i = 0; i < field.sources.size(); ++i) {
     const double k = kernel_value(field.kernel, source_g(field, i, x));
-    f = field.blend == Blend::sum ? f + k : std::max(f, k);
+    f = blended(field.blend, f, k);
   }
   return f;
 }

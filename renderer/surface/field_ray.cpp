@@ -31,7 +31,7 @@ double FieldRay::slope_bound_at(const BlobField& field, double t) const {
   for (std::uint32_t i : sweep_.active()) {
     const RaySpan& s = spans[i];
     if (t >= s.t_c) continue;
-    rate = field.blend == Blend::sum ? rate + std::sqrt(s.a) : std::max(rate, std::sqrt(s.a));
+    rate = blended(field.blend, rate, std::sqrt(s.a));
   }
   return rate * kernel_max_du_slope(field.kernel);
 }

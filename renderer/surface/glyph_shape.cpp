@@ -9,13 +9,6 @@ namespace hsb {
 
 namespace {
 
-// ‖(x, y)‖_p for p ≥ 2 and its partial derivatives, each in [−1, 1]. The
-// terms are divided by the larger one first: |x|^p for p = 2·10⁶ would
-// overflow or vanish, (|x|/m)^p is 1 for the larger term and harmless for
-// the other.
-struct PNorm {
-  double value = 0.0, dx = 0.0, dy = 0.0;
-};
 // r^p for r in [0, 1], p ≥ 2. log₂ r < e + 1 for r's binary exponent e,
 // so where p (e + 1) ≤ −1075 the power is below half the least subnormal
 // and pow would round it to 0, by its slow path (an underflow, twice the
@@ -29,6 +22,13 @@ double power_below_one(double r, double p) {
   return std::pow(r, p);
 }
 
+// ‖(x, y)‖_p for p ≥ 2 and its partial derivatives, each in [−1, 1]. The
+// terms are divided by the larger one first: |x|^p for p = 2·10⁶ would
+// overflow or vanish, (|x|/m)^p is 1 for the larger term and harmless for
+// the other.
+struct PNorm {
+  double value = 0.0, dx = 0.0, dy = 0.0;
+};
 PNorm p_norm(double x, double y, double p) {
   const double ax = std::fabs(x), ay = std::fabs(y), m = std::max(ax, ay);
   if (m == 0.0) return {};
