@@ -129,8 +129,8 @@ std::map<std::string, std::string> picture_metadata(const SceneSpec& spec, const
 }
 
 float legend_ink(const std::vector<float>& rgba, int width, int height, const LegendLayout& legend) {
-  return ink_over(rgba, width, std::clamp(int(legend.bar_x0) - 2, 0, width - 1),
-                  std::clamp(int(legend.bar_y0), 0, height - 1));
+  const std::array<double, 2> at = legend.ink_sample();
+  return ink_over(rgba, width, std::clamp(int(at[0]), 0, width - 1), std::clamp(int(at[1]), 0, height - 1));
 }
 
 void write_display_picture(const std::string& path, std::vector<float> rgba, int width, int height,

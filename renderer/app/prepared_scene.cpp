@@ -72,13 +72,29 @@ std::string scalar_title(ColorScalar scalar, const SceneSpec& spec) {
   return "";
 }
 
+// Whether a colour scalar is a normal stress, whose sign says tension or
+// compression.
+bool carries_stress_sign(ColorScalar scalar) {
+  return scalar == ColorScalar::lambda1 || scalar == ColorScalar::lambda2 || scalar == ColorScalar::lambda3 ||
+         scalar == ColorScalar::mean || scalar == ColorScalar::family_eigenvalue;
+}
+
 // The colormap (automatic: diverging for signed values, sequential
 // otherwise) and the range, with the values' true extremes for the bar.
-ColorScale color_scale(const ColorSpec& spec, const std::vector<GlyphSource>& sources) {
+// An automatic diverging map of stress runs from compression (cool) to
+// tension (warm) whichever sign the data calls positive, so that a
+// geomechanics figure and a mechanics one of the same state look alike:
+// with compression positive it is reversed.
+ColorScale color_scale(const SceneSpec& scene, ColorScalar scalar, const std::vector<GlyphSource>& sources) {
+  const ColorSpec& spec = scene.color;
   std::vector<double> values;
   values.reserve(sources.size());
   for (const GlyphSource& s : sources) values.push_back(s.scalar);
-  const Colormap& map = colormap_for(spec.map, values, spec.log);
+  const Colormap* automatic = &colormap_for(spec.map, values, spec.log);
+  if (!spec.map && automatic->diverging && scene.pipeline.data.sign == SignConvention::compression_positive &&
+      carries_stress_sign(scalar))
+    automatic = &colormap_named(automatic->name + "_r");
+  const Colormap& map = *automatic;
   if (!spec.range) return auto_scale(map, values, spec.symmetric.value_or(map.diverging), spec.log);
   ColorScale scale{&map, (*spec.range)[0], (*spec.range)[1], spec.log};
   record_extremes(scale, values);
@@ -121,11 +137,11 @@ std::vector<Vec3> framed_points(FrameTarget target, const PreparedScene& p, doub
   return points;
 }
 
-// The picture's shape when the scene gives neither its pixels nor a
-// print size: the framed points' extent as the camera sees them, between
-// 1:2 and 5:2 (a long beam gets a wide picture, a tower a tall one), with
-// the area of the default square.
-std::array<int, 2> body_shaped_size(const CameraRequest& request, const std::vector<Vec3>& framed) {
+// The picture's shape (width over height) when the scene does not give
+// both its sides: the framed points' extent as the camera sees them,
+// between 1:2 and 5:2 (a long beam gets a wide picture, a tower a tall
+// one).
+double body_aspect(const CameraRequest& request, const std::vector<Vec3>& framed) {
   const CameraSpec c = frame_camera(request, framed, kDefaultPixels, kDefaultPixels);
   const Vec3 forward = (c.look_at - c.position).normalized();
   const Vec3 right = forward.cross(c.up).normalized(), up = right.cross(forward);
@@ -137,7 +153,16 @@ std::array<int, 2> body_shaped_size(const CameraRequest& request, const std::vec
     x0 = std::min(x0, d.dot(right) / depth), x1 = std::max(x1, d.dot(right) / depth);
     y0 = std::min(y0, d.dot(up) / depth), y1 = std::max(y1, d.dot(up) / depth);
   }
-  const double aspect = (x1 > x0 && y1 > y0) ? std::clamp((x1 - x0) / (y1 - y0), kTallest, kWidest) : 1.0;
+  return (x1 > x0 && y1 > y0) ? std::clamp((x1 - x0) / (y1 - y0), kTallest, kWidest) : 1.0;
+}
+
+// The picture's pixels: as the scene gives them; a side it leaves out
+// follows the body's shape from the other, and with neither the body's
+// shape has the area of the default square.
+std::array<int, 2> body_shaped_size(const SceneSpec& s, const CameraRequest& request, const std::vector<Vec3>& framed) {
+  const double aspect = body_aspect(request, framed);
+  if (s.render.width) return {*s.render.width, std::max(1, int(std::lround(*s.render.width / aspect)))};
+  if (s.render.height) return {std::max(1, int(std::lround(*s.render.height * aspect))), *s.render.height};
   return {int(std::lround(kDefaultPixels * std::sqrt(aspect))), int(std::lround(kDefaultPixels / std::sqrt(aspect)))};
 }
 
@@ -268,7 +293,21 @@ LegendLayout legend_for(const PreparedScene& p, int width, int height) {
   style.font_size = o.font_size;
   style.length = o.colorbar_length;
   style.dpi = o.dpi;
-  return layout_legend(p.scale, o.colorbar_title.value_or(scalar_title(p.glyphs.color, p.spec)), style, width, height);
+  LegendContent content;
+  content.bar = p.glyphs.color != ColorScalar::none;
+  content.title = o.colorbar_title.value_or(scalar_title(p.glyphs.color, p.spec));
+  // Stress of both signs: the bar's ends say which is which.
+  if (content.bar && carries_stress_sign(p.glyphs.color) && !p.scale.log && p.scale.lo < 0.0 && p.scale.hi > 0.0) {
+    const bool tension_high = p.spec.pipeline.data.sign == SignConvention::tension_positive;
+    content.high_word = tension_high ? "tension" : "compression";
+    content.low_word = tension_high ? "compression" : "tension";
+  }
+  if (wants_shape_key(p.spec)) content.key = signed_shape_key(p.spec.surface.sharpness);
+  return layout_legend(p.scale, content, style, width, height);
+}
+
+bool wants_shape_key(const SceneSpec& spec) {
+  return spec.output.shape_key.value_or(spec.surface.shape == GlyphShape::signed_superquadric);
 }
 
 // The sRGB colour every glyph gets with glyphs.color_by = "none": a middle
@@ -312,7 +351,7 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   const Box3& domain = p.glyphs.domain;
   const double diagonal = domain.diagonal();
 
-  p.scale = color_scale(s.color, p.glyphs.sources);
+  p.scale = color_scale(s, p.glyphs.color, p.glyphs.sources);
   p.resolve("color.map", p.scale.map->name);
   p.resolve("color.range", toml::array{p.scale.lo, p.scale.hi});
   std::vector<std::array<float, 3>> colors;
@@ -349,8 +388,8 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   CameraRequest camera = s.camera;
   if (!camera.view) camera.view = automatic_view(domain, p.glyphs.plane_axis);
   const std::vector<Vec3> framed = framed_points(s.camera.frame, p, extent);
-  const bool shaped = !s.render.width && !s.render.height && !s.output.print_size;
-  const std::array<int, 2> size = shaped ? body_shaped_size(camera, framed) : picture_size(s);
+  const bool shaped = !(s.render.width && s.render.height) && !s.output.print_size;
+  const std::array<int, 2> size = shaped ? body_shaped_size(s, camera, framed) : picture_size(s);
   p.render.width = s.render.width.value_or(size[0]);
   p.render.height = s.render.height.value_or(size[1]);
   p.render.samples = s.render.samples;
@@ -369,16 +408,26 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   p.output.dpi = s.output.dpi;
   if (exr) p.render.planes = s.output.layers;
   PictureReserve reserve;
-  // No colour, no colour bar.
-  if (s.output.colorbar && !p.field.sources.empty() && !exr && p.glyphs.color != ColorScalar::none) {
+  // No colour, no colour bar; the shape key may stand alone.
+  const bool key = p.resolve("output.shape_key", wants_shape_key(s));
+  if (s.output.colorbar && !p.field.sources.empty() && !exr && (p.glyphs.color != ColorScalar::none || key)) {
     p.output.legend = legend_for(p, p.render.width, p.render.height);
-    if (shaped) {  // the legend's part is added to the body's shape, not taken from it
+    if (shaped) {
+      // The legend's part is added to the body's shape, not taken from
+      // it: the side it lies along grows, or where the scene gave that
+      // side, the other shrinks.
       const bool right = p.output.legend->style.placement == LegendPlacement::right;
-      int& grown = right ? p.render.width : p.render.height;
-      grown = int(std::lround(grown / (1.0 - p.output.legend->reserved)));
+      const double free = 1.0 - p.output.legend->reserved;
+      if (!(right ? s.render.width : s.render.height)) {
+        int& grown = right ? p.render.width : p.render.height;
+        grown = int(std::lround(grown / free));
+      } else {
+        int& shrunk = right ? p.render.height : p.render.width;
+        shrunk = std::max(1, int(std::lround(shrunk * free)));
+      }
       p.output.legend = legend_for(p, p.render.width, p.render.height);
     }
-    p.resolve("output.colorbar_title", p.output.legend->title);
+    if (p.output.legend->bar) p.resolve("output.colorbar_title", p.output.legend->title);
     (p.output.legend->style.placement == LegendPlacement::right ? reserve.right : reserve.bottom) =
         p.output.legend->reserved;
   }

@@ -22,7 +22,7 @@ struct OutputSettings {
   std::string file;  // relative to the output folder
   int bit_depth = 8;  // PNG/TIFF: 8 or 16; EXR: 16 (half) or 32 (float)
   double dpi = 300.0;
-  std::optional<LegendLayout> legend;  // none: no colour bar
+  std::optional<LegendLayout> legend;  // none: no colour bar and no shape key
 };
 
 struct PreparedScene {
@@ -70,6 +70,10 @@ std::array<int, 2> picture_size(const SceneSpec& spec);
 // The colour bar of `p`'s scale in a width × height picture, as its
 // [output] asks (placement, length, font size, title).
 LegendLayout legend_for(const PreparedScene& p, int width, int height);
+
+// Whether the legend shows the shape key: output.shape_key, automatic for
+// signed glyphs.
+bool wants_shape_key(const SceneSpec& spec);
 
 // Colours `p`'s glyphs by `scale` instead (panels that share a colour bar).
 void set_color_scale(PreparedScene& p, const ColorScale& scale, const ColorManagement& color);

@@ -14,6 +14,7 @@ namespace hsb {
 struct CairoDeleter {
   void operator()(cairo_t* cr) const { cairo_destroy(cr); }
   void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
+  void operator()(cairo_pattern_t* pattern) const { cairo_pattern_destroy(pattern); }
 };
 template <class T>
 using CairoOwned = std::unique_ptr<T, CairoDeleter>;

@@ -405,7 +405,7 @@ void read_panels(TableReader& top, const toml::table& root, std::vector<PanelSpe
   }
 }
 
-void read_output(TableReader& o, OutputSpec& spec, const std::string& base_dir) {
+void read_output(TableReader& o, OutputSpec& spec, GlyphShape shape, const std::string& base_dir) {
   spec.file = o.optional_string("file");
   if (spec.file && !is_supported_image_path(*spec.file))
     o.fail_at("file", "must end in .png, .tif, .tiff, .exr, .pdf or .svg, got \"" + *spec.file + "\"");
@@ -431,6 +431,9 @@ void read_output(TableReader& o, OutputSpec& spec, const std::string& base_dir) 
   spec.colorbar_length = o.number("colorbar_length");
   spec.font_size = o.number("font_size");
   spec.colorbar_title = o.optional_string("colorbar_title");
+  spec.shape_key = o.optional_boolean("shape_key");
+  if (spec.shape_key.value_or(false) && shape != GlyphShape::signed_superquadric)
+    o.fail_at("shape_key", "= true needs glyphs.shape = \"signed\": only its forms carry a meaning to key");
   o.finish();
 }
 
@@ -486,7 +489,7 @@ SceneSpec load_scene_text(const std::string& text, const std::string& path, cons
   read_camera(camera, spec.camera);
   read_light(light, spec.shading, spec.light);
   read_render(render, spec);
-  read_output(output, spec.output, base_dir);
+  read_output(output, spec.output, spec.surface.shape, base_dir);
   top.allow("sweep");  // read by the batch (renderer/app/batch.h), not here
   read_figure(figure, spec.figure);
   read_panels(top, root, spec.panels);

@@ -261,9 +261,9 @@ std::vector<KeySchema> build_keys() {
 
       // [render]
       Key("render.width", T::integer, "picture width").range(1, 16384).unit("pixels")
-          .automatic("output.print_size at output.dpi, else the body's shape at 800² pixels"),
+          .automatic("output.print_size at output.dpi, else the body's shape from render.height, or at 800² pixels"),
       Key("render.height", T::integer, "picture height").range(1, 16384).unit("pixels")
-          .automatic("output.print_size at output.dpi, else the body's shape at 800² pixels"),
+          .automatic("output.print_size at output.dpi, else the body's shape from render.width, or at 800² pixels"),
       Key("render.samples", T::integer, "samples×samples per pixel").range(1, 16).fallback("2"),
       Key("render.background", T::color, "display sRGB, or \"transparent\"").choices({"transparent"}).fallback("[1, 1, 1]"),
       Key("render.background_bottom", T::color, "a vertical gradient's bottom colour").none("no gradient"),
@@ -301,10 +301,12 @@ std::vector<KeySchema> build_keys() {
       Key("output.ocio_config", T::string, "an OpenColorIO config file").none("$OCIO, else the built-in config"),
       Key("output.display", T::string, "the OCIO display").derived("the config's default"),
       Key("output.view", T::string, "the OCIO view").derived("the config's default"),
-      Key("output.colorbar", T::boolean, "draw the colour bar").fallback("true"),
+      Key("output.colorbar", T::boolean, "draw the legend: the colour bar, and the shape key where there is one").fallback("true"),
       Key("output.colorbar_title", T::string, "the colour bar's title").automatic("named after glyphs.color_by"),
       Key("output.colorbar_position", T::choice, "where the colour bar goes").choices({"right", "bottom"}).fallback("\"right\""),
       Key("output.colorbar_length", T::number, "of the picture's height (right) or width (bottom)").range(0.1, 1.0).fallback("0.6"),
+      Key("output.shape_key", T::boolean, "sample glyphs labelled tension, compression and shear beside the colour bar")
+          .automatic("true for glyphs.shape = \"signed\"; needs it"),
       Key("output.font_size", T::number, "the legend's text").range(1.0, 72.0).unit("points").fallback("7"),
   };
 }

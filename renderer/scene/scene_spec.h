@@ -87,6 +87,7 @@ struct OutputSpec {
   double colorbar_length = 0.6;
   double font_size = 7.0;  // points
   std::optional<std::string> colorbar_title;  // automatic: named after glyphs.color_by
+  std::optional<bool> shape_key;              // automatic: for glyphs.shape = "signed"
 };
 
 // A figure of several panels: the scene once per [[panel]], each with the

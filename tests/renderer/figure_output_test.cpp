@@ -52,9 +52,10 @@ std::unique_ptr<OIIO::ImageInput> open_image(const std::string& path) {
 }
 
 // glyphs.color_by = "none": every glyph one grey, and no colour bar to
-// explain a colour that says nothing; the signed glyphs of the point load
-// still differ where the stress is tension and where it is compression.
-TEST(UncolouredFigure, HasOneGreyAndNoColourBar) {
+// explain a colour that says nothing, only the shape key; the signed
+// glyphs of the point load still differ where the stress is tension and
+// where it is compression.
+TEST(UncolouredFigure, HasOneGreyAndOnlyTheShapeKey) {
   SceneSpec spec = load_scene_text(
       "[[seeds.grid]]\ncorner = [-0.8, 0, -0.8]\nedge_u = [1.6, 0, 0]\nedge_v = [0, 0, 1.6]\nn = 4\nm = 4\n"
       "[glyphs]\nplacement = \"seeds\"\nshape = \"signed\"\ncolor_by = \"none\"\n",
@@ -62,7 +63,16 @@ TEST(UncolouredFigure, HasOneGreyAndNoColourBar) {
   const ColorManagement color("", "");
   const std::unique_ptr<PreparedScene> p = prepare_scene(std::move(spec), color);
   ASSERT_EQ(p->field.sources.size(), 16u);
-  EXPECT_FALSE(p->output.legend);
+  ASSERT_TRUE(p->output.legend);
+  EXPECT_FALSE(p->output.legend->bar);
+  ASSERT_EQ(p->output.legend->key.size(), 3u);
+  EXPECT_EQ(p->output.legend->key[1].label, "compression");
+  // Inside the picture, in the part the camera leaves free.
+  const LegendLayout& l = *p->output.legend;
+  EXPECT_GE(l.key_x0, p->render.width * (1.0 - l.reserved));
+  EXPECT_LE(l.key_x0 + l.key_width, p->render.width);
+  EXPECT_GE(l.key_y0, 0.0);
+  EXPECT_LE(l.key_y0 + 3.0 * l.key_row, p->render.height);
   for (const BlobSource& s : p->field.sources) EXPECT_EQ(s.color, p->field.sources.front().color);
   int pointed = 0, blunt = 0;
   for (const ShapeParams& shape : p->field.shapes) (shape.pointed ? pointed : blunt) += 1;
@@ -103,6 +113,91 @@ TEST_F(FigureOutput, TheColourUnderEachTickIsTheColormaps) {
         EXPECT_NEAR(px[c], expected[std::size_t(c)], 3.0 / 255.0) << "tick " << tick.label << " channel " << c;
     }
   }
+}
+
+// Stress of both signs: the bar's ends say which is tension, and the
+// automatic diverging map keeps tension warm and compression cool under
+// either sign convention, so the same state looks the same.
+TEST_F(FigureOutput, TheBarsEndsAreNamedByTheSignConvention) {
+  const ColorManagement color("", "");
+  const std::string path = scene(kPlate);
+  for (const char* sign : {"tension-positive", "compression-positive"}) {
+    SCOPED_TRACE(sign);
+    const bool tension_positive = std::string(sign) == "tension-positive";
+    const std::unique_ptr<PreparedScene> p =
+        prepare_scene(load_scene(path, {"glyphs.color_by=lambda3", std::string("data.sign=") + sign}), color);
+    ASSERT_TRUE(p->output.legend);
+    ASSERT_LT(p->scale.lo, 0.0);  // the hole's hoop compression beside the pull
+    ASSERT_GT(p->scale.hi, 0.0);
+    EXPECT_EQ(p->output.legend->high_word, tension_positive ? "tension" : "compression");
+    EXPECT_EQ(p->output.legend->low_word, tension_positive ? "compression" : "tension");
+    EXPECT_EQ(p->scale.map->name, tension_positive ? "coolwarm" : "coolwarm_r");
+    // The high end's colour is warm exactly when it is tension.
+    const Rgb high = p->scale.srgb(p->scale.hi);
+    EXPECT_EQ(high[0] > high[2], tension_positive);
+    EXPECT_TRUE(p->output.legend->key.empty());  // ellipsoids: the shape says nothing of the sign
+  }
+  // A map the scene names is kept; a scalar with no sign gets no words.
+  const std::unique_ptr<PreparedScene> named = prepare_scene(
+      load_scene(path, {"glyphs.color_by=lambda3", "data.sign=compression-positive", "color.map=RdBu"}), color);
+  EXPECT_EQ(named->scale.map->name, "RdBu");
+  const std::unique_ptr<PreparedScene> mises = prepare_scene(load_scene(path, {"glyphs.color_by=von_mises"}), color);
+  ASSERT_TRUE(mises->output.legend);
+  EXPECT_TRUE(mises->output.legend->high_word.empty());
+}
+
+// Signed glyphs: the key of sample glyphs sits beside the colour bar,
+// drawn in a PDF as vector shapes and text; output.shape_key = false
+// leaves it out, and asking for it with a shape that has none is an error.
+TEST_F(FigureOutput, SignedGlyphsGetAShapeKeyBesideTheBar) {
+  const ColorManagement color("", "");
+  const std::string path = scene(std::string(kPlate) + "[output]\nfile = \"x.pdf\"\n");
+  const std::unique_ptr<PreparedScene> p = prepare_scene(load_scene(path, {"glyphs.shape=signed"}), color);
+  ASSERT_TRUE(p->output.legend);
+  const LegendLayout& l = *p->output.legend;
+  EXPECT_TRUE(l.bar);
+  ASSERT_EQ(l.key.size(), 3u);
+  // The key under the bar, clear of it and of the bar's low end's word.
+  EXPECT_GT(l.key_y0, l.bar_y1);
+  EXPECT_LE(l.key_y0 + 3.0 * l.key_row, p->render.height);
+  EXPECT_TRUE(p->resolved["output"]["shape_key"].value_or(false));
+
+  const RenderSummary summary = render(path, {"glyphs.shape=signed"});
+  const std::string text = output_of("pdftotext '" + summary.image_path + "' -");
+  for (const char* word : {"tension", "compression", "shear"}) EXPECT_NE(text.find(word), std::string::npos) << text;
+  const std::unique_ptr<PreparedScene> off =
+      prepare_scene(load_scene(path, {"glyphs.shape=signed", "output.shape_key=false"}), color);
+  ASSERT_TRUE(off->output.legend);
+  EXPECT_TRUE(off->output.legend->key.empty());
+  try {
+    load_scene(path, {"output.shape_key=true"});
+    ADD_FAILURE() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("output.shape_key = true needs glyphs.shape = \"signed\""), std::string::npos)
+        << e.what();
+  }
+}
+
+// One side given: the other follows the body's shape, as with neither,
+// so "--set render.width=320" on a wide plate gives a wide picture, not a
+// tall one with the plate small in its middle.
+TEST_F(FigureOutput, OneSideGivenTheOtherFollowsTheBody) {
+  const ColorManagement color("", "");
+  const std::string path = scene("[data]\nfile = \"plate.vtu\"\n");
+  // The free part's shape (the legend's strip on the right left out).
+  const auto free_aspect = [](const PreparedScene& p) {
+    return p.render.width * (1.0 - p.output.legend->reserved) / p.render.height;
+  };
+  const std::unique_ptr<PreparedScene> automatic = prepare_scene(load_scene(path), color);
+  ASSERT_TRUE(automatic->output.legend);
+  const double body = free_aspect(*automatic);
+  ASSERT_GT(body, 1.5);  // the plate is wide
+  const std::unique_ptr<PreparedScene> wide = prepare_scene(load_scene(path, {"render.width=320"}), color);
+  EXPECT_EQ(wide->render.width, 320);
+  EXPECT_NEAR(free_aspect(*wide) / body, 1.0, 0.03);
+  const std::unique_ptr<PreparedScene> tall = prepare_scene(load_scene(path, {"render.height=300"}), color);
+  EXPECT_EQ(tall->render.height, 300);
+  EXPECT_NEAR(free_aspect(*tall) / body, 1.0, 0.03);
 }
 
 TEST_F(FigureOutput, PngCarriesDpiSceneDataAndResolvedSettings) {
