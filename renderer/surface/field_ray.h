@@ -95,7 +95,7 @@ class FieldRay {
   // quadratic along the ray; u = √g is convex along it.
   //  - Each span's ray in its source's stored frame (shape_rays_), the
   //    spans narrowed to the box that holds the shape's support, dropped
-  //    where the ray misses it, and put in spatial rank order.
+  //    where the ray misses it, and put in the order the ray enters them.
   void prepare_shape_rays(const BlobField& field, const Vec3& origin, const Vec3& direction);
   //  - The earliest exact entry into one source's own level surface u =
   //    √g_level among entries_ (each span's outer bound), or −1.
@@ -137,6 +137,9 @@ class FieldRay {
   // Each span's u and du/dt where shape_value_at() last looked.
   mutable std::vector<double> u_, du_dt_;
   mutable double probed_at_ = 0.0;
+  // The length of the last step proven_below_until() proved: where the
+  // next one's search starts.
+  mutable double proof_step_ = 0.0;
   struct Entry {
     double t;            // where the ray enters the bounding ellipsoid's level surface
     std::uint32_t span;

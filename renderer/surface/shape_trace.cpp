@@ -20,23 +20,31 @@
 namespace hsb {
 
 void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, const Vec3& direction) {
-  // Spatial rank order: every sum over the spans is then the same to the
-  // bit whatever order the BVH handed them over in.
-  std::sort(spans.begin(), spans.end(), [](const RaySpan& a, const RaySpan& b) { return a.rank < b.rank; });
-  shape_rays_.clear();
   std::size_t kept = 0;
   for (std::size_t i = 0; i < spans.size(); ++i) {
     RaySpan s = spans[i];
     const BlobSource& source = field.sources[s.source];
     const Mat3 w = shape_matrix(source);
-    const ShapeRay r{scaled_offset(source, w, origin), w * direction};
-    if (!clip_to_shape_box(shape_params(field, s.source), r.q0, r.v, s.t0, s.t1)) continue;
+    if (!clip_to_shape_box(shape_params(field, s.source), scaled_offset(source, w, origin), w * direction, s.t0, s.t1))
+      continue;
     spans[kept++] = s;
-    shape_rays_.push_back(r);
   }
   spans.resize(kept);
+  // In the order the ray enters them, ties in spatial rank order: every
+  // sum over the spans is then the same to the bit whatever order the BVH
+  // handed them over in, and a sum up to some t stops at the first span
+  // that starts beyond it.
+  std::sort(spans.begin(), spans.end(),
+            [](const RaySpan& a, const RaySpan& b) { return a.t0 < b.t0 || (a.t0 == b.t0 && a.rank < b.rank); });
+  shape_rays_.clear();
+  for (const RaySpan& s : spans) {
+    const BlobSource& source = field.sources[s.source];
+    const Mat3 w = shape_matrix(source);
+    shape_rays_.push_back({scaled_offset(source, w, origin), w * direction});
+  }
   u_.assign(kept, 1.0);
   du_dt_.assign(kept, 0.0);
+  proof_step_ = 0.0;
 }
 
 double FieldRay::first_shape_entry(const BlobField& field, double g_level, double tmax, TraceStats& stats) {
@@ -64,7 +72,8 @@ double FieldRay::shape_value_at(const BlobField& field, double t, TraceStats& st
   std::size_t covering = 0;
   for (std::size_t i = 0; i < spans.size(); ++i) {
     const RaySpan& s = spans[i];
-    if (t < s.t0 || t > s.t1) continue;  // outside its support K is 0
+    if (t < s.t0) break;  // neither this span nor any after it has begun
+    if (t > s.t1) continue;  // outside its support K is 0
     const ShapeRay& r = shape_rays_[i];
     const double u = shape_u_rate(field.shape, shape_params(field, s.source), r.q0 + t * r.v, r.v, du_dt_[i]);
     u_[i] = u;
@@ -84,7 +93,8 @@ double FieldRay::proven_below_until(const BlobField& field, double tmax, double 
     double b = 0.0;
     for (std::size_t i = 0; i < spans.size(); ++i) {
       const RaySpan& span = spans[i];
-      if (span.t1 < t || s < span.t0) continue;  // left behind, or not reached by s
+      if (s < span.t0) break;  // not reached by s, nor any after it
+      if (span.t1 < t) continue;  // left behind
       const double from = std::max(t, span.t0), to = std::min(s, span.t1);
       double u;
       if (span.t0 <= t) {
@@ -105,13 +115,25 @@ double FieldRay::proven_below_until(const BlobField& field, double tmax, double 
     }
     return b;
   };
-  if (bound(tmax) < c) return tmax;
+  // Out from t by doubling steps, from the last proof's length, to the
+  // first s the bound does not clear (a sum up to s costs only the spans
+  // begun by s, so the short tries are cheap), then halving:
   // bound(lo) < C ≤ bound(hi); within a hundredth of the way is far enough.
   double lo = t, hi = tmax;
+  for (double step = std::max(proof_step_, min_step);; step *= 2.0) {
+    const double s = std::min(t + step, tmax);
+    if (bound(s) >= c) {
+      hi = s;
+      break;
+    }
+    lo = s;
+    if (s >= tmax) return tmax;
+  }
   for (int i = 0; i < 40 && hi - lo > std::max(0.01 * (lo - t), min_step); ++i) {
     const double mid = 0.5 * (lo + hi);
     (bound(mid) < c ? lo : hi) = mid;
   }
+  proof_step_ = lo - t;
   return lo;
 }
 
