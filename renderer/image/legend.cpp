@@ -68,21 +68,6 @@ void draw_extension(cairo_t* cr, const LegendLayout& l, const ColorScale& scale,
     show_text(cr, label, font, tx, l.bar_y1 + (kTickLength + kGap) * p, high ? 0.0 : 1.0, 0.0);
 }
 
-// The words for what the bar's ends stand for: on the right above and
-// below it, beyond its extension triangles and its factor; at the bottom
-// under its ends, on the title's row (`title_y`).
-void draw_end_words(cairo_t* cr, const LegendLayout& l, double past_high, double past_low, double factor_extent,
-                    double title_y) {
-  const double p = l.pixels_per_point, font = l.style.font_size * p;
-  if (l.style.placement == LegendPlacement::right) {
-    if (!l.high_word.empty()) show_text(cr, l.high_word, font, l.bar_x0, l.bar_y0 - kGap * p - past_high - factor_extent, 0.0, 1.0);
-    if (!l.low_word.empty()) show_text(cr, l.low_word, font, l.bar_x0, l.bar_y1 + kGap * p + past_low, 0.0, 0.0);
-  } else {
-    if (!l.high_word.empty()) show_text(cr, l.high_word, font, l.bar_x1, title_y, 1.0, 0.0);
-    if (!l.low_word.empty()) show_text(cr, l.low_word, font, l.bar_x0, title_y, 0.0, 0.0);
-  }
-}
-
 // How far the bar's end decorations reach beyond its ends, in pixels: an
 // extension triangle (with its label, on the right) and, at the high end,
 // the factor ("×10⁶") with a gap.
@@ -101,6 +86,20 @@ EndReach end_reach(cairo_t* cr, const LegendLayout& l) {
     r.factor = (right ? h : w) + kGap * p;
   }
   return r;
+}
+
+// The words for what the bar's ends stand for: on the right above and
+// below it, beyond its extension triangles and its factor; at the bottom
+// under its ends, on the title's row (`title_y`).
+void draw_end_words(cairo_t* cr, const LegendLayout& l, const EndReach& reach, double title_y) {
+  const double p = l.pixels_per_point, font = l.style.font_size * p;
+  if (l.style.placement == LegendPlacement::right) {
+    if (!l.high_word.empty()) show_text(cr, l.high_word, font, l.bar_x0, l.bar_y0 - kGap * p - reach.high - reach.factor, 0.0, 1.0);
+    if (!l.low_word.empty()) show_text(cr, l.low_word, font, l.bar_x0, l.bar_y1 + kGap * p + reach.low, 0.0, 0.0);
+  } else {
+    if (!l.high_word.empty()) show_text(cr, l.high_word, font, l.bar_x1, title_y, 1.0, 0.0);
+    if (!l.low_word.empty()) show_text(cr, l.low_word, font, l.bar_x0, title_y, 0.0, 0.0);
+  }
 }
 
 // The colour bar's ticks, labels, factor, title, frame, extension
@@ -149,7 +148,7 @@ void draw_bar_annotations(cairo_t* cr, const LegendLayout& l, const ColorScale& 
     title_y = l.bar_y1 + (kTickLength + 2.0 * kGap) * p + h;
     show_text(cr, l.title, font, 0.5 * (l.bar_x0 + l.bar_x1), title_y, 0.5, 0.0);
   }
-  draw_end_words(cr, l, reach.high, reach.low, reach.factor, title_y);
+  draw_end_words(cr, l, reach, title_y);
 }
 
 // The shape key's glyphs, each its outline filled with a grey lit from
@@ -285,12 +284,13 @@ LegendLayout layout_legend(const ColorScale& scale, const LegendContent& content
     measure(l.title.empty() ? " " : l.title, title_w, title_h);
     // On the right the words stand above and below the bar (the widest
     // must fit the column); at the bottom they share the title's row.
+    double both_w = 0.0;
     for (const std::string& word : {l.low_word, l.high_word}) {
       double w = 0.0;
       if (!word.empty()) measure(word, w, words_h);
-      words_w = right ? std::max(words_w, w) : words_w + w;
+      words_w = std::max(words_w, w), both_w += w;
     }
-    title_row = (l.title.empty() ? 0.0 : title_w) + words_w + (words_w > 0.0 ? 4.0 * gap : 0.0);
+    title_row = (l.title.empty() ? 0.0 : title_w) + both_w + (both_w > 0.0 ? 4.0 * gap : 0.0);
     bar_across = (kBarWidth + kTickLength + 2.0 * kGap + kMargin) * p + (right ? label_w : label_h) + title_h;
   }
   const EndReach reach = l.bar ? end_reach(cr.get(), l) : EndReach{};
@@ -309,8 +309,8 @@ LegendLayout layout_legend(const ColorScale& scale, const LegendContent& content
     const double key_part = l.key.empty() ? 0.0 : key_h + (l.bar ? 2.0 * gap : 0.0);
     const double length = l.bar ? std::max(0.0, std::min(style.length * height, height - 2.0 * (std::max(above, below) + margin) - key_part)) : 0.0;
     const double group = (l.bar ? above + length + below : 0.0) + key_part;
-    l.bar_y0 = 0.5 * (height - group) + (l.bar ? above : 0.0);
-    if (l.key.empty()) l.bar_y0 = 0.5 * (height - length);  // centred on the picture, as without a key
+    // Without a key the bar alone is centred on the picture, as it always was.
+    l.bar_y0 = l.key.empty() ? 0.5 * (height - length) : 0.5 * (height - group) + (l.bar ? above : 0.0);
     l.bar_y1 = l.bar_y0 + length;
     l.key_y0 = 0.5 * (height - group) + group - key_h;
     l.top = 0.0;

@@ -20,13 +20,19 @@
 namespace hsb {
 
 void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, const Vec3& direction) {
+  // The ray in a source's stored frame: made again for each span kept
+  // once they are sorted, which costs no more than carrying it through
+  // the sort (nine loads and two products).
+  const auto ray_of = [&](const RaySpan& s) {
+    const BlobSource& source = field.sources[s.source];
+    const Mat3 w = shape_matrix(source);
+    return ShapeRay{scaled_offset(source, w, origin), w * direction};
+  };
   std::size_t kept = 0;
   for (std::size_t i = 0; i < spans.size(); ++i) {
     RaySpan s = spans[i];
-    const BlobSource& source = field.sources[s.source];
-    const Mat3 w = shape_matrix(source);
-    if (!clip_to_shape_box(shape_params(field, s.source), scaled_offset(source, w, origin), w * direction, s.t0, s.t1))
-      continue;
+    const ShapeRay r = ray_of(s);
+    if (!clip_to_shape_box(shape_params(field, s.source), r.q0, r.v, s.t0, s.t1)) continue;
     spans[kept++] = s;
   }
   spans.resize(kept);
@@ -37,11 +43,7 @@ void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, co
   std::sort(spans.begin(), spans.end(),
             [](const RaySpan& a, const RaySpan& b) { return a.t0 < b.t0 || (a.t0 == b.t0 && a.rank < b.rank); });
   shape_rays_.clear();
-  for (const RaySpan& s : spans) {
-    const BlobSource& source = field.sources[s.source];
-    const Mat3 w = shape_matrix(source);
-    shape_rays_.push_back({scaled_offset(source, w, origin), w * direction});
-  }
+  for (const RaySpan& s : spans) shape_rays_.push_back(ray_of(s));
   u_.assign(kept, 1.0);
   du_dt_.assign(kept, 0.0);
   proof_step_ = 0.0;

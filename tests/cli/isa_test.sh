@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Every instruction set this processor has gives the same files, byte for
 # byte: fig09 (the field, the domain's edges), the cylinder with its
-# shell and trajectory tubes, and signed glyphs (the shape tracer), small. Also the switch itself: --isa and
-# HSB_ISA, what --version says, and one clear error for a bad name.
+# shell and trajectory tubes, and signed glyphs (the shape tracer), small.
+# Also the switch itself: --isa and HSB_ISA, what --version says, and one
+# clear error for a bad name.
 source "$(dirname "$0")/common.sh"
 
 version=$("$hsb" --version) || fail "--version exits $?"

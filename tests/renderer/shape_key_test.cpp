@@ -16,18 +16,18 @@ namespace {
 // cone's flank falls back in proportion to the offset, a smooth face to
 // its square or less.
 double fall_back(const ShapeKeyEntry& entry, bool along_x, double offset) {
-  const int a = along_x ? 0 : 1, b = 1 - a;
+  const std::size_t a = along_x ? 0 : 1, b = 1 - a;
   double extreme = 0.0;
-  for (const auto& p : entry.outline) extreme = std::max(extreme, p[std::size_t(a)]);
+  for (const auto& p : entry.outline) extreme = std::max(extreme, p[a]);
   // The outline's point at `offset` across on the positive side.
   for (std::size_t i = 0; i < entry.outline.size(); ++i) {
     const auto& p = entry.outline[i];
     const auto& q = entry.outline[(i + 1) % entry.outline.size()];
-    if (p[std::size_t(a)] <= 0.0 || q[std::size_t(a)] <= 0.0) continue;
-    const double lo = std::min(p[std::size_t(b)], q[std::size_t(b)]), hi = std::max(p[std::size_t(b)], q[std::size_t(b)]);
+    if (p[a] <= 0.0 || q[a] <= 0.0) continue;
+    const double lo = std::min(p[b], q[b]), hi = std::max(p[b], q[b]);
     if (offset < lo || offset > hi || hi == lo) continue;
-    const double t = (offset - p[std::size_t(b)]) / (q[std::size_t(b)] - p[std::size_t(b)]);
-    return extreme - (p[std::size_t(a)] + t * (q[std::size_t(a)] - p[std::size_t(a)]));
+    const double t = (offset - p[b]) / (q[b] - p[b]);
+    return extreme - (p[a] + t * (q[a] - p[a]));
   }
   ADD_FAILURE() << "no outline point at " << offset;
   return 0.0;
