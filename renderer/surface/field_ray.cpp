@@ -94,7 +94,8 @@ double FieldRay::first_crossing(const BlobField& field, const Vec3& origin, cons
         entries_.push_back({t, i});
       }
     }
-    if (s.t0 <= tmin) at_start = blended(field.blend, at_start, kernel_value(field.kernel, g_at(field, i, tmin)));
+    // (Another shape's value at tmin is shape_trace's first probe.)
+    if (quadric_ && s.t0 <= tmin) at_start = blended(field.blend, at_start, kernel_value(field.kernel, s.g(tmin)));
     peaks_[i] = kernel_value(field.kernel, s.g(peak_t(s)));
     peaks += peaks_[i];
     last_peak = std::max(last_peak, peak_t(s));
@@ -109,12 +110,15 @@ double FieldRay::first_crossing(const BlobField& field, const Vec3& origin, cons
   // A crowd of sources that no single one reaches C in (a blended cap)
   // is most likely to lift F over C where they peak together: F there,
   // if it is C or more, bounds the first crossing too.
+  // (Not for another shape: its g costs tens of times the quadratic's, the
+  // check paid off on about one ray in eight, and its proofs find such
+  // crowds anyway.)
   const double t_crowd = crowd_peak(tmin, last_peak);
-  if (upper < 0.0 || t_crowd < upper) {
+  if (quadric_ && (upper < 0.0 || t_crowd < upper)) {
     double f = 0.0;
     for (std::uint32_t i = 0; i < spans.size(); ++i)
       if (spans[i].t0 <= t_crowd && t_crowd <= spans[i].t1)
-        f = blended(field.blend, f, kernel_value(field.kernel, g_at(field, i, t_crowd)));
+        f = blended(field.blend, f, kernel_value(field.kernel, spans[i].g(t_crowd)));
     stats.kernel_evaluations += spans.size();
     if (f >= c) {
       if (query == CrossingQuery::any) return t_crowd;
@@ -124,9 +128,9 @@ double FieldRay::first_crossing(const BlobField& field, const Vec3& origin, cons
 
   const double end = upper >= 0.0 ? upper : tmax;
   // The exact intersector needs g quadratic along the ray.
-  const double t = !quadric_ ? shape_trace(field, tmin, end, settings, stats)
+  const double t = !quadric_ ? shape_trace(field, tmin, end, settings, stats, query)
                    : settings.intersector == Intersector::exact ? exact_crossing(field, tmin, end, stats)
-                                                                : sphere_trace(field, tmin, end, settings, stats);
+                                                                : sphere_trace(field, tmin, end, settings, stats, query);
   // Short of the bound only by round-off: the bound itself is on the surface.
   return t >= 0.0 ? t : upper;
 }
@@ -155,7 +159,7 @@ bool FieldRay::next_segment(const BlobField& field, double tmax, double& start, 
 }
 
 double FieldRay::sphere_trace(const BlobField& field, double tmin, double tmax,
-                              const TraceSettings& settings, TraceStats& stats) {
+                              const TraceSettings& settings, TraceStats& stats, CrossingQuery query) {
   begin_segments(field, tmin, tmax);
   const double c = field.isovalue;
   int steps = 0;
@@ -178,7 +182,7 @@ double FieldRay::sphere_trace(const BlobField& field, double tmin, double tmax,
       dt = std::max(dt, settings.min_step);
       const double t_next = std::min(t + dt, end);
       const double f_next = value_at(field, t_next, stats);
-      if (f_next >= c) return refine(field, t, t_next, f, f_next, stats);
+      if (f_next >= c) return query == CrossingQuery::any ? t_next : refine(field, t, t_next, f, f_next, stats);
       t = t_next;
       f = f_next;
     }

@@ -77,8 +77,9 @@ class FieldRay {
                            double t) const;
 
  private:
+  // For an `any` query, the first step at or above C is the answer.
   double sphere_trace(const BlobField& field, double tmin, double tmax, const TraceSettings& settings,
-                      TraceStats& stats);
+                      TraceStats& stats, CrossingQuery query);
   // Exact for `wyvill` and `quartic` under blend = "sum", and for every
   // kernel under blend = "max" (a union of ellipsoids). Only crossings where
   // F − C changes sign count: a surface the ray merely touches is no hit.
@@ -102,23 +103,22 @@ class FieldRay {
   double first_shape_entry(const BlobField& field, double g_level, double tmax, TraceStats& stats);
   //  - F at t, over the spans whose interval holds t; keeps each one's u and
   //    du/dt there for proven_below_until().
-  double shape_value_at(const BlobField& field, double t, TraceStats& stats) const;
+  //    A Probe::bound skips the sources whose last tangent rises from
+  //    there on, adding K of that tangent's value instead: an upper bound of
+  //    F (probe_skipped_ says whether anything was skipped), and all the
+  //    proofs after it need.
+  enum class Probe { exact, bound };
+  double shape_value_at(const BlobField& field, double t, TraceStats& stats, Probe probe = Probe::exact) const;
   //  - The largest s ≤ tmax up to which F < C is proven from what the
   //    last shape_value_at() found (to within a hundredth of the way, or
   //    min_step).
   double proven_below_until(const BlobField& field, double tmax, double min_step) const;
   //  - The first crossing in [tmin, tmax] by stepping from proof to proof.
+  //    For an `any` query the first probe at or above C is the answer.
   double shape_trace(const BlobField& field, double tmin, double tmax, const TraceSettings& settings,
-                     TraceStats& stats);
+                     TraceStats& stats, CrossingQuery query);
 
   double crowd_peak(double tmin, double last_peak) const;
-  // Span i's g at t: its quadratic for the ellipsoid, the shape's own
-  // function along the ray otherwise.
-  double g_at(const BlobField& field, std::uint32_t i, double t) const {
-    if (quadric_) return spans[i].g(t);
-    const ShapeRay& r = shape_rays_[i];
-    return shape_g(field.shape, shape_params(field, spans[i].source), r.q0 + t * r.v);
-  }
   double value_at(const BlobField& field, double t, TraceStats& stats) const;
   double slope_bound_at(const BlobField& field, double t) const;
   double refine(const BlobField& field, double lo, double hi, double f_lo, double f_hi,
@@ -129,14 +129,28 @@ class FieldRay {
   std::vector<double> peaks_;  // each span's largest value on its interval
   // Each span's ray in its source's stored frame, q_s(t) = q0 + t v; only
   // for shapes other than the ellipsoid.
+  // rate: Lσ√a, the most u changes per unit along the ray (glyph_shape.h).
   struct ShapeRay {
     Vec3 q0, v;
+    double rate;
   };
   bool quadric_ = true;  // the field's shape is the ellipsoid (shape_is_quadric)
   std::vector<ShapeRay> shape_rays_;
-  // Each span's u and du/dt where shape_value_at() last looked.
+  // Each span's u and du/dt where shape_value_at() last evaluated it.
   mutable std::vector<double> u_, du_dt_;
-  mutable double probed_at_ = 0.0;
+  // Where each span's u and du/dt were found (−∞ before its first).
+  mutable std::vector<double> tangent_at_;
+  mutable double probed_at_ = 0.0, probed_value_ = 0.0;
+  mutable bool probe_skipped_ = false;
+  // The spans whose interval holds where shape_value_at() last looked, and
+  // the first that begins after it.
+  mutable std::vector<std::uint32_t> live_;
+  mutable std::size_t first_unbegun_ = 0;
+  mutable std::vector<std::uint32_t> rising_;  // proven_below_until()'s scratch
+  // prepare_shape_rays()'s scratch for putting the spans in order.
+  std::vector<std::uint32_t> order_;
+  std::vector<RaySpan> sorted_spans_;
+  std::vector<ShapeRay> sorted_rays_;
   // The length of the last step proven_below_until() proved: where the
   // next one's search starts.
   mutable double proof_step_ = 0.0;

@@ -11,41 +11,52 @@
 //    each source's value ahead, and their sum bounds F. Stepping to where
 //    that sum could first reach C, and looking again, walks past crowds of
 //    sources far below their peaks in a few steps.
+//  - a tangent bounds u along the whole ray, not only near where it was
+//    taken: a source found past its closest approach is not evaluated
+//    again while the walk goes on (it only falls), so each step costs the
+//    sources still coming closer.
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "renderer/surface/field_ray.h"
 
 namespace hsb {
 
 void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, const Vec3& direction) {
-  // The ray in a source's stored frame: made again for each span kept
-  // once they are sorted, which costs no more than carrying it through
-  // the sort (nine loads and two products).
-  const auto ray_of = [&](const RaySpan& s) {
-    const BlobSource& source = field.sources[s.source];
-    const Mat3 w = shape_matrix(source);
-    return ShapeRay{scaled_offset(source, w, origin), w * direction};
-  };
+  shape_rays_.clear();
   std::size_t kept = 0;
   for (std::size_t i = 0; i < spans.size(); ++i) {
     RaySpan s = spans[i];
-    const ShapeRay r = ray_of(s);
-    if (!clip_to_shape_box(shape_params(field, s.source), r.q0, r.v, s.t0, s.t1)) continue;
+    const BlobSource& source = field.sources[s.source];
+    const Mat3 w = shape_matrix(source);
+    const ShapeParams& shape = shape_params(field, s.source);
+    const ShapeRay r{scaled_offset(source, w, origin), w * direction,
+                     std::sqrt(s.a) * double(shape.bound_scale) * double(shape.lipschitz)};
+    if (!clip_to_shape_box(shape, r.q0, r.v, s.t0, s.t1)) continue;
     spans[kept++] = s;
+    shape_rays_.push_back(r);
   }
   spans.resize(kept);
   // In the order the ray enters them, ties in spatial rank order: every
   // sum over the spans is then the same to the bit whatever order the BVH
   // handed them over in, and a sum up to some t stops at the first span
-  // that starts beyond it.
-  std::sort(spans.begin(), spans.end(),
-            [](const RaySpan& a, const RaySpan& b) { return a.t0 < b.t0 || (a.t0 == b.t0 && a.rank < b.rank); });
-  shape_rays_.clear();
-  for (const RaySpan& s : spans) shape_rays_.push_back(ray_of(s));
+  // that starts beyond it. The order is sorted, then both lists gathered.
+  order_.resize(kept);
+  for (std::size_t i = 0; i < kept; ++i) order_[i] = std::uint32_t(i);
+  std::sort(order_.begin(), order_.end(), [&](std::uint32_t i, std::uint32_t j) {
+    const RaySpan &a = spans[i], &b = spans[j];
+    return a.t0 < b.t0 || (a.t0 == b.t0 && a.rank < b.rank);
+  });
+  sorted_spans_.resize(kept);
+  sorted_rays_.resize(kept);
+  for (std::size_t i = 0; i < kept; ++i) sorted_spans_[i] = spans[order_[i]], sorted_rays_[i] = shape_rays_[order_[i]];
+  spans.swap(sorted_spans_);
+  shape_rays_.swap(sorted_rays_);
   u_.assign(kept, 1.0);
   du_dt_.assign(kept, 0.0);
+  tangent_at_.assign(kept, -std::numeric_limits<double>::infinity());
   proof_step_ = 0.0;
 }
 
@@ -68,20 +79,35 @@ double FieldRay::first_shape_entry(const BlobField& field, double g_level, doubl
   return upper;
 }
 
-double FieldRay::shape_value_at(const BlobField& field, double t, TraceStats& stats) const {
+double FieldRay::shape_value_at(const BlobField& field, double t, TraceStats& stats, Probe probe) const {
   probed_at_ = t;
+  probe_skipped_ = false;
+  live_.clear();
   double f = 0.0;
-  std::size_t covering = 0;
-  for (std::size_t i = 0; i < spans.size(); ++i) {
+  std::size_t covering = 0, i = 0;
+  for (; i < spans.size(); ++i) {
     const RaySpan& s = spans[i];
     if (t < s.t0) break;  // neither this span nor any after it has begun
     if (t > s.t1) continue;  // outside its support K is 0
+    live_.push_back(std::uint32_t(i));
+    if (probe == Probe::bound && du_dt_[i] >= 0.0 && tangent_at_[i] <= t && tangent_at_[i] >= s.t0) {
+      // Past its closest approach where it was last evaluated, so its
+      // tangent there already bounds it from below for the rest of the
+      // ray, rising: K of that line's value here bounds its term.
+      const double lower = u_[i] + du_dt_[i] * (t - tangent_at_[i]);
+      f = blended(field.blend, f, kernel_value(field.kernel, lower * lower));
+      probe_skipped_ = true;
+      continue;
+    }
     const ShapeRay& r = shape_rays_[i];
     const double u = shape_u_rate(field.shape, shape_params(field, s.source), r.q0 + t * r.v, r.v, du_dt_[i]);
     u_[i] = u;
+    tangent_at_[i] = t;
     f = blended(field.blend, f, kernel_value(field.kernel, u * u));
     ++covering;
   }
+  first_unbegun_ = i;
+  probed_value_ = f;
   ++stats.field_evaluations;
   stats.kernel_evaluations += covering;
   return f;
@@ -89,58 +115,82 @@ double FieldRay::shape_value_at(const BlobField& field, double t, TraceStats& st
 
 double FieldRay::proven_below_until(const BlobField& field, double tmax, double min_step) const {
   const double t = probed_at_, c = field.isovalue;
+  // An upper bound of span i's value over [t, s].
+  const auto term = [&](std::size_t i, double s) {
+    const RaySpan& span = spans[i];
+    const double from = std::max(t, span.t0), to = std::min(s, span.t1);
+    // Convex, so above its tangent where it was last evaluated, which is
+    // lowest at the interval's end it falls towards; not yet entered, u ≥ 1
+    // at the support's edge t0 and changes at most Lσ√a per unit
+    // (glyph_shape.h).
+    const double u = tangent_at_[i] >= span.t0
+                         ? u_[i] + du_dt_[i] * ((du_dt_[i] < 0.0 ? to : from) - tangent_at_[i])
+                         : 1.0 - shape_rays_[i].rate * (to - span.t0);
+    // And u ≥ √g_e, the bounding ellipsoid's, smallest where the ray is
+    // closest to its centre.
+    const double g = std::max(std::max(u, 0.0) * std::max(u, 0.0), span.g(std::clamp(span.t_c, from, to)));
+    return kernel_value(field.kernel, g);
+  };
+  // A span live at t that is past its closest approach by both its
+  // tangent and its bounding ellipsoid has its largest value at t, whatever
+  // s: those are summed once.
+  double fixed = 0.0;
+  rising_.clear();
+  for (std::uint32_t i : live_) {
+    if (du_dt_[i] >= 0.0 && spans[i].t_c <= t) fixed = blended(field.blend, fixed, term(i, t));
+    else rising_.push_back(i);
+  }
   // An upper bound of F over [t, s]: each source's largest value there,
-  // at most its peak on the ray. It never falls as s grows.
+  // at most its peak on the ray. It never falls as s grows. The spans in
+  // their order: those live at t, then those begun by s.
   const auto bound = [&](double s) {
-    double b = 0.0;
-    for (std::size_t i = 0; i < spans.size(); ++i) {
-      const RaySpan& span = spans[i];
-      if (s < span.t0) break;  // not reached by s, nor any after it
-      if (span.t1 < t) continue;  // left behind
-      const double from = std::max(t, span.t0), to = std::min(s, span.t1);
-      double u;
-      if (span.t0 <= t) {
-        // Known at t: convex, so above its tangent; past its closest
-        // approach it only grows.
-        u = du_dt_[i] < 0.0 ? u_[i] + du_dt_[i] * (to - t) : u_[i];
-      } else {
-        // Not yet entered: u ≥ 1 at the support's edge t0, and u changes
-        // at most Lσ√a per unit (glyph_shape.h).
-        const ShapeParams& shape = shape_params(field, span.source);
-        const double rate = std::sqrt(span.a) * double(shape.bound_scale) * double(shape.lipschitz);
-        u = 1.0 - rate * (to - span.t0);
-      }
-      // And u ≥ √g_e, the bounding ellipsoid's, smallest where the ray is
-      // closest to its centre.
-      const double g = std::max(std::max(u, 0.0) * std::max(u, 0.0), span.g(std::clamp(span.t_c, from, to)));
-      b = blended(field.blend, b, kernel_value(field.kernel, g));
-    }
+    double b = fixed;
+    for (std::uint32_t i : rising_) b = blended(field.blend, b, term(i, s));
+    for (std::size_t i = first_unbegun_; i < spans.size() && spans[i].t0 <= s; ++i)
+      b = blended(field.blend, b, term(i, s));
     return b;
   };
   // Out from t by doubling steps, from the last proof's length, to the
   // first s the bound does not clear (a sum up to s costs only the spans
-  // begun by s, so the short tries are cheap), then halving:
-  // bound(lo) < C ≤ bound(hi); within a hundredth of the way is far enough.
-  double lo = t, hi = tmax;
+  // begun by s, so the short tries are cheap), then the Illinois method on
+  // the bound's excess over C, e(lo) < 0 ≤ e(hi) (regula falsi, halving
+  // the weight of an end kept twice): within a hundredth of the way is far
+  // enough. Before any try, F at t stands in for the bound there.
+  double lo = t, hi = tmax, e_lo = probed_value_ - c, e_hi = 0.0;
   for (double step = std::max(proof_step_, min_step);; step *= 2.0) {
     const double s = std::min(t + step, tmax);
-    if (bound(s) >= c) {
+    const double e = bound(s) - c;
+    if (e >= 0.0) {
       hi = s;
+      e_hi = e;
       break;
     }
     lo = s;
+    e_lo = e;
     if (s >= tmax) return tmax;
   }
-  for (int i = 0; i < 40 && hi - lo > std::max(0.01 * (lo - t), min_step); ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (bound(mid) < c ? lo : hi) = mid;
+  for (int i = 0, side = 0; i < 40 && hi - lo > std::max(0.01 * (lo - t), min_step); ++i) {
+    double s = (lo * e_hi - hi * e_lo) / (e_hi - e_lo);
+    if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
+    const double e = bound(s) - c;
+    if (e < 0.0) {
+      lo = s;
+      e_lo = e;
+      if (side == -1) e_hi *= 0.5;
+      side = -1;
+    } else {
+      hi = s;
+      e_hi = e;
+      if (side == 1) e_lo *= 0.5;
+      side = 1;
+    }
   }
   proof_step_ = lo - t;
   return lo;
 }
 
 double FieldRay::shape_trace(const BlobField& field, double tmin, double tmax, const TraceSettings& settings,
-                             TraceStats& stats) {
+                             TraceStats& stats, CrossingQuery query) {
   const double c = field.isovalue;
   // Past the last support F is 0: the search for a proof stays short of it.
   double last = tmin;
@@ -156,8 +206,10 @@ double FieldRay::shape_trace(const BlobField& field, double tmin, double tmax, c
       return -1.0;
     }
     const double next = std::min(std::max(reach, t + settings.min_step), tmax);
-    const double f_next = shape_value_at(field, next, stats);
-    if (f_next >= c) return refine(field, t, next, f, f_next, stats);
+    double f_next = shape_value_at(field, next, stats, Probe::bound);
+    // At or above C by the bound: the terms it skipped decide.
+    if (f_next >= c && probe_skipped_) f_next = shape_value_at(field, next, stats);
+    if (f_next >= c) return query == CrossingQuery::any ? next : refine(field, t, next, f, f_next, stats);
     t = next;
     f = f_next;
   }
