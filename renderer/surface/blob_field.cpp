@@ -55,25 +55,29 @@ Vec3 scaled_offset(const BlobSource& s, const Mat3& w, const Vec3& x) {
   return w * (x - Vec3(s.centre[0], s.centre[1], s.centre[2]));
 }
 
-Box3 influence_bounds(const BlobSource& s) {
-  // The ellipsoid's semi-axis k is row k of W divided by its squared length
-  // (W's rows are orthogonal), so the half-extent along world axis j is the
-  // length of the j-th components of those semi-axis vectors.
-  Vec3 half = Vec3::Zero();
+Box3 influence_bounds(const BlobField& field, std::size_t i) {
+  // The ellipsoid's semi-axis k is row k of W_s divided by its squared
+  // length (W_s's rows are orthogonal), so its half-extent along world
+  // axis j is the length of the j-th components of those semi-axis
+  // vectors; the cube's, whose half-edges are the semi-axes over σ, is
+  // their sum.
+  const BlobSource& s = field.sources[i];
+  Vec3 ellipsoid = Vec3::Zero(), cube = Vec3::Zero();
   for (int k = 0; k < 3; ++k) {
     const Vec3 row(s.w[3 * k], s.w[3 * k + 1], s.w[3 * k + 2]);
     const Vec3 semi_axis = row / row.squaredNorm();
-    half += semi_axis.cwiseAbs2();
+    ellipsoid += semi_axis.cwiseAbs2();
+    cube += semi_axis.cwiseAbs();
   }
-  half = half.cwiseSqrt();
+  const Vec3 half = ellipsoid.cwiseSqrt().cwiseMin(cube / double(shape_params(field, i).bound_scale));
   const Vec3 c(s.centre[0], s.centre[1], s.centre[2]);
   return {c - half, c + half};
 }
 
 Box3 influence_bounds(const BlobField& field) {
   if (field.sources.empty()) return {};
-  Box3 all = influence_bounds(field.sources.front());
-  for (const BlobSource& s : field.sources) all.extend(influence_bounds(s));
+  Box3 all = influence_bounds(field, 0);
+  for (std::size_t i = 1; i < field.sources.size(); ++i) all.extend(influence_bounds(field, i));
   return all;
 }
 

@@ -73,8 +73,12 @@ BlobSource make_blob_source(const Vec3& centre, const Mat3& axes, const Vec3& ra
 Mat3 shape_matrix(const BlobSource& s);
 Vec3 scaled_offset(const BlobSource& s, const Mat3& w, const Vec3& x);
 
-// The axis-aligned box of the (bounding) influence ellipsoid g_e ≤ 1.
-Box3 influence_bounds(const BlobSource& s);
+// An axis-aligned box holding source i's influence: the box of its
+// bounding ellipsoid g_e ≤ 1, narrowed to the box of the cube that holds
+// its shape's support (glyph_shape.h), |q_k| ≤ 1 in the glyph's own frame,
+// wherever that is tighter: up to √3 times for a sharp glyph along the
+// world's axes, never for the ellipsoid itself.
+Box3 influence_bounds(const BlobField& field, std::size_t i);
 
 // Union of all sources' influence bounds.
 Box3 influence_bounds(const BlobField& field);

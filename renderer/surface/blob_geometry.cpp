@@ -79,7 +79,7 @@ ValidLanes gather_lanes(const int* valid, RTCRayN* rays, unsigned n) {
 double mean_influence_diagonal(const BlobField& field) {
   if (field.sources.empty()) return 1.0;
   double sum = 0.0;
-  for (const BlobSource& s : field.sources) sum += influence_bounds(s).diagonal();
+  for (std::size_t i = 0; i < field.sources.size(); ++i) sum += influence_bounds(field, i).diagonal();
   return sum / double(field.sources.size());
 }
 
@@ -137,7 +137,7 @@ unsigned BlobGeometry::attach_to(RTCScene scene, unsigned mask) {
 
 void BlobGeometry::span_bounds(const RTCBoundsFunctionArguments* args) {
   const auto* self = static_cast<const BlobGeometry*>(args->geometryUserPtr);
-  store_bounds(influence_bounds(self->field_.sources[args->primID]), self->margin_, args->bounds_o);
+  store_bounds(influence_bounds(self->field_, args->primID), self->margin_, args->bounds_o);
 }
 
 void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
@@ -297,7 +297,7 @@ struct NearbyQuery {
 bool nearby_candidate(RTCPointQueryFunctionArguments* args) {
   auto* q = static_cast<NearbyQuery*>(args->userPtr);
   if (q->overflow) return false;
-  if (!influence_bounds(q->field->sources[args->primID]).overlaps(q->region)) return false;
+  if (!influence_bounds(*q->field, args->primID).overlaps(q->region)) return false;
   if (q->found->size() == q->limit) {
     // Too many to be worth it: shrink the query to nothing so the
     // traversal ends soon.
@@ -333,7 +333,7 @@ bool BlobGeometry::gather_nearby(const Box3& region, std::size_t limit, NearbySo
   // Rank order, whatever order the traversal met them in: groups of
   // neighbours for the list's boxes.
   std::sort(scratch.begin(), scratch.end(), [&](std::uint32_t a, std::uint32_t b) { return rank_[a] < rank_[b]; });
-  for (const std::uint32_t i : scratch) nearby.add(field_.sources[i], i, rank_[i]);
+  for (const std::uint32_t i : scratch) nearby.add(field_, i, rank_[i]);
   return true;
 }
 

@@ -9,16 +9,18 @@ namespace hsb {
 
 namespace {
 
-// r^p for r in [0, 1], p ≥ 2. log₂ r < e + 1 for r's binary exponent e,
-// so where p (e + 1) ≤ −1075 the power is below half the least subnormal
-// and pow would round it to 0, by its slow path (an underflow, twice the
-// time of an ordinary pow, and sharp glyphs raise most ratios to
-// exponents in the hundreds). The result is pow's to the bit.
+// r^p for r in [0, 1], p ≥ 2, or 0 where r^(p−1) < 2⁻⁶⁴. Such a term
+// leaves the sum with the larger term's 1 unchanged, and its part of the
+// gradient, r^(p−1) times the larger's, is below the larger's last bit; yet
+// pow would spend its time on it, twice over where it underflows, and sharp
+// glyphs raise most ratios to exponents in the tens or hundreds. log₂ r is
+// below both e + 1 (e its binary exponent) and (r − 1)/ln 2.
 double power_below_one(double r, double p) {
   std::uint64_t bits;
   std::memcpy(&bits, &r, sizeof bits);
   const int exponent = int((bits >> 52) & 0x7ff) - 1023;
-  if (p * double(exponent + 1) <= -1075.0) return 0.0;
+  const double log2_above = std::min(double(exponent + 1), (r - 1.0) * M_LOG2E);
+  if ((p - 1.0) * log2_above <= -64.0) return 0.0;
   return std::pow(r, p);
 }
 

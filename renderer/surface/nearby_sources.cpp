@@ -7,7 +7,9 @@ void NearbySources::clear() {
   size_ = 0;
 }
 
-void NearbySources::add(const BlobSource& source, std::uint32_t index, std::uint32_t rank) {
+void NearbySources::add(const BlobField& field, std::uint32_t index, std::uint32_t rank) {
+  const BlobSource& source = field.sources[index];
+  const Box3 bounds = influence_bounds(field, index);
   if (size_ == used_chunks_ * kMaxPacket) {
     if (used_chunks_ == chunks_.size()) {
       chunks_.emplace_back();
@@ -16,9 +18,9 @@ void NearbySources::add(const BlobSource& source, std::uint32_t index, std::uint
     // Empty lanes hold W = 0: no ray enters them, and no NaN or denormal
     // slows the lane arithmetic down.
     chunks_[used_chunks_] = SourceLanes{};
-    chunk_bounds_[used_chunks_++] = influence_bounds(source);
+    chunk_bounds_[used_chunks_++] = bounds;
   }
-  chunk_bounds_[used_chunks_ - 1].extend(influence_bounds(source));
+  chunk_bounds_[used_chunks_ - 1].extend(bounds);
   SourceLanes& chunk = chunks_[used_chunks_ - 1];
   const int lane = chunk.count++;
   for (int k = 0; k < 9; ++k) chunk.w[k][lane] = source.w[std::size_t(k)];

@@ -20,8 +20,8 @@ namespace hsb {
 class NearbySources {
  public:
   void clear();
-  // Source number `index`, of spatial rank `rank`.
-  void add(const BlobSource& source, std::uint32_t index, std::uint32_t rank);
+  // The field's source number `index`, of spatial rank `rank`.
+  void add(const BlobField& field, std::uint32_t index, std::uint32_t rank);
   std::size_t size() const { return size_; }
 
   // Appends to `spans` the span of every listed source whose support the

@@ -24,6 +24,12 @@
 
 namespace hsb {
 
+namespace {
+// A source whose bound stays below this share of C is not evaluated at a
+// probe: the proofs carry it by its bound until it matters.
+constexpr double kSliver = 1.0 / 32.0;
+}  // namespace
+
 void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, const Vec3& direction) {
   shape_rays_.clear();
   std::size_t kept = 0;
@@ -90,14 +96,20 @@ double FieldRay::shape_value_at(const BlobField& field, double t, TraceStats& st
     if (t < s.t0) break;  // neither this span nor any after it has begun
     if (t > s.t1) continue;  // outside its support K is 0
     live_.push_back(std::uint32_t(i));
-    if (probe == Probe::bound && du_dt_[i] >= 0.0 && tangent_at_[i] <= t && tangent_at_[i] >= s.t0) {
-      // Past its closest approach where it was last evaluated, so its
-      // tangent there already bounds it from below for the rest of the
-      // ray, rising: K of that line's value here bounds its term.
-      const double lower = u_[i] + du_dt_[i] * (t - tangent_at_[i]);
-      f = blended(field.blend, f, kernel_value(field.kernel, lower * lower));
-      probe_skipped_ = true;
-      continue;
+    if (probe == Probe::bound) {
+      // What the proofs already know of u here: its last tangent's value,
+      // or before its first the fall from 1 at the support's edge, and
+      // the bounding ellipsoid's √g_e. Not evaluated again where that
+      // rises from here on (past its closest approach: the tangent bounds
+      // it for the rest of the ray) or bounds its term to a sliver of C.
+      const bool known = tangent_at_[i] >= s.t0;
+      const double line = known ? u_[i] + du_dt_[i] * (t - tangent_at_[i]) : 1.0 - shape_rays_[i].rate * (t - s.t0);
+      const double k = kernel_value(field.kernel, std::max(std::max(line, 0.0) * std::max(line, 0.0), s.g(t)));
+      if ((known && du_dt_[i] >= 0.0) || k <= kSliver * field.isovalue) {
+        f = blended(field.blend, f, k);
+        probe_skipped_ = true;
+        continue;
+      }
     }
     const ShapeRay& r = shape_rays_[i];
     const double u = shape_u_rate(field.shape, shape_params(field, s.source), r.q0 + t * r.v, r.v, du_dt_[i]);

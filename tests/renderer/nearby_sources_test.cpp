@@ -42,7 +42,7 @@ Vec3 random_direction(std::mt19937& rng) {
 TEST(NearbySources, SpansAreEachSourcesOwnInListOrder) {
   const BlobField field = crowd(50, 1);
   NearbySources list;
-  for (std::uint32_t i = 0; i < field.sources.size(); ++i) list.add(field.sources[i], i, i);
+  for (std::uint32_t i = 0; i < field.sources.size(); ++i) list.add(field, i, i);
   ASSERT_EQ(list.size(), field.sources.size());
   std::mt19937 rng(2);
   std::uniform_real_distribution<double> unit(-0.5, 0.5);
@@ -108,7 +108,7 @@ TEST_F(CrowdScene, GatherListsExactlyTheSourcesWhoseBoxesMeetTheRegion) {
   ASSERT_TRUE(blobs.gather_nearby(region, field.sources.size(), list, scratch));
   std::set<std::uint32_t> expected;
   for (std::uint32_t i = 0; i < field.sources.size(); ++i)
-    if (influence_bounds(field.sources[i]).overlaps(region)) expected.insert(i);
+    if (influence_bounds(field, i).overlaps(region)) expected.insert(i);
   EXPECT_EQ(std::set<std::uint32_t>(scratch.begin(), scratch.end()), expected);
   EXPECT_EQ(list.size(), expected.size());
   EXPECT_GT(expected.size(), 50u);
