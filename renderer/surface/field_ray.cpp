@@ -36,7 +36,9 @@ double FieldRay::slope_bound_at(const BlobField& field, double t) const {
   return rate * kernel_max_du_slope(field.kernel);
 }
 
-// The crossing inside a bracket F(lo) < C ≤ F(hi), to double precision.
+// The crossing inside a bracket F(lo) < C ≤ F(hi), to double precision
+// (so it hardly depends on the bracket, which depends on how the ray was
+// traced: alone or in a packet, on which instruction set).
 double FieldRay::refine(const BlobField& field, double lo, double hi, double f_lo, double f_hi,
                         TraceStats& stats) const {
   const double c = field.isovalue;

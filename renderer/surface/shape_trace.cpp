@@ -145,11 +145,13 @@ double FieldRay::proven_below_until(const BlobField& field, double tmax, double 
   };
   // A span live at t that is past its closest approach by both its
   // tangent and its bounding ellipsoid has its largest value at t, whatever
-  // s: those are summed once.
+  // s: those are summed once. (One a probe skipped before its first
+  // tangent still falls by its rate from its edge.)
   double fixed = 0.0;
   rising_.clear();
   for (std::uint32_t i : live_) {
-    if (du_dt_[i] >= 0.0 && spans[i].t_c <= t) fixed = blended(field.blend, fixed, term(i, t));
+    if (tangent_at_[i] >= spans[i].t0 && du_dt_[i] >= 0.0 && spans[i].t_c <= t)
+      fixed = blended(field.blend, fixed, term(i, t));
     else rising_.push_back(i);
   }
   // An upper bound of F over [t, s]: each source's largest value there,
@@ -162,15 +164,22 @@ double FieldRay::proven_below_until(const BlobField& field, double tmax, double 
       b = blended(field.blend, b, term(i, s));
     return b;
   };
-  // Out from t by doubling steps, from the last proof's length, to the
-  // first s the bound does not clear (a sum up to s costs only the spans
-  // begun by s, so the short tries are cheap), then the Illinois method on
-  // the bound's excess over C, e(lo) < 0 ≤ e(hi) (regula falsi, halving
-  // the weight of an end kept twice): within a hundredth of the way is far
-  // enough. Before any try, F at t stands in for the bound there.
+  // Out by doubling steps, from the last proof's length, to the first s
+  // the bound does not clear (a sum up to s costs only the spans begun by
+  // s, so the short tries are cheap), then the Illinois method on the
+  // bound's excess over C, e(lo) < 0 ≤ e(hi) (regula falsi, halving the
+  // weight of an end kept twice): within a hundredth of the way is far
+  // enough. Before any try, F at t stands in for the bound there. With no
+  // live source still rising, the bound stays `fixed` until the next
+  // source begins: the steps start there.
   double lo = t, hi = tmax, e_lo = probed_value_ - c, e_hi = 0.0;
-  for (double step = std::max(proof_step_, min_step);; step *= 2.0) {
-    const double s = std::min(t + step, tmax);
+  if (rising_.empty() && fixed < c) {
+    if (first_unbegun_ == spans.size()) return tmax;
+    lo = std::min(spans[first_unbegun_].t0, tmax);
+    e_lo = fixed - c;
+  }
+  for (double step = std::max({proof_step_, min_step, lo - t}); lo < tmax; step *= 2.0) {
+    const double s = std::min(lo + step, tmax);
     const double e = bound(s) - c;
     if (e >= 0.0) {
       hi = s;
@@ -179,8 +188,8 @@ double FieldRay::proven_below_until(const BlobField& field, double tmax, double 
     }
     lo = s;
     e_lo = e;
-    if (s >= tmax) return tmax;
   }
+  if (lo >= tmax) return tmax;
   for (int i = 0, side = 0; i < 40 && hi - lo > std::max(0.01 * (lo - t), min_step); ++i) {
     double s = (lo * e_hi - hi * e_lo) / (e_hi - e_lo);
     if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
