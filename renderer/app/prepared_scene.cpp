@@ -107,16 +107,21 @@ void add_corners(const Box3& b, std::vector<Vec3>& points) {
 }
 
 // Points on each glyph the camera frames: the tips of its axes and the
-// eight points midway between them, on the ellipsoid the
-// surface can reach, scaled to the isolated glyph's level surface times
-// kBlendAllowance (neighbours blending swell a tube; never beyond the
-// support). Ellipsoids, not their boxes: a box's corners frame a thin,
-// tilted glyph train far too loosely.
+// eight points midway between them, on the glyph's own shape (the
+// ellipsoid's at 1/√3 of each axis, a sharp superquadric's out at its
+// corners, up to the whole axes), scaled to the isolated glyph's level
+// surface times kBlendAllowance (neighbours blending swell a tube; never
+// beyond the support). The glyph's shape, not its box: a box's corners
+// frame a thin, tilted glyph train far too loosely.
 void add_glyph_points(const PreparedScene& p, double extent, std::vector<Vec3>& points) {
   const double reach = std::min(1.0, kBlendAllowance * extent / p.spec.surface.influence_radius) *
                        p.spec.surface.influence_radius;
-  const double d = 1.0 / std::sqrt(3.0);
-  for (const GlyphSource& s : p.glyphs.sources) {
+  for (std::size_t i = 0; i < p.glyphs.sources.size(); ++i) {
+    const GlyphSource& s = p.glyphs.sources[i];
+    // The glyph is the unit ball of its gauge u, a norm symmetric in each
+    // axis's sign: along a diagonal it reaches 1/u(1, 1, 1) of each axis.
+    const ShapeParams& shape = shape_params(p.field, i);
+    const double d = 1.0 / std::sqrt(shape_g(p.field.shape, shape, Vec3::Ones() / double(shape.bound_scale)));
     const Mat3 a = s.axes * (reach * s.radii).asDiagonal();
     for (int k = 0; k < 3; ++k) points.push_back(s.centre + a.col(k)), points.push_back(s.centre - a.col(k));
     for (int o = 0; o < 8; ++o)

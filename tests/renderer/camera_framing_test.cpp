@@ -5,9 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
+#include "renderer/app/prepared_scene.h"
 #include "renderer/render/camera.h"
 #include "renderer/render/camera_framing.h"
+#include "renderer/render/ray_scene.h"
 
 namespace hsb {
 namespace {
@@ -187,6 +190,48 @@ TEST(Camera, PixelSizeIsTheSpacingOfNeighbouringRaysAtThatDepth) {
     const double down = (on_plane(camera, spec.position, forward, depth, 120, 101) - here).norm();
     EXPECT_NEAR(camera.pixel_size_at(point), across, 1e-9 * across);
     EXPECT_NEAR(camera.pixel_size_at(point), down, 1e-9 * down);
+  }
+}
+
+// Glyphs the camera frames by themselves stay whole in the picture
+// whatever their shape: a sharp superquadric reaches out to the rims and
+// corners of its box, beyond the ellipsoid of the same radii. Every point
+// of each isolated glyph's own surface (along 26 axis, edge and corner
+// directions and 400 random ones) lies in the frame.
+TEST(CameraFraming, EveryGlyphShapeStaysWholeInThePicture) {
+  const std::string scene = "[[seeds.grid]]\ncorner = [-0.4, -0.4, 0.6]\nedge_u = [0.8, 0, 0]\nedge_v = [0, 0.8, 0]\n"
+                            "n = 3\nm = 3\n[trajectories]\nfamily = \"minor\"\n[glyphs]\nspacing = 0.2\nmapping = \"normalized\"\nscale = 0.6\n"
+                            "[render]\nwidth = 160\nheight = 120\nground = false\nbox = false\n";
+  std::vector<Vec3> directions;
+  for (int i = 0; i < 27; ++i)
+    if (i != 13) directions.push_back(Vec3(i % 3 - 1, i / 3 % 3 - 1, i / 9 - 1).normalized());
+  std::mt19937 rng(3);
+  std::normal_distribution<double> n;
+  for (int i = 0; i < 400; ++i) directions.push_back(Vec3(n(rng), n(rng), n(rng)).normalized());
+  for (const std::vector<std::string>& shape :
+       {std::vector<std::string>{}, {"glyphs.shape=\"superquadric\"", "glyphs.sharpness=10"},
+        {"glyphs.shape=\"signed\"", "glyphs.sharpness=10", "output.colorbar=false"}}) {
+    SCOPED_TRACE(shape.empty() ? "ellipsoid" : shape.front());
+    const ColorManagement color("", "");
+    const std::unique_ptr<PreparedScene> p = prepare_scene(load_scene_text(scene, "sharp.toml", "", shape), color);
+    const BlobField& field = p->field;
+    const double u_level = kernel_level_radius(field.kernel, field.isovalue);
+    int outside = 0;
+    for (std::size_t i = 0; i < field.sources.size(); ++i) {
+      // x = c + W_s⁻¹ q_s: q_s = q/σ, the glyph's own frame scaled into the
+      // stored one, and u(q) = √g(q_s) scales a direction onto the level.
+      const ShapeParams& params = shape_params(field, i);
+      const double sigma = params.bound_scale;
+      const Mat3 inverse = shape_matrix(field.sources[i]).inverse();
+      const Vec3 c(field.sources[i].centre[0], field.sources[i].centre[1], field.sources[i].centre[2]);
+      for (const Vec3& w : directions) {
+        const double u = std::sqrt(shape_g(field.shape, params, w / sigma));
+        const Projected at = project(p->camera, p->render.width, p->render.height, c + inverse * (u_level / u * w / sigma));
+        const double frame_w = p->camera.frame_width * p->render.width, frame_h = p->camera.frame_height * p->render.height;
+        outside += at.depth <= 0.0 || at.x < 0.0 || at.x > frame_w || at.y < 0.0 || at.y > frame_h;
+      }
+    }
+    EXPECT_EQ(outside, 0);
   }
 }
 
