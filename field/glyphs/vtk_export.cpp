@@ -1,5 +1,7 @@
 #include "field/glyphs/vtk_export.h"
 
+#include <stdexcept>
+
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
@@ -83,7 +85,8 @@ vtkSmartPointer<vtkPolyData> trajectories_polydata(const GlyphScene& scene) {
   return poly;
 }
 
-vtkSmartPointer<vtkPolyData> sources_polydata(const GlyphScene& scene, double glyph_scale) {
+vtkSmartPointer<vtkPolyData> sources_polydata(const GlyphScene& scene, double glyph_scale,
+                                              const std::vector<SourceArray>& more) {
   const vtkIdType n = vtkIdType(scene.sources.size());
   auto points = vtkSmartPointer<vtkPoints>::New();
   auto vertices = vtkSmartPointer<vtkCellArray>::New();
@@ -109,15 +112,26 @@ vtkSmartPointer<vtkPolyData> sources_polydata(const GlyphScene& scene, double gl
   data->AddArray(radii);
   data->SetScalars(scalar);
   data->SetTensors(glyph);
+  for (const SourceArray& m : more) {
+    if (m.values.size() != std::size_t(m.components) * std::size_t(n))
+      throw std::invalid_argument("source array " + m.name + ": " + std::to_string(m.values.size()) +
+                                  " values for " + std::to_string(n) + " sources of " +
+                                  std::to_string(m.components) + " components");
+    auto a = named_array(m.name.c_str(), m.components, n);
+    for (vtkIdType i = 0; i < n; ++i) a->SetTuple(i, m.values.data() + std::size_t(i) * std::size_t(m.components));
+    data->AddArray(a);
+  }
   return poly;
 }
 
 }  // namespace
 
-void write_glyph_scene_vtp(const GlyphScene& scene, double glyph_scale,
-                           const std::string& trajectories_path, const std::string& sources_path) {
+void write_glyph_scene_vtp(const GlyphScene& scene, double glyph_scale, const std::string& trajectories_path,
+                           const std::string& sources_path, const std::vector<SourceArray>& more) {
+  // Checked before either file is written.
+  const vtkSmartPointer<vtkPolyData> sources = sources_polydata(scene, glyph_scale, more);
   write_polydata(trajectories_polydata(scene), trajectories_path);
-  write_polydata(sources_polydata(scene, glyph_scale), sources_path);
+  write_polydata(sources, sources_path);
 }
 
 }  // namespace hsb

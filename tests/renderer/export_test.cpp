@@ -16,6 +16,7 @@
 #include "renderer/app/export_job.h"
 #include "renderer/app/prepared_scene.h"
 #include "renderer/scene/scene_spec.h"
+#include "renderer/surface/glyph_shape.h"
 #include "renderer/surface/kernel.h"
 #include "tests/temp_dir.h"
 
@@ -54,6 +55,7 @@ TEST(Export, SourcesAndTrajectoriesReadBackWithTheirArrays) {
     ASSERT_NE(data->GetArray(name), nullptr) << name;
   ASSERT_NE(data->GetTensors(), nullptr);
   EXPECT_STREQ(data->GetTensors()->GetName(), "glyph");
+  EXPECT_EQ(data->GetArray("shape_exponents"), nullptr);  // an ellipsoid has no shape to say
   // The glyph tensor's eigenvalues are 2·R·level(C)·r_k: ParaView's sphere of
   // radius ½ scaled by them is this renderer's isolated ellipsoid.
   const double scale = 2.0 * 1.5 * kernel_level_radius(KernelKind::quartic, 0.5);
@@ -76,6 +78,42 @@ TEST(Export, SourcesAndTrajectoriesReadBackWithTheirArrays) {
     std::sort(lambdas.data(), lambdas.data() + 3);
     EXPECT_LT((tensor_values - lambdas).norm(), 1e-9 * (1 + lambdas.norm()));
   }
+}
+
+// Signed glyphs carry their shape: Kindlmann's exponents for the radii,
+// the axis the superquadric is round about, and points on exactly the axes
+// whose eigenvalues compress.
+TEST(Export, SignedGlyphsCarryTheirShape) {
+  const auto dir = test_temp_dir("export_shape_test", true);
+  const std::string scene = (dir / "s.toml").string();
+  std::ofstream(scene) << "[seeds]\npoints = [[0, 0, 0.5], [0.3, 0.2, 0.6], [0.5, -0.4, -0.2]]\n"
+                          "[trajectories]\nfamily = \"minor\"\n"
+                          "[glyphs]\nspacing = 0.2\nshape = \"signed\"\nsharpness = 2.5\n";
+  const std::vector<std::string> files = run_export_job({scene, {}, (dir / "out").string()});
+  const SceneSpec spec = load_scene(scene);
+  const GlyphScene expected = build_glyph_scene(spec.pipeline, glyph_extent(spec.surface));
+  const auto sources = read_vtp(files[1]);
+  ASSERT_EQ(sources->GetNumberOfPoints(), vtkIdType(expected.sources.size()));
+  vtkDataArray* exponents = sources->GetPointData()->GetArray("shape_exponents");
+  vtkDataArray* axis = sources->GetPointData()->GetArray("shape_axis");
+  vtkDataArray* points = sources->GetPointData()->GetArray("shape_points");
+  ASSERT_TRUE(exponents && axis && points);
+  int tension = 0, compression = 0;
+  for (vtkIdType i = 0; i < sources->GetNumberOfPoints(); ++i) {
+    const GlyphSource& s = expected.sources[std::size_t(i)];
+    const ShapeParams shape = superquadric_params(s.radii, 2.5);
+    EXPECT_FLOAT_EQ(float(exponents->GetComponent(i, 0)), shape.alpha);
+    EXPECT_FLOAT_EQ(float(exponents->GetComponent(i, 1)), shape.beta);
+    EXPECT_EQ(axis->GetComponent(i, 0), double(shape.axis));
+    for (int k = 0; k < 3; ++k) {
+      const double lambda = s.eigenvalues[k], largest = s.eigenvalues.cwiseAbs().maxCoeff();
+      const bool pointed = points->GetComponent(i, k) == 1.0;
+      EXPECT_EQ(pointed, lambda < -1e-3 * largest) << "source " << i << " axis " << k << " λ " << lambda;
+      (pointed ? compression : tension) += std::fabs(lambda) > 1e-3 * largest;
+    }
+  }
+  EXPECT_GT(tension, 0);  // the point load has both
+  EXPECT_GT(compression, 0);
 }
 
 // POV-Ray's blob has ellipsoids only: a superquadric scene is refused with
