@@ -139,7 +139,7 @@ void draw_bar_annotations(cairo_t* cr, const LegendLayout& l, const ColorScale& 
     if (!l.ticks.factor.empty())
       show_text(cr, l.ticks.factor, font, l.bar_x0, l.bar_y0 - kGap * p - reach.high, 0.0, 1.0);
     const double x = l.bar_x1 + (kTickLength + 2.0 * kGap) * p + widest;
-    show_text(cr, l.title, font, x, 0.5 * (l.bar_y0 + l.bar_y1), 0.5, 0.0, true);
+    show_text(cr, l.title, font, x, 0.5 * (l.bar_y0 + l.bar_y1), 0.5, 0.0, true, false, l.title_wrap);
   } else {
     if (!l.ticks.factor.empty())
       show_text(cr, l.ticks.factor, font, l.bar_x1 + kGap * p + reach.high, l.bar_y0, 0.0, 0.0);
@@ -275,10 +275,10 @@ LegendLayout layout_legend(const ColorScale& scale, const LegendContent& content
 
   // The bar's block: its strip, ticks, labels and title across; words at
   // its ends.
-  double bar_across = 0.0, words_w = 0.0, words_h = 0.0, title_w = 0.0, title_row = 0.0;
+  double bar_across = 0.0, words_w = 0.0, words_h = 0.0, title_w = 0.0, title_h = 0.0, title_row = 0.0;
   if (l.bar) {
     set_ticks(l, scale, kDefaultTicks);
-    double label_w = 0.0, label_h = 0.0, title_h = 0.0;
+    double label_w = 0.0, label_h = 0.0;
     for (const Tick& t : l.ticks.ticks) measure(t.label, label_w, label_h);
     for (const std::string& extreme : {l.low_label, l.high_label}) measure(extreme, label_w, label_h);
     measure(l.title.empty() ? " " : l.title, title_w, title_h);
@@ -296,18 +296,28 @@ LegendLayout layout_legend(const ColorScale& scale, const LegendContent& content
   const EndReach reach = l.bar ? end_reach(cr.get(), l) : EndReach{};
 
   if (right) {
+    const double words = words_h > 0.0 ? words_h + gap : 0.0;
+    const double above = gap + reach.high + reach.factor + words, below = gap + reach.low + words;
+    // The bar, its ends' decorations and the key under them are centred
+    // as one group; the bar is lengthened up to its title's length, and
+    // shortened where they would not fit.
+    const double key_part = l.key.empty() ? 0.0 : key_h + (l.bar ? 2.0 * gap : 0.0);
+    const double room = height - 2.0 * (std::max(above, below) + margin) - key_part;
+    const double length = l.bar ? std::max(0.0, std::min(std::max(style.length * height, title_w), room)) : 0.0;
+    // A title still longer than the bar is wrapped at its length: its
+    // lines stand side by side, so the column widens by the extra ones.
+    if (l.bar && !l.title.empty() && title_w > length && length > 0.0) {
+      l.title_wrap = length;
+      double wrapped_w = 0.0, wrapped_h = 0.0;
+      text_size(cr.get(), l.title, font, wrapped_w, wrapped_h, false, length);
+      bar_across += wrapped_h - title_h;
+    }
     // One column at the picture's right edge: the bar, and the key at its
     // foot; the words above and below the bar must fit in it too.
     const double block = std::max({bar_across, key_w + margin, words_w > 0.0 ? words_w + margin : 0.0});
     l.left = width - block;
     l.key_x0 = l.bar_x0 = l.left;
     l.bar_x1 = l.bar_x0 + kBarWidth * p;
-    const double words = words_h > 0.0 ? words_h + gap : 0.0;
-    const double above = gap + reach.high + reach.factor + words, below = gap + reach.low + words;
-    // The bar, its ends' decorations and the key under them are centred
-    // as one group; the bar is shortened where they would not fit.
-    const double key_part = l.key.empty() ? 0.0 : key_h + (l.bar ? 2.0 * gap : 0.0);
-    const double length = l.bar ? std::max(0.0, std::min(style.length * height, height - 2.0 * (std::max(above, below) + margin) - key_part)) : 0.0;
     const double group = (l.bar ? above + length + below : 0.0) + key_part;
     // Without a key the bar alone is centred on the picture, as it always was.
     l.bar_y0 = l.key.empty() ? 0.5 * (height - length) : 0.5 * (height - group) + (l.bar ? above : 0.0);

@@ -55,6 +55,9 @@ struct LegendLayout {
   double bar_x0 = 0, bar_y0 = 0, bar_x1 = 0, bar_y1 = 0;  // the colour strip
   TickSet ticks;
   std::string title;
+  // On the right, a title longer than the bar is wrapped at its length
+  // (its lines side by side, each centred on the bar); 0 when it fits.
+  double title_wrap = 0.0;
   // A clipped end's extension triangle (as matplotlib's `extend`) is
   // labelled with the values' true extreme: "max 312" ("" when that end
   // is not clipped).

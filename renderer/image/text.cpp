@@ -38,8 +38,9 @@ CairoOwned<cairo_t> measuring_context() {
   return CairoOwned<cairo_t>(cairo_create(surface.get()));
 }
 
-void text_size(cairo_t* cr, const std::string& text, double size_px, double& width, double& height, bool bold) {
-  const PangoOwned<PangoLayout> layout = text_layout(cr, text, size_px, bold, 0.0);
+void text_size(cairo_t* cr, const std::string& text, double size_px, double& width, double& height, bool bold,
+               double wrap_px) {
+  const PangoOwned<PangoLayout> layout = text_layout(cr, text, size_px, bold, wrap_px);
   int w = 0, h = 0;
   pango_layout_get_size(layout.get(), &w, &h);
   width = double(w) / PANGO_SCALE;

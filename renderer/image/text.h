@@ -22,9 +22,10 @@ using CairoOwned = std::unique_ptr<T, CairoDeleter>;
 // A context to measure text with: text sizes do not depend on the surface.
 CairoOwned<cairo_t> measuring_context();
 
-// `text`'s logical size at `size_px`, in the context's units.
+// `text`'s logical size at `size_px`, in the context's units, its lines
+// wrapped at `wrap_px` when that is > 0 (as show_text wraps them).
 void text_size(cairo_t* cr, const std::string& text, double size_px, double& width, double& height,
-               bool bold = false);
+               bool bold = false, double wrap_px = 0.0);
 
 // `text` with its anchor at (x, y): ax, ay in [0, 1] from its left/top to
 // its right/bottom; rotated a quarter turn anticlockwise when `upright`.

@@ -15,6 +15,7 @@
 
 #include "renderer/app/prepared_scene.h"
 #include "renderer/app/render_job.h"
+#include "renderer/image/text.h"
 #include "tests/renderer/command_output.h"
 #include "tests/temp_dir.h"
 
@@ -176,6 +177,34 @@ TEST_F(FigureOutput, SignedGlyphsGetAShapeKeyBesideTheBar) {
     EXPECT_NE(std::string(e.what()).find("output.shape_key = true needs glyphs.shape = \"signed\""), std::string::npos)
         << e.what();
   }
+}
+
+// A colour bar's title longer than the bar (a short picture, a long
+// name) is wrapped at the bar's length, its lines side by side in a
+// column wide enough for them; a title that fits is left whole.
+TEST_F(FigureOutput, ATitleLongerThanTheBarIsWrappedBesideIt) {
+  const ColorManagement color("", "");
+  const std::string path = scene(kPlate);
+  const std::string title = "the first principal stress of the plate, where the hole concentrates it (Pa)";
+  const std::unique_ptr<PreparedScene> p =
+      prepare_scene(load_scene(path, {"render.height=200", "output.colorbar_title=\"" + title + "\""}), color);
+  ASSERT_TRUE(p->output.legend);
+  const LegendLayout& l = *p->output.legend;
+  const double length = l.bar_y1 - l.bar_y0;
+  ASSERT_GT(l.title_wrap, 0.0);
+  EXPECT_LE(l.title_wrap, length + 1e-9);
+  const CairoOwned<cairo_t> cr = measuring_context();
+  const double font = l.style.font_size * l.pixels_per_point;
+  double w = 0.0, h = 0.0, one_w = 0.0, one_h = 0.0;
+  text_size(cr.get(), title, font, w, h, false, l.title_wrap);
+  text_size(cr.get(), title, font, one_w, one_h);
+  EXPECT_LE(w, length + 1.0);  // along the bar, within it
+  EXPECT_GE(h, 2.0 * one_h);   // in two lines or more
+  EXPECT_LE(l.left + (l.bar_x1 - l.bar_x0) + h, p->render.width);  // and the column holds them
+  const std::unique_ptr<PreparedScene> fits =
+      prepare_scene(load_scene(path, {"render.height=600", "output.colorbar_title=\"λ₁ (Pa)\""}), color);
+  ASSERT_TRUE(fits->output.legend);
+  EXPECT_EQ(fits->output.legend->title_wrap, 0.0);
 }
 
 // One side given: the other follows the body's shape, as with neither,
