@@ -283,11 +283,18 @@ std::string output_file_name(const SceneSpec& spec) {
 }
 
 std::array<int, 2> picture_size(const SceneSpec& s) {
-  // As given, else the print size at the DPI.
+  // As given, else the print size at the DPI; one side given beside a
+  // print size, the other keeps the print's shape (a smaller proof of the
+  // same figure, not a print of the wrong shape).
   const auto pixels = [&](int axis) {
     return s.output.print_size ? std::max(1, int(std::lround((*s.output.print_size)[std::size_t(axis)] / 25.4 * s.output.dpi)))
                                : kDefaultPixels;
   };
+  if (s.output.print_size && (s.render.width.has_value() != s.render.height.has_value())) {
+    const double aspect = (*s.output.print_size)[0] / (*s.output.print_size)[1];
+    if (s.render.width) return {*s.render.width, std::max(1, int(std::lround(*s.render.width / aspect)))};
+    return {std::max(1, int(std::lround(*s.render.height * aspect))), *s.render.height};
+  }
   return {s.render.width.value_or(pixels(0)), s.render.height.value_or(pixels(1))};
 }
 

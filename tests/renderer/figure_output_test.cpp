@@ -227,6 +227,12 @@ TEST_F(FigureOutput, OneSideGivenTheOtherFollowsTheBody) {
   const std::unique_ptr<PreparedScene> tall = prepare_scene(load_scene(path, {"render.height=300"}), color);
   EXPECT_EQ(tall->render.height, 300);
   EXPECT_NEAR(free_aspect(*tall) / body, 1.0, 0.03);
+  // Beside a print size, the other side keeps the print's shape.
+  for (const char* side : {"render.width=600", "render.height=300"}) {
+    const std::unique_ptr<PreparedScene> proof =
+        prepare_scene(load_scene(path, {"output.print_size=[85, 60]", side}), color);
+    EXPECT_NEAR(double(proof->render.width) / proof->render.height, 85.0 / 60.0, 0.005) << side;
+  }
 }
 
 TEST_F(FigureOutput, PngCarriesDpiSceneDataAndResolvedSettings) {
