@@ -161,13 +161,19 @@ double body_aspect(const CameraRequest& request, const std::vector<Vec3>& framed
   return (x1 > x0 && y1 > y0) ? std::clamp((x1 - x0) / (y1 - y0), kTallest, kWidest) : 1.0;
 }
 
+// The picture's pixels from the one side the scene gives, the other of
+// shape `aspect` (width over height).
+std::array<int, 2> size_from_one_side(const SceneSpec& s, double aspect) {
+  if (s.render.width) return {*s.render.width, std::max(1, int(std::lround(*s.render.width / aspect)))};
+  return {std::max(1, int(std::lround(*s.render.height * aspect))), *s.render.height};
+}
+
 // The picture's pixels: as the scene gives them; a side it leaves out
 // follows the body's shape from the other, and with neither the body's
 // shape has the area of the default square.
 std::array<int, 2> body_shaped_size(const SceneSpec& s, const CameraRequest& request, const std::vector<Vec3>& framed) {
   const double aspect = body_aspect(request, framed);
-  if (s.render.width) return {*s.render.width, std::max(1, int(std::lround(*s.render.width / aspect)))};
-  if (s.render.height) return {std::max(1, int(std::lround(*s.render.height * aspect))), *s.render.height};
+  if (s.render.width || s.render.height) return size_from_one_side(s, aspect);
   return {int(std::lround(kDefaultPixels * std::sqrt(aspect))), int(std::lround(kDefaultPixels / std::sqrt(aspect)))};
 }
 
@@ -290,11 +296,8 @@ std::array<int, 2> picture_size(const SceneSpec& s) {
     return s.output.print_size ? std::max(1, int(std::lround((*s.output.print_size)[std::size_t(axis)] / 25.4 * s.output.dpi)))
                                : kDefaultPixels;
   };
-  if (s.output.print_size && (s.render.width.has_value() != s.render.height.has_value())) {
-    const double aspect = (*s.output.print_size)[0] / (*s.output.print_size)[1];
-    if (s.render.width) return {*s.render.width, std::max(1, int(std::lround(*s.render.width / aspect)))};
-    return {std::max(1, int(std::lround(*s.render.height * aspect))), *s.render.height};
-  }
+  if (s.output.print_size && (s.render.width.has_value() != s.render.height.has_value()))
+    return size_from_one_side(s, (*s.output.print_size)[0] / (*s.output.print_size)[1]);
   return {s.render.width.value_or(pixels(0)), s.render.height.value_or(pixels(1))};
 }
 

@@ -109,6 +109,11 @@ class FieldRay {
   //    proofs after it need.
   enum class Probe { exact, bound };
   double shape_value_at(const BlobField& field, double t, TraceStats& stats, Probe probe = Probe::exact) const;
+  //  - An upper bound of span i's K over [from, to] (within its interval)
+  //    from what is known of it: its last tangent, or before that the
+  //    most u can fall from its edge, and its bounding ellipsoid.
+  double term_bound(const BlobField& field, std::size_t i, double from, double to) const;
+  bool has_tangent(std::size_t i) const { return tangent_at_[i] >= spans[i].t0; }
   //  - The largest s ≤ tmax up to which F < C is proven from what the
   //    last shape_value_at() found (to within a hundredth of the way, or
   //    min_step).

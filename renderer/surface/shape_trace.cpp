@@ -97,15 +97,12 @@ double FieldRay::shape_value_at(const BlobField& field, double t, TraceStats& st
     if (t > s.t1) continue;  // outside its support K is 0
     live_.push_back(std::uint32_t(i));
     if (probe == Probe::bound) {
-      // What the proofs already know of u here: its last tangent's value,
-      // or before its first the fall from 1 at the support's edge, and
-      // the bounding ellipsoid's √g_e. Not evaluated again where that
-      // rises from here on (past its closest approach: the tangent bounds
-      // it for the rest of the ray) or bounds its term to a sliver of C.
-      const bool known = tangent_at_[i] >= s.t0;
-      const double line = known ? u_[i] + du_dt_[i] * (t - tangent_at_[i]) : 1.0 - shape_rays_[i].rate * (t - s.t0);
-      const double k = kernel_value(field.kernel, std::max(std::max(line, 0.0) * std::max(line, 0.0), s.g(t)));
-      if ((known && du_dt_[i] >= 0.0) || k <= kSliver * field.isovalue) {
+      // What the proofs already know of its value here. Not evaluated
+      // again where its tangent rises from here on (past its closest
+      // approach: the tangent bounds it for the rest of the ray) or that
+      // bounds its term to a sliver of C.
+      const double k = term_bound(field, i, t, t);
+      if ((has_tangent(i) && du_dt_[i] >= 0.0) || k <= kSliver * field.isovalue) {
         f = blended(field.blend, f, k);
         probe_skipped_ = true;
         continue;
@@ -125,23 +122,25 @@ double FieldRay::shape_value_at(const BlobField& field, double t, TraceStats& st
   return f;
 }
 
+double FieldRay::term_bound(const BlobField& field, std::size_t i, double from, double to) const {
+  const RaySpan& span = spans[i];
+  // Convex, so above its tangent where it was last evaluated, which is
+  // lowest at the interval's end it falls towards; not yet evaluated, u ≥ 1
+  // at the support's edge t0 and changes at most Lσ√a per unit
+  // (glyph_shape.h).
+  const double u = has_tangent(i) ? u_[i] + du_dt_[i] * ((du_dt_[i] < 0.0 ? to : from) - tangent_at_[i])
+                                  : 1.0 - shape_rays_[i].rate * (to - span.t0);
+  // And u ≥ √g_e, the bounding ellipsoid's, smallest where the ray is
+  // closest to its centre.
+  const double g = std::max(std::max(u, 0.0) * std::max(u, 0.0), span.g(std::clamp(span.t_c, from, to)));
+  return kernel_value(field.kernel, g);
+}
+
 double FieldRay::proven_below_until(const BlobField& field, double tmax, double min_step) const {
   const double t = probed_at_, c = field.isovalue;
   // An upper bound of span i's value over [t, s].
   const auto term = [&](std::size_t i, double s) {
-    const RaySpan& span = spans[i];
-    const double from = std::max(t, span.t0), to = std::min(s, span.t1);
-    // Convex, so above its tangent where it was last evaluated, which is
-    // lowest at the interval's end it falls towards; not yet entered, u ≥ 1
-    // at the support's edge t0 and changes at most Lσ√a per unit
-    // (glyph_shape.h).
-    const double u = tangent_at_[i] >= span.t0
-                         ? u_[i] + du_dt_[i] * ((du_dt_[i] < 0.0 ? to : from) - tangent_at_[i])
-                         : 1.0 - shape_rays_[i].rate * (to - span.t0);
-    // And u ≥ √g_e, the bounding ellipsoid's, smallest where the ray is
-    // closest to its centre.
-    const double g = std::max(std::max(u, 0.0) * std::max(u, 0.0), span.g(std::clamp(span.t_c, from, to)));
-    return kernel_value(field.kernel, g);
+    return term_bound(field, i, std::max(t, spans[i].t0), std::min(s, spans[i].t1));
   };
   // A span live at t that is past its closest approach by both its
   // tangent and its bounding ellipsoid has its largest value at t, whatever
@@ -150,7 +149,7 @@ double FieldRay::proven_below_until(const BlobField& field, double tmax, double 
   double fixed = 0.0;
   rising_.clear();
   for (std::uint32_t i : live_) {
-    if (tangent_at_[i] >= spans[i].t0 && du_dt_[i] >= 0.0 && spans[i].t_c <= t)
+    if (has_tangent(i) && du_dt_[i] >= 0.0 && spans[i].t_c <= t)
       fixed = blended(field.blend, fixed, term(i, t));
     else rising_.push_back(i);
   }

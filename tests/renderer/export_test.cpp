@@ -30,18 +30,30 @@ vtkSmartPointer<vtkPolyData> read_vtp(const std::string& path) {
   return reader->GetOutput();
 }
 
-TEST(Export, SourcesAndTrajectoriesReadBackWithTheirArrays) {
-  const auto dir = test_temp_dir("export_test", true);
+// `scene_text` exported from a scene file in a fresh folder `name`: the
+// files written, and the glyph scene the export should hold.
+struct Exported {
+  std::vector<std::string> files;
+  GlyphScene expected;
+};
+Exported export_scene(const std::string& name, const std::string& scene_text) {
+  const auto dir = test_temp_dir(name, true);
   const std::string scene = (dir / "s.toml").string();
-  std::ofstream(scene) << "[seeds]\npoints = [[0, 0, 0.5], [0.3, 0.2, 0.6]]\n"
-                          "[trajectories]\nfamily = \"minor\"\n"
-                          "[glyphs]\nspacing = 0.2\nmapping = \"normalized\"\nscale = 0.3\n"
-                          "[surface]\nkernel = \"quartic\"\ninfluence_radius = 1.5\n";
-  const std::vector<std::string> files = run_export_job({scene, {}, (dir / "out").string()});
+  std::ofstream(scene) << scene_text;
+  Exported e;
+  e.files = run_export_job({scene, {}, (dir / "out").string()});
+  const SceneSpec spec = load_scene(scene);
+  e.expected = build_glyph_scene(spec.pipeline, glyph_extent(spec.surface));
+  return e;
+}
+
+TEST(Export, SourcesAndTrajectoriesReadBackWithTheirArrays) {
+  const auto [files, expected] = export_scene("export_test", "[seeds]\npoints = [[0, 0, 0.5], [0.3, 0.2, 0.6]]\n"
+                                                             "[trajectories]\nfamily = \"minor\"\n"
+                                                             "[glyphs]\nspacing = 0.2\nmapping = \"normalized\"\nscale = 0.3\n"
+                                                             "[surface]\nkernel = \"quartic\"\ninfluence_radius = 1.5\n");
   ASSERT_EQ(files.size(), 2u);
 
-  const SceneSpec spec = load_scene(scene);
-  const GlyphScene expected = build_glyph_scene(spec.pipeline, glyph_extent(spec.surface));
   const auto lines = read_vtp(files[0]);
   EXPECT_EQ(lines->GetNumberOfLines(), 2);
   ASSERT_NE(lines->GetPointData()->GetArray("arc_length"), nullptr);
@@ -84,14 +96,11 @@ TEST(Export, SourcesAndTrajectoriesReadBackWithTheirArrays) {
 // the axis the superquadric is round about, and points on exactly the axes
 // whose eigenvalues compress.
 TEST(Export, SignedGlyphsCarryTheirShape) {
-  const auto dir = test_temp_dir("export_shape_test", true);
-  const std::string scene = (dir / "s.toml").string();
-  std::ofstream(scene) << "[seeds]\npoints = [[0, 0, 0.5], [0.3, 0.2, 0.6], [0.5, -0.4, -0.2]]\n"
-                          "[trajectories]\nfamily = \"minor\"\n"
-                          "[glyphs]\nspacing = 0.2\nshape = \"signed\"\nsharpness = 2.5\n";
-  const std::vector<std::string> files = run_export_job({scene, {}, (dir / "out").string()});
-  const SceneSpec spec = load_scene(scene);
-  const GlyphScene expected = build_glyph_scene(spec.pipeline, glyph_extent(spec.surface));
+  const auto [files, expected] =
+      export_scene("export_shape_test", "[seeds]\npoints = [[0, 0, 0.5], [0.3, 0.2, 0.6], [0.5, -0.4, -0.2]]\n"
+                                        "[trajectories]\nfamily = \"minor\"\n"
+                                        "[glyphs]\nspacing = 0.2\nshape = \"signed\"\nsharpness = 2.5\n");
+  ASSERT_EQ(files.size(), 2u);
   const auto sources = read_vtp(files[1]);
   ASSERT_EQ(sources->GetNumberOfPoints(), vtkIdType(expected.sources.size()));
   vtkDataArray* exponents = sources->GetPointData()->GetArray("shape_exponents");

@@ -200,7 +200,9 @@ TEST(GlyphShapes, TracerFindsEveryCrossingDenseSamplingFinds) {
       const double any = occlusion.spans.empty() ? -1.0
                              : occlusion.first_crossing(field, o, d, 0.0, 1e30, settings, any_stats, CrossingQuery::any);
       EXPECT_EQ(any >= 0.0, t >= 0.0) << "ray " << r;
-      if (any >= 0.0) EXPECT_GE(field_value(field, o + any * d), field.isovalue * (1.0 - 1e-9)) << "ray " << r;
+      if (any >= 0.0) {
+        EXPECT_GE(field_value(field, o + any * d), field.isovalue * (1.0 - 1e-9)) << "ray " << r;
+      }
       // A sliver thinner than a sample step (5e-4) can fall between
       // samples: then the tracer's crossing must be on the surface.
       if ((t < 0.0) != (expected < 0.0)) {
