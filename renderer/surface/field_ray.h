@@ -153,7 +153,11 @@ class FieldRay {
   mutable std::size_t first_unbegun_ = 0;
   mutable std::vector<std::uint32_t> rising_;  // proven_below_until()'s scratch
   // prepare_shape_rays()'s scratch for putting the spans in order.
-  std::vector<std::uint32_t> order_;
+  struct SpanKey {
+    double t0;
+    std::uint32_t rank, index;
+  };
+  std::vector<SpanKey> keys_;
   std::vector<RaySpan> sorted_spans_;
   std::vector<ShapeRay> sorted_rays_;
   // The length of the last step proven_below_until() proved: where the

@@ -9,43 +9,46 @@ namespace hsb {
 
 namespace {
 
-// r^p for r in [0, 1], p ≥ 2, or 0 where r^(p−1) < 2⁻⁶⁴. Such a term
-// leaves the sum with the larger term's 1 unchanged, and its part of the
-// gradient, r^(p−1) times the larger's, is below the larger's last bit; yet
-// pow would spend its time on it, twice over where it underflows, and sharp
-// glyphs raise most ratios to exponents in the tens or hundreds. log₂ r is
-// below both e + 1 (e its binary exponent) and (r − 1)/ln 2.
-double power_below_one(double r, double p) {
+// r^e for r in [0, 1], e ≥ 1, or 0 where r^e < 2⁻⁶⁴. Such a term leaves a
+// sum with a term of 1 unchanged, and its part of the gradient is below the
+// larger's last bit; yet pow would spend its time on it, twice over where
+// it underflows, and sharp glyphs raise most ratios to exponents in the
+// tens or hundreds. log₂ r is below both e₂ + 1 (e₂ its binary exponent)
+// and (r − 1)/ln 2.
+double power_below_one(double r, double e) {
   std::uint64_t bits;
   std::memcpy(&bits, &r, sizeof bits);
   const int exponent = int((bits >> 52) & 0x7ff) - 1023;
   const double log2_above = std::min(double(exponent + 1), (r - 1.0) * M_LOG2E);
-  if ((p - 1.0) * log2_above <= -64.0) return 0.0;
-  return std::pow(r, p);
+  if (e * log2_above <= -64.0) return 0.0;
+  return std::exp2(e * std::log2(r));
 }
 
-// ‖(x, y)‖_p for p ≥ 2 and its partial derivatives, each in [−1, 1]. The
-// terms are divided by the larger one first: |x|^p for p = 2·10⁶ would
-// overflow or vanish, (|x|/m)^p is 1 for the larger term and harmless for
-// the other.
+// ‖(x, y)‖_p for p ≥ 2 (its reciprocal given too) and its partial
+// derivatives, each in [−1, 1]. The terms are divided by the larger one
+// first: |x|^p for p = 2·10⁶ would overflow or vanish, (|x|/m)^p is 1 for
+// the larger term and harmless for the other.
 struct PNorm {
   double value = 0.0, dx = 0.0, dy = 0.0;
 };
-PNorm p_norm(double x, double y, double p) {
+PNorm p_norm(double x, double y, double p, double inv_p) {
   const double ax = std::fabs(x), ay = std::fabs(y), m = std::max(ax, ay);
   if (m == 0.0) return {};
   // pow takes most of a superquadric's time: the larger term's power is
-  // exactly 1, and the smaller's is skipped where it would underflow.
-  const double rx = ax / m, ry = ay / m;
-  const double px = ax == m ? 1.0 : power_below_one(rx, p), py = ax == m ? power_below_one(ry, p) : 1.0;
-  const double sum = px + py;  // in [1, 2]
-  const double root = std::pow(sum, 1.0 / p);
-  // ∂‖·‖/∂x = sign(x) (|x|/‖·‖)^{p−1} = sign(x) r_x^{p−1} · root / sum.
-  const double scale = root / sum;
+  // exactly 1, the smaller's is skipped where it would underflow, and each
+  // power comes with its derivative's, without dividing:
+  //   r^{p−1} = ∂‖·‖/∂(smaller) / (∂‖·‖/∂(larger)),
+  //   ‖·‖ = m · S^{1/p} and ∂‖·‖/∂(larger) = S^{1/p − 1}, S = 1 + r^p.
+  const double small = std::min(ax, ay), r = small / m;
+  const double slope_ratio = r > 0.0 ? power_below_one(r, p - 1.0) : 0.0;
+  const double sum = 1.0 + slope_ratio * r;  // in [1, 2]
+  const double d_large = slope_ratio > 0.0 ? std::exp2((inv_p - 1.0) * std::log2(sum)) : 1.0;
   PNorm n;
-  n.value = m * root;
-  n.dx = rx > 0.0 ? std::copysign(px / rx * scale, x) : 0.0;
-  n.dy = ry > 0.0 ? std::copysign(py / ry * scale, y) : 0.0;
+  n.value = m * (d_large * sum);
+  const double d_small = slope_ratio * d_large;
+  const bool x_large = ax == m;
+  n.dx = std::copysign(x_large ? d_large : d_small, x);
+  n.dy = std::copysign(x_large ? d_small : d_large, y);
   return n;
 }
 
@@ -53,8 +56,9 @@ PNorm p_norm(double x, double y, double p) {
 // the signed glyph's points where it has them.
 double superquadric_gauge(const ShapeParams& s, const Vec3& q, Vec3* gradient) {
   const int z = s.axis, a = (z + 1) % 3, b = (z + 2) % 3;
-  const PNorm equator = p_norm(q[a], q[b], 2.0 / double(s.alpha));
-  const PNorm whole = p_norm(equator.value, q[z], 2.0 / double(s.beta));
+  const double alpha = s.alpha, beta = s.beta;
+  const PNorm equator = p_norm(q[a], q[b], 2.0 / alpha, 0.5 * alpha);
+  const PNorm whole = p_norm(equator.value, q[z], 2.0 / beta, 0.5 * beta);
   if (gradient) {
     (*gradient)[a] = whole.dx * equator.dx;
     (*gradient)[b] = whole.dx * equator.dy;
@@ -64,7 +68,7 @@ double superquadric_gauge(const ShapeParams& s, const Vec3& q, Vec3* gradient) {
   for (int k = 0; k < 3; ++k) {
     if (!(s.pointed & (1u << k))) continue;
     const int i = (k + 1) % 3, j = (k + 2) % 3;
-    const double across = std::hypot(q[i], q[j]);
+    const double across = std::sqrt(q[i] * q[i] + q[j] * q[j]);  // q is O(1): no overflow to guard
     const double cone = across / kConeBase + std::fabs(q[k]);
     if (cone <= n) continue;
     n = cone;
@@ -86,7 +90,7 @@ double superquadric_gauge(const ShapeParams& s, const Vec3& q, Vec3* gradient) {
 // float precision.
 double superquadric_bound_scale(double alpha, double beta) {
   const double p = 2.0 / alpha, r = 2.0 / beta, c = std::pow(2.0, 1.0 / p - 0.5);
-  const auto gauge = [&](double theta) { return p_norm(c * std::cos(theta), std::sin(theta), r).value; };
+  const auto gauge = [&](double theta) { return p_norm(c * std::cos(theta), std::sin(theta), r, 0.5 * beta).value; };
   constexpr int kSamples = 64;
   const double step = 0.5 * M_PI / kSamples;
   int best = 0;

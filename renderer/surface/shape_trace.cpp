@@ -48,16 +48,17 @@ void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, co
   // In the order the ray enters them, ties in spatial rank order: every
   // sum over the spans is then the same to the bit whatever order the BVH
   // handed them over in, and a sum up to some t stops at the first span
-  // that starts beyond it. The order is sorted, then both lists gathered.
-  order_.resize(kept);
-  for (std::size_t i = 0; i < kept; ++i) order_[i] = std::uint32_t(i);
-  std::sort(order_.begin(), order_.end(), [&](std::uint32_t i, std::uint32_t j) {
-    const RaySpan &a = spans[i], &b = spans[j];
-    return a.t0 < b.t0 || (a.t0 == b.t0 && a.rank < b.rank);
-  });
+  // that starts beyond it. The keys are sorted, then both lists gathered.
+  keys_.resize(kept);
+  for (std::size_t i = 0; i < kept; ++i) keys_[i] = {spans[i].t0, spans[i].rank, std::uint32_t(i)};
+  std::sort(keys_.begin(), keys_.end(),
+            [](const SpanKey& a, const SpanKey& b) { return a.t0 < b.t0 || (a.t0 == b.t0 && a.rank < b.rank); });
   sorted_spans_.resize(kept);
   sorted_rays_.resize(kept);
-  for (std::size_t i = 0; i < kept; ++i) sorted_spans_[i] = spans[order_[i]], sorted_rays_[i] = shape_rays_[order_[i]];
+  for (std::size_t i = 0; i < kept; ++i) {
+    sorted_spans_[i] = spans[keys_[i].index];
+    sorted_rays_[i] = shape_rays_[keys_[i].index];
+  }
   spans.swap(sorted_spans_);
   shape_rays_.swap(sorted_rays_);
   u_.assign(kept, 1.0);
