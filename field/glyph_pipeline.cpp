@@ -278,9 +278,7 @@ ColorScalar resolve_color(const GlyphPipelineSpec& spec, const LoadedField& load
   // Glyphs not on lines (or on one family's) show the first family's.
   if (c == ColorScalar::family_eigenvalue && !several) c = family_eigenvalue(families.front());
   const std::string& file = spec.data.file.path;
-  const bool eigen = c == ColorScalar::lambda1 || c == ColorScalar::lambda2 || c == ColorScalar::lambda3 ||
-                     c == ColorScalar::mean || c == ColorScalar::von_mises || c == ColorScalar::family_eigenvalue;
-  if (flow && eigen)
+  if (flow && needs_tensors(c))
     throw DataError(file + ": glyphs.color_by = \"" + color_scalar_name(c) +
                     "\" needs tensors, and this file is read as a flow (vectors): colour by \"speed\" or "
                     "\"array:NAME\"");

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "field/tensor/tensor_measures.h"
+
 namespace hsb {
 
 namespace {
@@ -45,6 +47,12 @@ const char* color_scalar_name(ColorScalar c) {
     case ColorScalar::mean: return "mean";
     case ColorScalar::von_mises: return "von_mises";
     case ColorScalar::family_eigenvalue: return "family_eigenvalue";
+    case ColorScalar::fa: return "fa";
+    case ColorScalar::trace: return "trace";
+    case ColorScalar::westin_linear: return "cl";
+    case ColorScalar::westin_planar: return "cp";
+    case ColorScalar::westin_spherical: return "cs";
+    case ColorScalar::mode: return "mode";
     case ColorScalar::speed: return "speed";
     case ColorScalar::array: return "array";
     case ColorScalar::arc_length: return "arc_length";
@@ -57,9 +65,38 @@ const std::vector<ColorScalar>& named_color_scalars() {
   static const std::vector<ColorScalar> named{ColorScalar::lambda1,   ColorScalar::lambda2,
                                               ColorScalar::lambda3,   ColorScalar::mean,
                                               ColorScalar::von_mises, ColorScalar::family_eigenvalue,
+                                              ColorScalar::fa,        ColorScalar::trace,
+                                              ColorScalar::westin_linear, ColorScalar::westin_planar,
+                                              ColorScalar::westin_spherical, ColorScalar::mode,
                                               ColorScalar::speed,     ColorScalar::arc_length,
                                               ColorScalar::none};
   return named;
+}
+
+bool needs_tensors(ColorScalar which) {
+  switch (which) {
+    case ColorScalar::speed:
+    case ColorScalar::array:
+    case ColorScalar::arc_length:
+    case ColorScalar::none:
+      return false;
+    default:
+      return true;
+  }
+}
+
+std::optional<std::array<double, 2>> natural_range(ColorScalar which) {
+  switch (which) {
+    case ColorScalar::fa:
+    case ColorScalar::westin_linear:
+    case ColorScalar::westin_planar:
+    case ColorScalar::westin_spherical:
+      return std::array<double, 2>{0.0, 1.0};
+    case ColorScalar::mode:
+      return std::array<double, 2>{-1.0, 1.0};
+    default:
+      return std::nullopt;
+  }
 }
 
 double color_scalar(const Vec3& eigenvalues, ColorScalar which) {
@@ -77,6 +114,18 @@ double color_scalar(const Vec3& eigenvalues, ColorScalar which) {
       // Invariant under rotation, so principal stresses suffice.
       return std::sqrt(0.5 * ((l1 - l2) * (l1 - l2) + (l2 - l3) * (l2 - l3) +
                               (l3 - l1) * (l3 - l1)));
+    case ColorScalar::fa:
+      return fractional_anisotropy(eigenvalues);
+    case ColorScalar::trace:
+      return l1 + l2 + l3;
+    case ColorScalar::westin_linear:
+      return westin_measures(eigenvalues).linear;
+    case ColorScalar::westin_planar:
+      return westin_measures(eigenvalues).planar;
+    case ColorScalar::westin_spherical:
+      return westin_measures(eigenvalues).spherical;
+    case ColorScalar::mode:
+      return tensor_mode(eigenvalues);
     case ColorScalar::speed:
     case ColorScalar::family_eigenvalue:  // resolved per line by the pipeline; λ1 for a lone source
       return l1;

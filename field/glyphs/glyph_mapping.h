@@ -1,7 +1,9 @@
 #pragma once
 // How eigenvalues become glyph radii and a colour scalar (paper §5).
 
+#include <array>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "field/tensor/eigensystem.h"
@@ -33,7 +35,13 @@ struct GlyphMapping {
 // minor ones), for several families in one picture.
 // none: one neutral colour for every glyph, and no colour bar (a picture
 // whose shapes carry the meaning, or one printed in grey).
-enum class ColorScalar { lambda1, lambda2, lambda3, mean, von_mises, family_eigenvalue, speed, array, arc_length, none };
+// The tensor measures (tensor_measures.h): fa, trace, westin_linear,
+// westin_planar, westin_spherical, mode.
+enum class ColorScalar {
+  lambda1, lambda2, lambda3, mean, von_mises, family_eigenvalue,
+  fa, trace, westin_linear, westin_planar, westin_spherical, mode,
+  speed, array, arc_length, none
+};
 
 // Radii r_1, r_2, r_3 for eigenvalues λ1 ≥ λ2 ≥ λ3.
 Vec3 map_radii(const Vec3& eigenvalues, const GlyphMapping& mapping);
@@ -45,6 +53,14 @@ const char* color_scalar_name(ColorScalar which);
 // The colour scalars a scene names by color_scalar_name() (every one but
 // `array`), in the order the scene keys list them.
 const std::vector<ColorScalar>& named_color_scalars();
+
+// Whether `which` follows from a tensor's eigenvalues (a flow has none).
+bool needs_tensors(ColorScalar which);
+
+// The range a bounded measure always spans, [0, 1] for FA and Westin's,
+// [−1, 1] for the mode; none for the rest. Its colour bar spans it whatever
+// the data holds, so that pictures of different data compare.
+std::optional<std::array<double, 2>> natural_range(ColorScalar which);
 
 // The scalars that follow from the eigenvalues (a flow source's are its
 // speed three times); 0 for array and arc_length, which the caller sets.

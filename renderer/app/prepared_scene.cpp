@@ -63,6 +63,12 @@ std::string scalar_title(ColorScalar scalar, const SceneSpec& spec) {
     case ColorScalar::lambda3: return "minor eigenvalue λ₃";
     case ColorScalar::mean: return "mean eigenvalue (λ₁ + λ₂ + λ₃)/3";
     case ColorScalar::von_mises: return "von Mises stress";
+    case ColorScalar::fa: return "fractional anisotropy FA";
+    case ColorScalar::trace: return "trace λ₁ + λ₂ + λ₃";
+    case ColorScalar::westin_linear: return "linear anisotropy cₗ";
+    case ColorScalar::westin_planar: return "planar anisotropy cₚ";
+    case ColorScalar::westin_spherical: return "isotropy cₛ";
+    case ColorScalar::mode: return "mode: −1 planar, +1 linear";
     case ColorScalar::speed: return "speed |v|";
     case ColorScalar::array:
       return spec.pipeline.placement == SourcePlacement::list ? "scalar" : spec.pipeline.data.file.color_array;
@@ -90,13 +96,17 @@ ColorScale color_scale(const SceneSpec& scene, ColorScalar scalar, const std::ve
   std::vector<double> values;
   values.reserve(sources.size());
   for (const GlyphSource& s : sources) values.push_back(s.scalar);
-  const Colormap* automatic = &colormap_for(spec.map, values, spec.log);
+  // A bounded measure spans its whole range, and picks its colormap by it.
+  const std::optional<std::array<double, 2>> natural = spec.log ? std::nullopt : natural_range(scalar);
+  const Colormap* automatic =
+      &colormap_for(spec.map, natural ? std::vector<double>(natural->begin(), natural->end()) : values, spec.log);
   if (!spec.map && automatic->diverging && scene.pipeline.data.sign == SignConvention::compression_positive &&
       carries_stress_sign(scalar))
     automatic = &colormap_named(automatic->name + "_r");
   const Colormap& map = *automatic;
-  if (!spec.range) return auto_scale(map, values, spec.symmetric.value_or(map.diverging), spec.log);
-  ColorScale scale{&map, (*spec.range)[0], (*spec.range)[1], spec.log};
+  if (!spec.range && !natural) return auto_scale(map, values, spec.symmetric.value_or(map.diverging), spec.log);
+  const std::array<double, 2> range = spec.range ? *spec.range : *natural;
+  ColorScale scale{&map, range[0], range[1], spec.log};
   record_extremes(scale, values);
   return scale;
 }

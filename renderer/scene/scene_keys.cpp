@@ -221,9 +221,9 @@ std::vector<KeySchema> build_keys() {
 
       // [color]
       Key("color.map", T::choice, "the colormap").choices(colormap_names())
-          .automatic("\"coolwarm\" when the values have both signs, else \"viridis\""),
+          .automatic("\"coolwarm\" when the values have both signs (and for the mode), else \"viridis\""),
       Key("color.range", T::numbers, "[low, high] of the colour scalar").count(2)
-          .automatic("the values' extremes, outliers beyond a fence past the 2nd/98th percentile clipped"),
+          .automatic("the values' extremes, outliers beyond a fence past the 2nd/98th percentile clipped; [0, 1] for fa, cl, cp and cs, [-1, 1] for the mode"),
       Key("color.symmetric", T::boolean, "an automatic range symmetric about zero").derived("true for a diverging map"),
       Key("color.scale", T::choice, "colour by the scalar or its logarithm").choices({"linear", "log"}).fallback("\"linear\""),
 

@@ -38,7 +38,7 @@ struct ColorSpec {
   // Automatic: "coolwarm" for values of both signs (tension and
   // compression), centred on zero; "viridis" for one-signed values.
   std::optional<std::string> map;
-  std::optional<std::array<double, 2>> range;  // automatic: from the sources
+  std::optional<std::array<double, 2>> range;  // automatic: from the sources, or a bounded measure's own
   std::optional<bool> symmetric;               // automatic: for a diverging map
   bool log = false;                            // by the logarithm of the scalar
 };

@@ -1,5 +1,7 @@
 #include "renderer/surface/glyph_shape.h"
 
+#include "field/tensor/tensor_measures.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
@@ -188,11 +190,10 @@ ShapeParams signed_params(const Vec3& radii, const Vec3& eigenvalues, double sha
 ShapeParams superquadric_params(const Vec3& radii, double sharpness) {
   std::array<int, 3> order{0, 1, 2};  // radii from largest to smallest
   std::sort(order.begin(), order.end(), [&](int i, int j) { return radii[i] > radii[j]; });
-  const double r1 = radii[order[0]], r2 = radii[order[1]], r3 = radii[order[2]];
-  const double sum = r1 + r2 + r3;
   ShapeParams s;
-  if (!(sum > 0.0)) return s;
-  const double cl = std::min(0.99, (r1 - r2) / sum), cp = std::min(0.99, 2.0 * (r2 - r3) / sum);
+  if (!(radii.sum() > 0.0)) return s;
+  const WestinMeasures w = westin_measures(radii);
+  const double cl = std::min(0.99, w.linear), cp = std::min(0.99, w.planar);
   const double linear = std::pow(1.0 - cl, sharpness), planar = std::pow(1.0 - cp, sharpness);
   if (cl > cp) {
     s.axis = std::uint8_t(order[0]);

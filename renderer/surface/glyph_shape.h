@@ -109,7 +109,7 @@ double shape_entry(GlyphShape shape, const ShapeParams& params, const Vec3& q0, 
 bool clip_to_shape_box(const ShapeParams& params, const Vec3& q0, const Vec3& v, double& t0, double& t1);
 
 // Kindlmann's superquadric for a glyph of radii r (in W's row order):
-// Westin's measures of the radii sorted by size, c_l = (ρ1 − ρ2)/Σρ and
+// Westin's measures of the radii sorted by size (westin_measures), c_l = (ρ1 − ρ2)/Σρ and
 // c_p = 2(ρ2 − ρ3)/Σρ, each at most 0.99; a linear glyph (c_l > c_p) is
 // round about its longest axis with α = (1 − c_p)^γ, β = (1 − c_l)^γ, a
 // planar one about its shortest with α = (1 − c_l)^γ, β = (1 − c_p)^γ.

@@ -150,6 +150,39 @@ TEST_F(FigureOutput, TheBarsEndsAreNamedByTheSignConvention) {
 // Signed glyphs: the key of sample glyphs sits beside the colour bar,
 // drawn in a PDF as vector shapes and text; output.shape_key = false
 // leaves it out, and asking for it with a shape that has none is an error.
+// A bounded measure's bar spans its whole range whatever the data holds,
+// so that two pictures compare; a range the scene gives still wins.
+TEST_F(FigureOutput, ABoundedMeasureKeepsItsWholeRangeOnTheBar) {
+  const ColorManagement color("", "");
+  const std::string path = scene(kPlate);
+  struct Case {
+    const char* name;
+    double lo, hi;
+    const char* map;
+  };
+  for (const Case& c : {Case{"fa", 0.0, 1.0, "viridis"}, Case{"cl", 0.0, 1.0, "viridis"},
+                        Case{"mode", -1.0, 1.0, "coolwarm"}}) {
+    SCOPED_TRACE(c.name);
+    const std::unique_ptr<PreparedScene> p =
+        prepare_scene(load_scene(path, {std::string("glyphs.color_by=") + c.name}), color);
+    EXPECT_EQ(p->scale.lo, c.lo);
+    EXPECT_EQ(p->scale.hi, c.hi);
+    EXPECT_EQ(p->scale.map->name, c.map);
+    // The plate's values fill only part of it, and are each glyph's own.
+    EXPECT_GE(p->scale.data_lo, c.lo);
+    EXPECT_LE(p->scale.data_hi, c.hi);
+    EXPECT_LT(p->scale.data_hi - p->scale.data_lo, c.hi - c.lo);
+    for (const GlyphSource& g : p->glyphs.sources)
+      ASSERT_EQ(g.scalar, color_scalar(g.eigenvalues, p->glyphs.color));
+    ASSERT_TRUE(p->output.legend);
+    EXPECT_TRUE(p->output.legend->high_word.empty());  // not a stress: no tension or compression
+  }
+  const std::unique_ptr<PreparedScene> given =
+      prepare_scene(load_scene(path, {"glyphs.color_by=fa", "color.range=[0.2, 0.6]"}), color);
+  EXPECT_EQ(given->scale.lo, 0.2);
+  EXPECT_EQ(given->scale.hi, 0.6);
+}
+
 TEST_F(FigureOutput, SignedGlyphsGetAShapeKeyBesideTheBar) {
   const ColorManagement color("", "");
   const std::string path = scene(std::string(kPlate) + "[output]\nfile = \"x.pdf\"\n");
