@@ -127,6 +127,7 @@ GlyphValues resolve_lengths(const GlyphPipelineSpec& spec, const Box3& domain, c
   t.min_magnitude = spec.trajectory.min_magnitude.value_or(loaded.vectors ? 1e-3 * loaded.max_speed : 0.0);
   t.max_steps = spec.trajectory.max_steps;
   t.direction = spec.trajectory.direction;
+  t.max_turn = spec.trajectory.max_turn.value_or(180.0);
   t.signed_directions = loaded.vectors != nullptr;
   v.spacing = spec.spacing.value_or(automatic_spacing(domain, spec.size.mapping, separation));
   if (spec.placement == SourcePlacement::along_trajectories)
@@ -172,6 +173,8 @@ const char* stop_name(StopReason r) {
     case StopReason::max_steps: return "trajectories.max_steps";
     case StopReason::closed: return "its own start (a closed curve)";
     case StopReason::too_close: return "another trajectory (seeds.separation)";
+    case StopReason::left_region: return "the region's edge (region.above)";
+    case StopReason::sharp_turn: return "a turn sharper than trajectories.max_turn";
   }
   return "?";
 }
@@ -237,7 +240,7 @@ void warn_about_the_result(GlyphScene& scene, std::size_t seeds) {
     return;
   }
   // Say where they stopped: the most common reason is the one to act on.
-  std::array<int, 7> reasons{};
+  std::array<int, kStopReasons> reasons{};
   for (const Trajectory& t : scene.trajectories) {
     ++reasons[std::size_t(t.backward_stop)];
     ++reasons[std::size_t(t.forward_stop)];
@@ -305,8 +308,9 @@ SourcePlacement resolved_placement(const GlyphPipelineSpec& spec, const LoadedFi
 
 // A glyph at every stride-th site, from the value there (a tensor glyph or
 // a streamball), coloured by the chosen scalar or the colour array there.
-// Sites without a finite value (or colour) get none.
-std::vector<GlyphSource> sources_at_sites(const DataSites& sites, std::size_t stride, ColorScalar color) {
+// Sites without a finite value (or colour), or outside the region, get none.
+std::vector<GlyphSource> sources_at_sites(const DataSites& sites, std::size_t stride, ColorScalar color,
+                                          const RegionSpec& region) {
   std::vector<GlyphSource> sources;
   const bool flow = !sites.vectors.empty();
   for (std::size_t i = 0; i < sites.positions.size(); i += stride) {
@@ -317,6 +321,7 @@ std::vector<GlyphSource> sources_at_sites(const DataSites& sites, std::size_t st
     } else {
       if (i >= sites.tensors.size() || !sites.tensors[i].is_finite()) continue;
       source = make_source(sites.positions[i], sites.tensors[i], color);
+      if (!region.holds(source.eigenvalues)) continue;
     }
     if (color == ColorScalar::array) {
       if (i >= sites.colors.size() || !std::isfinite(sites.colors[i])) continue;
@@ -520,6 +525,10 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   scene.plane_axis = loaded.plane_axis;
   scene.warnings = std::move(loaded.warnings);
   scene.placement = resolved_placement(spec, loaded, scene.warnings);
+  const RegionSpec region = spec.region;
+  if (flow && region.above)
+    throw DataError(data.file.path + ": region.above keeps to where a measure of the tensor is large, and this "
+                    "file is read as a flow (vectors)");
   // Evenly spaced seeding measures the body first: its separation sets
   // the step, the spacing and the glyph size.
   const bool even = scene.placement != SourcePlacement::at_data_points &&
@@ -530,7 +539,11 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
       return v ? std::optional<double>(v->norm()) : std::nullopt;
     }
     const std::optional<Sym3> t = tensors->sample(x);
-    return t ? std::optional<double>(decompose(*t).values.cwiseAbs().maxCoeff()) : std::nullopt;
+    if (!t) return std::nullopt;
+    const Vec3 l = decompose(*t).values;
+    // Outside the region is outside the body: seeds, separation and
+    // the lines' density follow the region alone.
+    return region.holds(l) ? std::optional<double>(l.cwiseAbs().maxCoeff()) : std::nullopt;
   };
   BodyLattice body;
   std::optional<double> separation;
@@ -549,6 +562,11 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
     families = automatic_families(body_eigenvalues);
   scene.color = resolve_color(spec, loaded, families, scene.placement);
   scene.values = resolve_lengths(spec, scene.domain, loaded, separation, families);
+  scene.values.region = region;
+  if (region.above) {
+    scene.values.trajectory.measure = [measure = region.measure](const Vec3& l) { return color_scalar(l, measure); };
+    scene.values.trajectory.min_measure = *region.above;
+  }
   if (data.kind == DataKind::point_load) scene.values.singular_radius = data.point_load.singular_radius;
   const GlyphValues& values = scene.values;
   std::vector<Vec3> seeds;
@@ -559,6 +577,10 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   } else if (scene.placement != SourcePlacement::at_data_points) {
     check_seed_and_trajectory_memory(values, scene.placement);
     seeds = all_seeds(values.seeds, scene.domain);
+    // A seed outside the region has no line to start; nor a glyph.
+    if (region.above)
+      seeds.erase(std::remove_if(seeds.begin(), seeds.end(), [&](const Vec3& x) { return !magnitude(x); }),
+                  seeds.end());
   }
 
   // The source at a point of a line of `family`: a tensor glyph or a
@@ -596,7 +618,7 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
     what << "the glyphs (one at each of " << shown << " data points, glyphs.stride " << scene.values.stride << ")";
     scene.memory_estimate = resident_bytes() + double(shown) * kBytesPerSource;
     check_memory(scene.memory_estimate, what.str(), "raise glyphs.stride");
-    scene.sources = sources_at_sites(loaded.sites, std::size_t(scene.values.stride), color);
+    scene.sources = sources_at_sites(loaded.sites, std::size_t(scene.values.stride), color, region);
     gap = site_gap(scene.domain, shown);
   } else if (scene.placement == SourcePlacement::at_seeds) {
     scene.trajectories.clear();  // even seeding's lines only chose the seeds

@@ -81,6 +81,17 @@ struct SeedSpec {
   }
 };
 
+// The part of the data the picture keeps to, where the structure is
+// (a diffusion volume's fibres, FA > 0.3): seeds are taken, lines run and
+// glyphs at data points stand only where `measure` (a colour scalar of the
+// tensor, glyph_mapping.h) is at least `above`. None: everywhere.
+struct RegionSpec {
+  ColorScalar measure = ColorScalar::fa;
+  std::optional<double> above;
+
+  bool holds(const Vec3& eigenvalues) const { return !above || color_scalar(eigenvalues, measure) >= *above; }
+};
+
 // The scene's [trajectories]; what it leaves out is automatic.
 struct TrajectorySpec {
   // The families traced, each with lines of its own. Automatic (empty):
@@ -94,6 +105,7 @@ struct TrajectorySpec {
   std::optional<double> min_magnitude;
   int max_steps = 100000;
   TraceDirection direction = TraceDirection::both;
+  std::optional<double> max_turn;  // degrees per step; automatic: no limit
 };
 
 // How eigenvalues become radii; scale, floor and ceiling left out are
@@ -115,6 +127,7 @@ enum class SourcePlacement {
 
 struct GlyphPipelineSpec {
   DataSpec data;
+  RegionSpec region;
   SeedSpec seeds;
   TrajectorySpec trajectory;
   SourcePlacement placement = SourcePlacement::along_trajectories;
@@ -143,6 +156,7 @@ struct GlyphPipelineSpec {
 // Every field-side value the pipeline used, automatic ones resolved.
 struct GlyphValues {
   std::optional<double> singular_radius;  // the point load's; none for files
+  RegionSpec region;
   // Resolved: the strategy is set; for even seeding, the separation, the
   // importance and the seeds taken (as points, in the frame given), so
   // they can be shown and pinned.

@@ -6,14 +6,19 @@
 #include <vtkDataObject.h>
 #include <vtkDataSet.h>
 #include <vtkDoubleArray.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
 #include <vtkSmartPointer.h>
+#include <vtkXMLImageDataWriter.h>
 
+#include <array>
 #include <filesystem>
 #include <functional>
 #include <limits>
 #include <optional>
 #include <string>
 
+#include "base/box3.h"
 #include "base/vec3.h"
 #include "field/tensor/sym3.h"
 
@@ -48,6 +53,21 @@ inline vtkSmartPointer<vtkDoubleArray> tensors_at_points(
     a->SetTuple(i, v);
   }
   return a;
+}
+
+// A grid of `n` points over `box` holding `tensor` as an array named
+// `name` (NaN where it gives none: outside the body), written as a .vti the
+// way VTK writes it; returns `path`.
+inline std::string grid_written(const std::filesystem::path& path, const Box3& box, const std::array<int, 3>& n,
+                                const std::function<std::optional<Sym3>(const Vec3&)>& tensor,
+                                const std::string& name = "stress") {
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(n[0], n[1], n[2]);
+  image->SetOrigin(box.lo.x(), box.lo.y(), box.lo.z());
+  const Vec3 size = box.size();
+  image->SetSpacing(size.x() / (n[0] - 1), size.y() / (n[1] - 1), size.z() / (n[2] - 1));
+  image->GetPointData()->AddArray(tensors_at_points(image, name, tensor));
+  return written_by<vtkXMLImageDataWriter>(image, path);
 }
 
 }  // namespace hsb

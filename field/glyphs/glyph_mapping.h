@@ -56,6 +56,11 @@ const std::vector<ColorScalar>& named_color_scalars();
 
 // Whether `which` follows from a tensor's eigenvalues (a flow has none).
 bool needs_tensors(ColorScalar which);
+// Whether `which` is one value of the tensor wherever it is sampled, as a
+// region's measure must be (family_eigenvalue depends on the line).
+inline bool is_tensor_measure(ColorScalar which) {
+  return needs_tensors(which) && which != ColorScalar::family_eigenvalue;
+}
 
 // The range a bounded measure always spans, [0, 1] for FA and Westin's,
 // [−1, 1] for the mode; none for the rest. Its colour bar spans it whatever

@@ -44,6 +44,10 @@ DirectionSample eigen_direction(const TensorField& field, const Vec3& x,
   const Eigensystem es = decompose(*s);
   const int k = static_cast<int>(options.family);
   const Vec3& l = es.values;
+  if (options.measure && !(options.measure(l) >= options.min_measure)) {
+    result.stop = StopReason::left_region;
+    return result;
+  }
   result.magnitude = options.family_magnitude ? std::fabs(l(k)) : l.cwiseAbs().maxCoeff();
   if (options.family_magnitude && std::fabs(l(k)) < options.min_family_value) {
     result.stop = StopReason::low_magnitude;
@@ -80,6 +84,10 @@ namespace {
 // step·1e-6 of the domain boundary.
 constexpr int kMaxHalvings = 20;
 
+// Where a line ends on an edge (the domain's, or its region's) it creeps
+// up to it by halving the step; elsewhere it ends at once.
+bool is_edge(StopReason stop) { return stop == StopReason::boundary || stop == StopReason::left_region; }
+
 struct HalfTrajectory {
   std::vector<Vec3> points;  // excluding the seed
   StopReason stop = StopReason::max_length;
@@ -101,6 +109,7 @@ HalfTrajectory trace_half(const DirectionSampler& sampler, const Vec3& seed,
   };
   HalfTrajectory half;
   const double min_step = options.step * std::ldexp(1.0, -kMaxHalvings);
+  const double max_turn_cos = options.max_turn >= 180.0 ? -2.0 : std::cos(options.max_turn * M_PI / 180.0);
   Vec3 x = seed;
   DirectionSample at_x = first;  // always ok: the k1 of the next step
   double h = options.step;
@@ -152,29 +161,33 @@ HalfTrajectory trace_half(const DirectionSampler& sampler, const Vec3& seed,
     if (ok) {
       x_new = x + (step / 6.0) * (k1 + 2.0 * ks[0] + 2.0 * ks[1] + ks[2]);
       at_new = sampler(x_new);
-      if (!at_new.ok && at_new.stop == StopReason::boundary) {
+      if (!at_new.ok && is_edge(at_new.stop)) {
         failed = at_new;
         ok = false;
       }
     }
 
     if (!ok) {
-      if (failed.stop != StopReason::boundary) {
+      if (!is_edge(failed.stop)) {
         // A degenerate or weak region: the direction is meaningless from
         // here on, and shortening the step would not make it meaningful.
         half.stop = failed.stop;
         return half;
       }
-      // Creep up on the boundary instead of stopping a whole step short.
+      // Creep up on the edge instead of stopping a whole step short.
       h = 0.5 * step;
       if (h < min_step) {
-        half.stop = StopReason::boundary;
+        half.stop = failed.stop;
         return half;
       }
       continue;
     }
 
     const Vec3 delta = x_new - x;
+    if (delta.norm() > 0.0 && delta.normalized().dot(travel) < max_turn_cos) {
+      half.stop = StopReason::sharp_turn;
+      return half;
+    }
     if (delta.norm() > 0.0) travel = delta.normalized();
     x = x_new;
     half.points.push_back(x);

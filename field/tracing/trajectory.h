@@ -17,8 +17,13 @@ enum class EigenFamily { major = 0, medium = 1, minor = 2 };
 
 // Why one end of a trajectory stopped.
 // too_close: evenly spaced seeding stopped it beside another trajectory
-// (or its own earlier part).
-enum class StopReason { boundary, max_length, degenerate, low_magnitude, max_steps, closed, too_close };
+// (or its own earlier part). left_region: the measure the options keep
+// above a floor fell below it (a fibre's edge, FA < 0.3). sharp_turn: the
+// next step would have turned more than max_turn.
+enum class StopReason {
+  boundary, max_length, degenerate, low_magnitude, max_steps, closed, too_close, left_region, sharp_turn
+};
+constexpr std::size_t kStopReasons = 9;
 
 // Which way from the seed a curve is traced.
 enum class TraceDirection { both, forward, backward };
@@ -41,6 +46,16 @@ struct TrajectoryOptions {
   // below this (a tension line ends where the tension fades; 0: never).
   bool family_magnitude = false;
   double min_family_value = 0.0;
+  // The region lines stay in (a diffusion fibre's FA > 0.3): a measure of
+  // the eigenvalues that must stay at or above `min_measure` (none:
+  // anywhere). The line creeps up to where it falls below, as to the
+  // domain's boundary, and stops there.
+  std::function<double(const Vec3& eigenvalues)> measure;
+  double min_measure = 0.0;
+  // The sharpest turn, in degrees, between one step and the next (a line
+  // that would jump from one fibre bundle to another where they cross);
+  // 180: no limit.
+  double max_turn = 180.0;
 };
 
 struct Trajectory {
@@ -72,7 +87,8 @@ using DirectionSampler = std::function<DirectionSample(const Vec3&)>;
 bool eigenvector_defined(const Vec3& l, EigenFamily family, double tolerance);
 
 // The eigenvector of `options.family` at `x`: stops at the domain boundary,
-// at degenerate eigenvalues and below the magnitude threshold.
+// at degenerate eigenvalues, below the magnitude threshold and outside the
+// options' region.
 DirectionSample eigen_direction(const TensorField& field, const Vec3& x,
                                 const TrajectoryOptions& options);
 

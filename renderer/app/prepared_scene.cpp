@@ -227,6 +227,8 @@ void record_field_values(PreparedScene& p) {
   p.resolve("trajectories.step", v.trajectory.step);
   p.resolve("trajectories.max_length", v.trajectory.max_length);
   p.resolve("trajectories.min_magnitude", v.trajectory.min_magnitude);
+  p.resolve("trajectories.max_turn", v.trajectory.max_turn);
+  if (v.region.above) p.resolve("region.above", *v.region.above);
   if (p.glyphs.placement == SourcePlacement::at_data_points) {
     p.resolve("glyphs.placement", "points");  // data without volume takes it whatever the scene says
     p.resolve("glyphs.stride", v.stride);

@@ -138,6 +138,15 @@ void read_seeds(TableReader& seeds, SeedSpec& spec) {
   seeds.finish();
 }
 
+void read_region(TableReader& r, RegionSpec& spec) {
+  std::vector<std::pair<std::string, ColorScalar>> names;
+  for (ColorScalar c : named_color_scalars())
+    if (is_tensor_measure(c)) names.emplace_back(color_scalar_name(c), c);
+  spec.measure = r.choice("measure", names);
+  spec.above = r.optional_number("above");
+  r.finish();
+}
+
 void read_trajectories(TableReader& t, TrajectorySpec& spec) {
   if (t.has("family"))
     spec.families = t.choice<std::vector<EigenFamily>>(
@@ -150,6 +159,7 @@ void read_trajectories(TableReader& t, TrajectorySpec& spec) {
   spec.max_steps = t.integer("max_steps");
   spec.direction = t.choice<TraceDirection>("direction", {{"both", TraceDirection::both}, {"forward", TraceDirection::forward},
                                           {"backward", TraceDirection::backward}});
+  spec.max_turn = t.optional_number("max_turn");
   t.finish();
 }
 
@@ -465,17 +475,19 @@ SceneSpec load_scene_text(const std::string& text, const std::string& path, cons
   const toml::table root = scene_table(spec);
   TableReader top(root, "", path);
   // Every table is read, present or not, so every key takes the schema's default.
-  TableReader data = top.table("data"), seeds = top.table("seeds"), trajectories = top.table("trajectories"),
-              glyphs = top.table("glyphs");
+  TableReader data = top.table("data"), region = top.table("region"), seeds = top.table("seeds"),
+              trajectories = top.table("trajectories"), glyphs = top.table("glyphs");
   read_glyphs(glyphs, spec.pipeline, spec.surface, base_dir);
   if (spec.pipeline.placement == SourcePlacement::curve || spec.pipeline.placement == SourcePlacement::list) {
     // The sources come from the scene: no data set to read.
     if (top.has("data")) top.fail_at("data", "is not read with glyphs.placement = \"curve\" or \"list\"");
     if (top.has("seeds")) top.fail_at("seeds", "has no use with glyphs.placement = \"curve\" or \"list\"");
+    if (top.has("region")) top.fail_at("region", "has no use with glyphs.placement = \"curve\" or \"list\"");
     spec.pipeline.data.kind = DataKind::none;
   } else {
     read_data(data, spec.pipeline.data, base_dir);
     read_seeds(seeds, spec.pipeline.seeds);
+    read_region(region, spec.pipeline.region);
   }
   read_trajectories(trajectories, spec.pipeline.trajectory);
   if (spec.pipeline.data.kind == DataKind::point_load && spec.pipeline.color == ColorScalar::array)

@@ -97,6 +97,14 @@ std::vector<std::string> color_by_choices() {
   return names;
 }
 
+// The colour scalars of a tensor that a region can keep to.
+std::vector<std::string> measure_choices() {
+  std::vector<std::string> names;
+  for (ColorScalar c : named_color_scalars())
+    if (is_tensor_measure(c)) names.emplace_back(color_scalar_name(c));
+  return names;
+}
+
 std::vector<std::string> layer_choices() {
   std::vector<std::string> names;
   for (Plane p : {Plane::depth, Plane::normal, Plane::scalar, Plane::id}) names.emplace_back(plane_info(p).name);
@@ -141,6 +149,12 @@ std::vector<KeySchema> build_keys() {
       Key("data.cell_tensors", T::choice, "cell data constant per cell, or averaged onto the points")
           .choices({"constant", "averaged"}).fallback("\"constant\""),
 
+      // [region]
+      Key("region.measure", T::choice, "the measure of the tensor the region keeps to").choices(measure_choices())
+          .fallback("\"fa\""),
+      Key("region.above", T::number, "seeds, lines and glyphs at data points only where the measure is at least this")
+          .none("everywhere"),
+
       // [seeds]
       Key("seeds.strategy", T::choice, "how seeds are chosen: evenly spaced trajectories, a grid, or the points given")
           .choices({"even", "grid", "points"}).automatic("\"even\", or \"points\" when points or grids are given"),
@@ -174,6 +188,8 @@ std::vector<KeySchema> build_keys() {
       Key("trajectories.max_steps", T::integer, "guard on the steps per direction").range(1, std::numeric_limits<int>::max()).fallback("100000"),
       Key("trajectories.direction", T::choice, "trace both ways, or only along or against the field")
           .choices({"both", "forward", "backward"}).fallback("\"both\""),
+      Key("trajectories.max_turn", T::number, "stop before a step that turns more than this many degrees from the last")
+          .range(0.0, 180.0).automatic("180: no limit"),
 
       // [glyphs]
       Key("glyphs.placement", T::choice, "where sources go: along trajectories, at seeds, at the data's points, along a curve, from a list")

@@ -9,12 +9,6 @@
 
 #include <gtest/gtest.h>
 
-#include <vtkDoubleArray.h>
-#include <vtkImageData.h>
-#include <vtkPointData.h>
-#include <vtkSmartPointer.h>
-#include <vtkXMLImageDataWriter.h>
-
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -39,17 +33,11 @@ using Stress = std::function<std::optional<Sym3>(const Vec3&)>;
 // written as a .vti the way VTK writes it.
 std::string grid_file(const std::string& name, const Box3& box, const std::array<int, 3>& n, const Stress& stress,
                       double unit = 1.0) {
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(n[0], n[1], n[2]);
-  image->SetOrigin(box.lo.x(), box.lo.y(), box.lo.z());
-  const Vec3 size = box.size();
-  image->SetSpacing(size.x() / (n[0] - 1), size.y() / (n[1] - 1), size.z() / (n[2] - 1));
-  image->GetPointData()->AddArray(tensors_at_points(image, "stress", [&](const Vec3& p) -> std::optional<Sym3> {
+  return grid_written(test_temp_dir("default_features") / name, box, n, [&](const Vec3& p) -> std::optional<Sym3> {
     std::optional<Sym3> s = stress(p);
     if (s) *s = unit * *s;
     return s;
-  }));
-  return written_by<vtkXMLImageDataWriter>(image, test_temp_dir("default_features") / name);
+  });
 }
 
 GlyphScene default_scene(const std::string& path, std::vector<EigenFamily> families = {}) {

@@ -239,6 +239,77 @@ TEST(Trajectory, StopsAtLowMagnitude) {
   EXPECT_EQ(u.backward_stop, StopReason::boundary);
 }
 
+// A fibre along x that fades for x > 0.6: FA 0.67 (3, 1, 1), then 0.09
+// (1.2, 1, 1), its major eigenvector still along x and well defined.
+struct FadingFibre final : TensorField {
+  Box3 bounds() const override { return {Vec3::Zero(), Vec3::Ones()}; }
+  std::optional<Sym3> sample(const Vec3& x) const override {
+    if (!bounds().contains(x)) return std::nullopt;
+    return x.x() > 0.6 ? Sym3{1.2, 1, 1, 0, 0, 0} : Sym3{3, 1, 1, 0, 0, 0};
+  }
+};
+
+TEST(Trajectory, StopsOnTheRegionsEdge) {
+  const FadingFibre f;
+  TrajectoryOptions o;
+  o.step = 0.03;  // does not divide 0.3
+  o.measure = [](const Vec3& l) {
+    const Vec3 d = l - Vec3::Constant(l.sum() / 3.0);
+    return std::sqrt(1.5) * d.norm() / l.norm();
+  };
+  o.min_measure = 0.3;
+  const Trajectory t = trace_trajectory(f, Vec3(0.3, 0.5, 0.5), o);
+  const bool forward_is_plus_x = t.points.back().x() > t.points.front().x();
+  EXPECT_EQ(forward_is_plus_x ? t.forward_stop : t.backward_stop, StopReason::left_region);
+  EXPECT_EQ(forward_is_plus_x ? t.backward_stop : t.forward_stop, StopReason::boundary);
+  // Up to the edge, as to the domain's boundary, not a step short of it.
+  const double end = forward_is_plus_x ? t.points.back().x() : t.points.front().x();
+  EXPECT_LE(end, 0.6);
+  EXPECT_NEAR(end, 0.6, 1e-6);
+  // Without a region the fading part is followed to the boundary.
+  o.measure = nullptr;
+  const Trajectory u = trace_trajectory(f, Vec3(0.3, 0.5, 0.5), o);
+  EXPECT_EQ(u.forward_stop, StopReason::boundary);
+  EXPECT_EQ(u.backward_stop, StopReason::boundary);
+  // Seeded outside: nothing to follow.
+  o.measure = [](const Vec3& l) { return l(0) - l(1); };
+  o.min_measure = 1.0;
+  EXPECT_EQ(trace_trajectory(f, Vec3(0.8, 0.5, 0.5), o).points.size(), 1u);
+}
+
+// Two bundles that meet at x = 0.5 at right angles: along x before, along
+// y after, as where fibres cross.
+struct CrossingBundles final : TensorField {
+  Box3 bounds() const override { return {Vec3::Zero(), Vec3::Ones()}; }
+  std::optional<Sym3> sample(const Vec3& x) const override {
+    if (!bounds().contains(x)) return std::nullopt;
+    return x.x() < 0.5 ? Sym3{3, 1, 1, 0, 0, 0} : Sym3{1, 3, 1, 0, 0, 0};
+  }
+};
+
+TEST(Trajectory, StopsBeforeATurnSharperThanItsLimit) {
+  const CrossingBundles f;
+  TrajectoryOptions o;
+  o.step = 0.02;
+  o.direction = TraceDirection::forward;
+  Trajectory t = trace_trajectory(f, Vec3(0.1, 0.5, 0.5), o);
+  // Unlimited, it turns into the other bundle.
+  ASSERT_GT(t.points.back().x(), 0.45);
+  EXPECT_GT(std::fabs(t.points.back().y() - 0.5), 0.2) << "it did not turn";
+  // RK4 rounds the corner in steps of 45° (a step straddling the edge
+  // averages two stages of each bundle): a 30° limit stops at the first.
+  o.max_turn = 30.0;
+  t = trace_trajectory(f, Vec3(0.1, 0.5, 0.5), o);
+  EXPECT_EQ(t.forward_stop, StopReason::sharp_turn);
+  EXPECT_LT(t.points.back().x(), 0.5);
+  EXPECT_GT(t.points.back().x(), 0.5 - 2.0 * o.step);
+  // (A step whose last stage alone reached the other bundle turned 11°.)
+  for (const Vec3& p : t.points) EXPECT_NEAR(p.y(), 0.5, 0.5 * o.step) << "it followed the other bundle";
+  // A limit it never reaches changes nothing.
+  o.max_turn = 60.0;
+  EXPECT_NE(trace_trajectory(f, Vec3(0.1, 0.5, 0.5), o).forward_stop, StopReason::sharp_turn);
+}
+
 TEST(Trajectory, DegeneracyGapPerFamily) {
   // λ = (2, 2, 1): major and medium are degenerate, minor is fine.
   ConstantField f;
