@@ -106,7 +106,8 @@ std::vector<Vec3> all_seeds(const SeedSpec& spec, const Box3& bounds) {
 // a flow, its largest speed).
 // `separation`: evenly spaced seeding's, when it applies.
 GlyphValues resolve_lengths(const GlyphPipelineSpec& spec, const Box3& domain, const LoadedField& loaded,
-                            std::optional<double> separation, const std::vector<EigenFamily>& families) {
+                            std::optional<double> separation, const std::vector<EigenFamily>& families,
+                            DataQuantity quantity) {
   GlyphValues v;
   v.seeds = spec.seeds;
   v.seeds.strategy = spec.seeds.resolved_strategy();
@@ -116,7 +117,10 @@ GlyphValues resolve_lengths(const GlyphPipelineSpec& spec, const Box3& domain, c
   }
   if (separation) {
     v.seeds.separation = separation;
-    v.seeds.importance = spec.seeds.importance.value_or(loaded.vectors == nullptr);
+    // Diffusivity says nothing of where the fibres matter: lines as dense
+    // in a faint bundle as in a strong one.
+    v.seeds.importance =
+        spec.seeds.importance.value_or(loaded.vectors == nullptr && quantity != DataQuantity::diffusion);
   }
   TrajectoryOptions& t = v.trajectory;
   t.family = families.front();
@@ -272,12 +276,13 @@ ColorScalar family_eigenvalue(EigenFamily family) {
 // and the speed for a flow by default; one that the data cannot give is
 // an error.
 ColorScalar resolve_color(const GlyphPipelineSpec& spec, const LoadedField& loaded,
-                          const std::vector<EigenFamily>& families, SourcePlacement placement) {
+                          const std::vector<EigenFamily>& families, SourcePlacement placement, DataQuantity quantity) {
   const bool flow = loaded.vectors != nullptr;
   const bool several = families.size() > 1 && placement == SourcePlacement::along_trajectories;
-  ColorScalar c = spec.color.value_or(flow      ? ColorScalar::speed
-                                      : several ? ColorScalar::family_eigenvalue
-                                                : family_eigenvalue(families.front()));
+  ColorScalar c = spec.color.value_or(flow                                    ? ColorScalar::speed
+                                      : quantity == DataQuantity::diffusion ? ColorScalar::fa
+                                      : several                             ? ColorScalar::family_eigenvalue
+                                                                            : family_eigenvalue(families.front()));
   // Glyphs not on lines (or on one family's) show the first family's.
   if (c == ColorScalar::family_eigenvalue && !several) c = family_eigenvalue(families.front());
   const std::string& file = spec.data.file.path;
@@ -370,6 +375,23 @@ namespace {
 // when several are traced: a tension line stops where the tension fades,
 // and the compression lines take over there.
 constexpr double kFamilyFloor = 0.05;
+
+// The FA a diffusion volume's picture keeps above by default.
+constexpr double kDiffusionRegion = 0.3;
+
+// The eigenvalues on a 16³ grid over the data's bounds (NaN where it has
+// none): enough to tell what the data holds.
+std::vector<Vec3> eigenvalues_on_grid(const TensorField& tensors) {
+  constexpr int n = 16;
+  const Box3 b = tensors.bounds();
+  std::vector<Vec3> values(std::size_t(n * n * n), Vec3::Constant(std::numeric_limits<double>::quiet_NaN()));
+  tbb::parallel_for(0, n * n * n, [&](int i) {
+    const Vec3 f((i % n + 0.5) / n, (i / n % n + 0.5) / n, (i / (n * n) + 0.5) / n);
+    if (const std::optional<Sym3> t = tensors.sample(b.lo + b.size().cwiseProduct(f)))
+      values[std::size_t(i)] = decompose(*t).values;
+  });
+  return values;
+}
 
 // The eigenvalues at the body lattice's points, sampled once for the
 // choice of families and each family's own magnitudes (NaN where the data
@@ -525,8 +547,12 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   scene.plane_axis = loaded.plane_axis;
   scene.warnings = std::move(loaded.warnings);
   scene.placement = resolved_placement(spec, loaded, scene.warnings);
-  const RegionSpec region = spec.region;
-  if (flow && region.above)
+  scene.quantity = data.quantity.value_or(
+      tensors && data.kind == DataKind::vtk_file ? recognised_quantity(eigenvalues_on_grid(*tensors)) : DataQuantity::stress);
+  // Diffusion: the fibres, where FA > 0.3, the usual threshold for white matter.
+  RegionSpec region = spec.region;
+  if (scene.quantity == DataQuantity::diffusion && !region.above && !flow) region.above = kDiffusionRegion;
+  if (flow && spec.region.above)
     throw DataError(data.file.path + ": region.above keeps to where a measure of the tensor is large, and this "
                     "file is read as a flow (vectors)");
   // Evenly spaced seeding measures the body first: its separation sets
@@ -560,8 +586,8 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
     families = spec.trajectory.families;
   else if (!flow && even && scene.placement == SourcePlacement::along_trajectories)
     families = automatic_families(body_eigenvalues);
-  scene.color = resolve_color(spec, loaded, families, scene.placement);
-  scene.values = resolve_lengths(spec, scene.domain, loaded, separation, families);
+  scene.color = resolve_color(spec, loaded, families, scene.placement, scene.quantity);
+  scene.values = resolve_lengths(spec, scene.domain, loaded, separation, families, scene.quantity);
   scene.values.region = region;
   if (region.above) {
     scene.values.trajectory.measure = [measure = region.measure](const Vec3& l) { return color_scalar(l, measure); };

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "field/data_quantity.h"
 #include "field/glyphs/curve_sources.h"
 #include "field/glyphs/glyph_sources.h"
 #include "field/glyphs/sign_convention.h"
@@ -37,6 +38,8 @@ struct DataSpec {
   // dimensions spanning its bounds, and everything downstream reads the grid.
   std::array<int, 3> sample_grid{0, 0, 0};
   SignConvention sign = SignConvention::tension_positive;
+  // Automatic: recognised from the tensors (data_quantity.h).
+  std::optional<DataQuantity> quantity;
 };
 
 struct SeedGridSpec {
@@ -174,6 +177,7 @@ struct GlyphScene {
   Box3 domain;
   SourcePlacement placement = SourcePlacement::along_trajectories;  // resolved: data without volume takes points
   bool flow = false;  // made from a vector field (streamballs), not tensors
+  DataQuantity quantity = DataQuantity::stress;  // resolved (a flow's: stress, unused)
   ColorScalar color = ColorScalar::lambda3;  // what `scalar` holds, resolved
   std::vector<Trajectory> trajectories;
   std::vector<GlyphSource> sources;

@@ -195,6 +195,8 @@ void record_field_values(PreparedScene& p) {
   const GlyphPipelineSpec& s = p.spec.pipeline;
   const GlyphValues& v = p.glyphs.values;
   if (v.singular_radius) p.resolve("data.singular_radius", *v.singular_radius);
+  if (s.data.kind == DataKind::vtk_file && !p.glyphs.flow)
+    p.resolve("data.quantity", p.glyphs.quantity == DataQuantity::diffusion ? "diffusion" : "stress");
   // Sources the scene gives itself (a curve, a list) have no seeds,
   // trajectories or sizes.
   if (s.data.kind == DataKind::none) return;

@@ -77,6 +77,9 @@ void read_data(TableReader& data, DataSpec& spec, const std::string& base_dir) {
     if (const std::string why = unreadable_format_message(spec.file.path); !why.empty())
       data.fail_at("file", "names " + why);
     spec.file.array = data.string("array");
+    if (data.has("quantity"))
+      spec.quantity = data.choice<DataQuantity>("quantity", {{"stress", DataQuantity::stress},
+                                                            {"diffusion", DataQuantity::diffusion}});
     spec.file.kind = data.choice<FieldKind>("field", {{"auto", FieldKind::automatic}, {"tensor", FieldKind::tensor},
                                            {"vector", FieldKind::vector}});
     spec.file.association = data.choice<TensorAssociation>("association", {{"auto", TensorAssociation::automatic},
@@ -93,7 +96,8 @@ void read_data(TableReader& data, DataSpec& spec, const std::string& base_dir) {
     refuse_keys(data, {"bounds", "load", "poisson_ratio", "singular_radius"}, "point_load");
   } else {
     if (file) data.fail_at("file", "applies only to data.kind = \"vtk\"");
-    refuse_keys(data, {"array", "association", "block", "cell_tensors", "components", "field", "step"}, "vtk");
+    refuse_keys(data, {"array", "association", "block", "cell_tensors", "components", "field", "quantity", "step"},
+                "vtk");
     PointLoadSpec& load = spec.point_load;
     const std::vector<double> b = data.numbers("bounds");
     load.bounds = Box3{Vec3(b[0], b[2], b[4]), Vec3(b[1], b[3], b[5])};

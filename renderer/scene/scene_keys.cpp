@@ -144,6 +144,11 @@ std::vector<KeySchema> build_keys() {
       Key("data.components", T::choice, "the order of a 6-component array's tensor components")
           .choices(component_order_names())
           .derived("the order the file records (components named apart, NRRD's and NIfTI's layouts), else \"vtk\""),
+      Key("data.quantity", T::choice, "what the tensors are: stress (or strain) or diffusion")
+          .choices({"stress", "diffusion"})
+          .automatic("\"diffusion\" where the tensors are positive definite and not flat (90 % with λ3 > 0, median "
+                     "λ3/λ1 ≥ 0.05) with water's mean diffusivity (1e-4 to 1e-2 mm²/s, 1e-10 to 1e-8 m²/s, 0.1 to 10 "
+                     "µm²/ms); else \"stress\""),
       Key("data.field", T::choice, "read only tensors or only vectors").choices({"auto", "tensor", "vector"}).fallback("\"auto\""),
       Key("data.association", T::choice, "point or cell data").choices({"auto", "point", "cell"}).fallback("\"auto\""),
       Key("data.cell_tensors", T::choice, "cell data constant per cell, or averaged onto the points")
@@ -153,7 +158,7 @@ std::vector<KeySchema> build_keys() {
       Key("region.measure", T::choice, "the measure of the tensor the region keeps to").choices(measure_choices())
           .fallback("\"fa\""),
       Key("region.above", T::number, "seeds, lines and glyphs at data points only where the measure is at least this")
-          .none("everywhere"),
+          .automatic("0.3 for diffusion data (with fa: the white matter); else none, everywhere"),
 
       // [seeds]
       Key("seeds.strategy", T::choice, "how seeds are chosen: evenly spaced trajectories, a grid, or the points given")
@@ -161,7 +166,7 @@ std::vector<KeySchema> build_keys() {
       Key("seeds.separation", T::number, "even: the distance between neighbouring trajectories")
           .length().automatic("(body volume/150)^(1/3); (area/200)^(1/2) in 2-D"),
       Key("seeds.importance", T::boolean, "even: trajectories closer where the magnitude is larger")
-          .automatic("on for tensors, off for a flow"),
+          .automatic("on for stress, off for diffusion and a flow"),
       Key("seeds.frame", T::choice, "seed coordinates in the data's own units, or as fractions of its bounds")
           .choices({"world", "bounds"}).fallback("\"world\""),
       Key("seeds.points", T::points, "explicit seeds [[x, y, z], ...]; with \"even\", taken first")
@@ -207,7 +212,7 @@ std::vector<KeySchema> build_keys() {
           .automatic("three times the reference glyph's"),
       Key("glyphs.color_by", T::choice, "the colour scalar, or \"array:NAME\"").choices(color_by_choices())
           .automatic("the traced family's eigenvalue (major: \"lambda1\"; several families: \"family_eigenvalue\", "
-                     "each line's own) for tensors, \"speed\" for a flow"),
+                     "each line's own) for stress, \"fa\" for diffusion, \"speed\" for a flow"),
       Key("glyphs.thickness", T::number, "2-D data: the glyphs' thickness across the plane").length()
           .automatic("each glyph's smaller in-plane diameter"),
       Key("glyphs.shape", T::choice, "each glyph's form").choices({"ellipsoid", "superquadric", "signed"}).fallback("\"ellipsoid\""),

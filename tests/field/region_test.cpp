@@ -77,8 +77,24 @@ TEST(Region, LinesSeedsAndGlyphsStayInTheFibre) {
   EXPECT_GT(longest, 0.9);
 }
 
-TEST(Region, WithoutOneTheBackgroundFillsThePicture) {
+// Given alone, the file is recognised as diffusion: the region is FA ≥ 0.3,
+// the colour FA, and the lines as dense in a faint bundle as a strong one.
+TEST(Region, DiffusionDataKeepsToItsFibresUnasked) {
   const GlyphScene scene = build_glyph_scene(spec_for(std::nullopt), kExtent);
+  EXPECT_EQ(scene.quantity, DataQuantity::diffusion);
+  ASSERT_TRUE(scene.values.region.above);
+  EXPECT_EQ(*scene.values.region.above, 0.3);
+  EXPECT_EQ(scene.values.region.measure, ColorScalar::fa);
+  EXPECT_EQ(scene.color, ColorScalar::fa);
+  EXPECT_FALSE(*scene.values.seeds.importance);
+  ASSERT_FALSE(scene.sources.empty());
+  for (const GlyphSource& s : scene.sources) EXPECT_LT(from_axis(s.centre), 1.5 * kBundle);
+}
+
+TEST(Region, WithoutOneTheBackgroundFillsThePicture) {
+  GlyphPipelineSpec spec = spec_for(std::nullopt);
+  spec.data.quantity = DataQuantity::stress;  // read as stress: no region, unless asked
+  const GlyphScene scene = build_glyph_scene(spec, kExtent);
   EXPECT_FALSE(scene.values.region.above);
   std::size_t outside = 0;
   for (const GlyphSource& s : scene.sources) outside += from_axis(s.centre) > 2.0 * kBundle;
@@ -92,7 +108,7 @@ TEST(Region, GlyphsAtDataPointsOnlyInsideIt) {
   const GlyphScene inside = build_glyph_scene(spec, kExtent);
   ASSERT_FALSE(inside.sources.empty());
   for (const GlyphSource& s : inside.sources) EXPECT_GE(fractional_anisotropy(s.eigenvalues), 0.3);
-  spec.region.above.reset();
+  spec.region.above = 0.0;  // FA ≥ 0: everywhere
   const GlyphScene all = build_glyph_scene(spec, kExtent);
   EXPECT_EQ(all.sources.size(), 31u * 31u * 31u);
   EXPECT_LT(inside.sources.size(), all.sources.size() / 10);
