@@ -280,7 +280,7 @@ ColorScalar resolve_color(const GlyphPipelineSpec& spec, const LoadedField& load
   const bool flow = loaded.vectors != nullptr;
   const bool several = families.size() > 1 && placement == SourcePlacement::along_trajectories;
   ColorScalar c = spec.color.value_or(flow                                    ? ColorScalar::speed
-                                      : quantity == DataQuantity::diffusion ? ColorScalar::fa
+                                      : quantity == DataQuantity::diffusion ? ColorScalar::direction
                                       : several                             ? ColorScalar::family_eigenvalue
                                                                             : family_eigenvalue(families.front()));
   // Glyphs not on lines (or on one family's) show the first family's.

@@ -53,6 +53,7 @@ const char* color_scalar_name(ColorScalar c) {
     case ColorScalar::westin_planar: return "cp";
     case ColorScalar::westin_spherical: return "cs";
     case ColorScalar::mode: return "mode";
+    case ColorScalar::direction: return "direction";
     case ColorScalar::speed: return "speed";
     case ColorScalar::array: return "array";
     case ColorScalar::arc_length: return "arc_length";
@@ -68,6 +69,7 @@ const std::vector<ColorScalar>& named_color_scalars() {
                                               ColorScalar::fa,        ColorScalar::trace,
                                               ColorScalar::westin_linear, ColorScalar::westin_planar,
                                               ColorScalar::westin_spherical, ColorScalar::mode,
+                                              ColorScalar::direction,
                                               ColorScalar::speed,     ColorScalar::arc_length,
                                               ColorScalar::none};
   return named;
@@ -88,6 +90,7 @@ bool needs_tensors(ColorScalar which) {
 std::optional<std::array<double, 2>> natural_range(ColorScalar which) {
   switch (which) {
     case ColorScalar::fa:
+    case ColorScalar::direction:
     case ColorScalar::westin_linear:
     case ColorScalar::westin_planar:
     case ColorScalar::westin_spherical:
@@ -115,6 +118,7 @@ double color_scalar(const Vec3& eigenvalues, ColorScalar which) {
       return std::sqrt(0.5 * ((l1 - l2) * (l1 - l2) + (l2 - l3) * (l2 - l3) +
                               (l3 - l1) * (l3 - l1)));
     case ColorScalar::fa:
+    case ColorScalar::direction:  // the weight of its colour
       return fractional_anisotropy(eigenvalues);
     case ColorScalar::trace:
       return l1 + l2 + l3;

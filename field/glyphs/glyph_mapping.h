@@ -36,10 +36,12 @@ struct GlyphMapping {
 // none: one neutral colour for every glyph, and no colour bar (a picture
 // whose shapes carry the meaning, or one printed in grey).
 // The tensor measures (tensor_measures.h): fa, trace, westin_linear,
-// westin_planar, westin_spherical, mode.
+// westin_planar, westin_spherical, mode. direction: not a scalar but the
+// major eigenvector's colour (renderer/image/direction_key.h), weighted by
+// FA, which is its scalar.
 enum class ColorScalar {
   lambda1, lambda2, lambda3, mean, von_mises, family_eigenvalue,
-  fa, trace, westin_linear, westin_planar, westin_spherical, mode,
+  fa, trace, westin_linear, westin_planar, westin_spherical, mode, direction,
   speed, array, arc_length, none
 };
 
@@ -57,9 +59,10 @@ const std::vector<ColorScalar>& named_color_scalars();
 // Whether `which` follows from a tensor's eigenvalues (a flow has none).
 bool needs_tensors(ColorScalar which);
 // Whether `which` is one value of the tensor wherever it is sampled, as a
-// region's measure must be (family_eigenvalue depends on the line).
+// region's measure must be (family_eigenvalue depends on the line, and
+// direction is a colour).
 inline bool is_tensor_measure(ColorScalar which) {
-  return needs_tensors(which) && which != ColorScalar::family_eigenvalue;
+  return needs_tensors(which) && which != ColorScalar::family_eigenvalue && which != ColorScalar::direction;
 }
 
 // The range a bounded measure always spans, [0, 1] for FA and Westin's,

@@ -69,6 +69,7 @@ std::string scalar_title(ColorScalar scalar, const SceneSpec& spec) {
     case ColorScalar::westin_planar: return "planar anisotropy cₚ";
     case ColorScalar::westin_spherical: return "isotropy cₛ";
     case ColorScalar::mode: return "mode: −1 planar, +1 linear";
+    case ColorScalar::direction: return "direction of e₁ (grey where FA is low)";
     case ColorScalar::speed: return "speed |v|";
     case ColorScalar::array:
       return spec.pipeline.placement == SourcePlacement::list ? "scalar" : spec.pipeline.data.file.color_array;
@@ -315,6 +316,14 @@ std::array<int, 2> picture_size(const SceneSpec& s) {
   return {s.render.width.value_or(pixels(0)), s.render.height.value_or(pixels(1))};
 }
 
+namespace {
+// The direction key for the data's axes as `camera` sees them.
+DirectionKey view_direction_key(const CameraSpec& camera) {
+  const Vec3 forward = (camera.look_at - camera.position).normalized(), right = forward.cross(camera.up).normalized();
+  return direction_key(right, right.cross(forward));
+}
+}  // namespace
+
 LegendLayout legend_for(const PreparedScene& p, int width, int height) {
   const OutputSpec& o = p.spec.output;
   LegendStyle style;
@@ -323,7 +332,8 @@ LegendLayout legend_for(const PreparedScene& p, int width, int height) {
   style.length = o.colorbar_length;
   style.dpi = o.dpi;
   LegendContent content;
-  content.bar = p.glyphs.color != ColorScalar::none;
+  content.bar = p.glyphs.color != ColorScalar::none && p.glyphs.color != ColorScalar::direction;
+  if (p.glyphs.color == ColorScalar::direction) content.direction = view_direction_key(p.camera);
   content.title = o.colorbar_title.value_or(scalar_title(p.glyphs.color, p.spec));
   // Stress of both signs: the bar's ends say which is which.
   if (content.bar && carries_stress_sign(p.glyphs.color) && !p.scale.log && p.scale.lo < 0.0 && p.scale.hi > 0.0) {
@@ -346,7 +356,9 @@ constexpr Rgb kUncoloured{0.62f, 0.62f, 0.62f};
 
 // Source i's sRGB colour on `scale`.
 Rgb source_srgb(const PreparedScene& p, const ColorScale& scale, std::size_t i) {
-  return p.glyphs.color == ColorScalar::none ? kUncoloured : scale.srgb(p.glyphs.sources[i].scalar);
+  const GlyphSource& g = p.glyphs.sources[i];
+  if (p.glyphs.color == ColorScalar::direction) return direction_srgb(g.axes.col(0), g.scalar);
+  return p.glyphs.color == ColorScalar::none ? kUncoloured : scale.srgb(g.scalar);
 }
 
 void set_color_scale(PreparedScene& p, const ColorScale& scale, const ColorManagement& color) {
@@ -469,6 +481,9 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   check_memory(p.memory_estimate, picture.str(),
                "lower render.width and render.height (or output.print_size or output.dpi)");
   p.camera = frame_camera(camera, framed, p.render.width, p.render.height, reserve);
+  // The legend was laid out before the camera was framed (its part of the
+  // picture is kept from the view): its axes are the view's.
+  if (p.output.legend && p.output.legend->direction) p.output.legend->direction = view_direction_key(p.camera);
   p.resolve("camera.position", toml_vec3(p.camera.position));
   p.resolve("camera.look_at", toml_vec3(p.camera.look_at));
   p.resolve("camera.up", toml_vec3(p.camera.up));

@@ -2,7 +2,6 @@
 
 #include "renderer/image/text.h"
 
-
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -21,20 +20,27 @@ constexpr double kTriangle = 7.0;  // an extension triangle's length
 constexpr int kDefaultTicks = 5;   // about this many ticks on a bar
 constexpr double kKeyGlyph = 9.0;  // a key glyph's longest half-axis
 constexpr double kKeyRow = 14.0;   // a key row's height
+constexpr double kTriad = 14.0;    // the direction key's radius
+constexpr double kTitleWrap = 80.0;  // the direction key's title is wrapped at this width
 // The smallest picture, in points, the legend keeps its printed size in:
 // 2.5 inches. A smaller picture (a thumbnail, a golden image) is not a
 // print; its legend shrinks with it, so that it never takes over the
 // picture.
 constexpr double kFullSizePicture = 180.0;
 
-// The colour at bar fraction u ∈ [0, 1], display-referred, as the glyphs
-// get it: the colormap's sRGB to scene-linear, then the display transform.
-Rgb display_color(const ColorScale& scale, const ColorManagement& color, double u) {
+// An sRGB colour as the glyphs get it, display-referred: to scene-linear,
+// then the display transform.
+Rgb display_rgb(const ColorManagement& color, const Rgb& srgb) {
   std::vector<float> pixel(4, 1.0f);
-  const Rgb linear = color.to_scene_linear(scale.map->at(u));
+  const Rgb linear = color.to_scene_linear(srgb);
   for (int c = 0; c < 3; ++c) pixel[std::size_t(c)] = linear[std::size_t(c)];
   color.apply_display(pixel, 1, 1);
   return {pixel[0], pixel[1], pixel[2]};
+}
+
+// The colour at bar fraction u ∈ [0, 1], display-referred.
+Rgb display_color(const ColorScale& scale, const ColorManagement& color, double u) {
+  return display_rgb(color, scale.map->at(u));
 }
 
 // The extension triangle at the bar's high (or low) end, filled with that
@@ -189,10 +195,41 @@ void draw_shape_key(cairo_t* cr, const LegendLayout& l, float ink) {
   }
 }
 
+// The direction key: each axis a line through the centre both ways (the
+// colour has no sign) in the colour a glyph along it gets, its positive
+// end labelled beyond it; the title under the triad.
+void draw_direction_key(cairo_t* cr, const LegendLayout& l, const ColorManagement& color, float ink) {
+  if (!l.direction) return;
+  const double p = l.pixels_per_point, font = l.style.font_size * p, r = l.triad_r, gap = kGap * p;
+  cairo_set_line_width(cr, 1.5 * p);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  for (int k = 0; k < 3; ++k) {
+    const auto& a = l.direction->axes[std::size_t(k)];
+    Vec3 axis = Vec3::Zero();
+    axis[k] = 1.0;
+    const Rgb c = display_rgb(color, direction_srgb(axis, 1.0));
+    cairo_set_source_rgb(cr, c[0], c[1], c[2]);
+    cairo_move_to(cr, l.triad_x - r * a[0], l.triad_y + r * a[1]);
+    cairo_line_to(cr, l.triad_x + r * a[0], l.triad_y - r * a[1]);
+    cairo_stroke(cr);
+  }
+  cairo_set_source_rgb(cr, ink, ink, ink);
+  for (int k = 0; k < 3; ++k) {
+    const auto& a = l.direction->axes[std::size_t(k)];
+    const double length = std::hypot(a[0], a[1]);
+    // Beyond the positive end, anchored on the side that faces away.
+    const double ux = length > 1e-6 ? a[0] / length : 0.0, uy = length > 1e-6 ? a[1] / length : 0.0;
+    show_text(cr, l.direction->labels[std::size_t(k)], font, l.triad_x + (r * length + gap) * ux,
+              l.triad_y - (r * length + gap) * uy, 0.5 - 0.5 * ux, 0.5 + 0.5 * uy);
+  }
+  show_text(cr, l.title, font, l.triad_x, l.triad_title_y, 0.5, 0.0, false, false, kTitleWrap * p);
+}
+
 // Everything but the bar's strip.
 void draw_annotations(cairo_t* cr, const LegendLayout& l, const ColorScale& scale, const ColorManagement& color,
                       float ink) {
   if (l.bar) draw_bar_annotations(cr, l, scale, color, ink);
+  draw_direction_key(cr, l, color, ink);
   draw_shape_key(cr, l, ink);
 }
 
@@ -236,12 +273,15 @@ LegendLayout LegendLayout::shifted(double dx, double dy) const {
   moved.bar_x0 += dx, moved.bar_x1 += dx;
   moved.bar_y0 += dy, moved.bar_y1 += dy;
   moved.key_x0 += dx, moved.key_y0 += dy;
+  moved.triad_x += dx, moved.triad_y += dy, moved.triad_title_y += dy;
   moved.left += dx, moved.top += dy;
   return moved;
 }
 
 std::array<double, 2> LegendLayout::ink_sample() const {
-  return bar ? std::array<double, 2>{bar_x0 - 2.0, bar_y0} : std::array<double, 2>{key_x0 - 2.0, key_y0};
+  if (bar) return {bar_x0 - 2.0, bar_y0};
+  if (direction) return {left - 2.0, triad_y};
+  return {key_x0 - 2.0, key_y0};
 }
 
 LegendLayout layout_legend(const ColorScale& scale, const LegendContent& content, const LegendStyle& style, int width,
@@ -252,6 +292,8 @@ LegendLayout layout_legend(const ColorScale& scale, const LegendContent& content
   l.title = content.title;
   l.low_word = content.low_word, l.high_word = content.high_word;
   l.key = content.key;
+  l.direction = content.direction;
+  if (l.direction && l.bar) throw std::logic_error("a legend has a colour bar or a direction key, not both");
   l.pixels_per_point = legend_pixels_per_point(style.dpi, width, height);
   const double p = l.pixels_per_point, font = style.font_size * p, margin = kMargin * p, gap = kGap * p;
   const bool right = style.placement == LegendPlacement::right;
@@ -295,13 +337,27 @@ LegendLayout layout_legend(const ColorScale& scale, const LegendContent& content
   }
   const EndReach reach = l.bar ? end_reach(cr.get(), l) : EndReach{};
 
+  // The direction key: the triad with its labels round it, the title
+  // (wrapped) under it.
+  double triad_w = 0.0, triad_h = 0.0, triad_above = 0.0;  // its block, and its centre's depth in it
+  if (l.direction) {
+    l.triad_r = kTriad * p;
+    double label_w = 0.0, label_h = 0.0;
+    for (const std::string& label : l.direction->labels) measure(label, label_w, label_h);
+    double wrapped_w = 0.0, wrapped_h = 0.0;
+    if (!l.title.empty()) text_size(cr.get(), l.title, font, wrapped_w, wrapped_h, false, kTitleWrap * p);
+    triad_w = std::max(2.0 * (l.triad_r + gap + label_w), wrapped_w);
+    triad_above = l.triad_r + gap + label_h;
+    triad_h = 2.0 * triad_above + (l.title.empty() ? 0.0 : wrapped_h + gap);
+  }
+
   if (right) {
     const double words = words_h > 0.0 ? words_h + gap : 0.0;
     const double above = gap + reach.high + reach.factor + words, below = gap + reach.low + words;
     // The bar, its ends' decorations and the key under them are centred
     // as one group; the bar is lengthened up to its title's length, and
     // shortened where they would not fit.
-    const double key_part = l.key.empty() ? 0.0 : key_h + (l.bar ? 2.0 * gap : 0.0);
+    const double key_part = l.key.empty() ? 0.0 : key_h + (l.bar || l.direction ? 2.0 * gap : 0.0);
     const double room = height - 2.0 * (std::max(above, below) + margin) - key_part;
     const double length = l.bar ? std::max(0.0, std::min(std::max(style.length * height, title_w), room)) : 0.0;
     // A title still longer than the bar is wrapped at its length: its
@@ -314,21 +370,26 @@ LegendLayout layout_legend(const ColorScale& scale, const LegendContent& content
     }
     // One column at the picture's right edge: the bar, and the key at its
     // foot; the words above and below the bar must fit in it too.
-    const double block = std::max({bar_across, key_w + margin, words_w > 0.0 ? words_w + margin : 0.0});
+    const double block = std::max({bar_across, key_w + margin, words_w > 0.0 ? words_w + margin : 0.0,
+                                   triad_w > 0.0 ? triad_w + margin : 0.0});
     l.left = width - block;
     l.key_x0 = l.bar_x0 = l.left;
     l.bar_x1 = l.bar_x0 + kBarWidth * p;
-    const double group = (l.bar ? above + length + below : 0.0) + key_part;
+    const double group = (l.bar ? above + length + below : 0.0) + triad_h + key_part;
     // Without a key the bar alone is centred on the picture, as it always was.
     l.bar_y0 = l.key.empty() ? 0.5 * (height - length) : 0.5 * (height - group) + (l.bar ? above : 0.0);
     l.bar_y1 = l.bar_y0 + length;
     l.key_y0 = 0.5 * (height - group) + group - key_h;
+    l.triad_x = l.left + 0.5 * triad_w;
+    l.triad_y = 0.5 * (height - group) + triad_above;
+    l.triad_title_y = l.triad_y + triad_above;
     l.top = 0.0;
     l.reserved = (block + margin) / width;
   } else {
     // One band along the picture's foot: the bar centred in it, the key
     // at its right end; the words at the bar's ends must fit beside it.
-    const double band = std::max(bar_across, key_h > 0.0 ? key_h + margin + gap : 0.0);
+    const double band = std::max({bar_across, key_h > 0.0 ? key_h + margin + gap : 0.0,
+                                  triad_h > 0.0 ? triad_h + margin : 0.0});
     l.top = height - band;
     l.bar_y0 = height - bar_across;
     l.bar_y1 = l.bar_y0 + kBarWidth * p;
@@ -342,6 +403,9 @@ LegendLayout layout_legend(const ColorScale& scale, const LegendContent& content
                                                  free_width - 2.0 * (std::max(before, after) + margin)));
     l.bar_x0 = 0.5 * (free_width - length);
     l.bar_x1 = l.bar_x0 + length;
+    l.triad_x = 0.5 * free_width;
+    l.triad_y = height - margin - triad_h + triad_above;
+    l.triad_title_y = l.triad_y + triad_above;
     l.left = 0.0;
     l.reserved = (band + margin) / height;
   }

@@ -13,11 +13,13 @@
 #include <cairo.h>
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "renderer/image/color_management.h"
 #include "renderer/image/colormap.h"
+#include "renderer/image/direction_key.h"
 #include "renderer/image/shape_key.h"
 #include "renderer/image/ticks.h"
 
@@ -43,6 +45,9 @@ struct LegendContent {
   // Sample glyphs with what their forms mean: under the bar on the right,
   // beside it at the bottom.
   std::vector<ShapeKeyEntry> key;
+  // Direction colour's key, the title under it, instead of the bar (which
+  // must then be off).
+  std::optional<DirectionKey> direction;
 };
 
 // Where everything goes, in the picture's pixels.
@@ -68,6 +73,10 @@ struct LegendLayout {
   // pixels, a row key_row high.
   std::vector<ShapeKeyEntry> key;
   double key_x0 = 0, key_y0 = 0, key_width = 0, key_glyph = 0, key_row = 0;
+  // The direction key: its triad's centre and an axis' half length seen
+  // across the view (its radius); the title's top, centred under it.
+  std::optional<DirectionKey> direction;
+  double triad_x = 0, triad_y = 0, triad_r = 0, triad_title_y = 0;
   // The top left of all the legend draws.
   double left = 0, top = 0;
   // The part of the picture the legend takes, from its right (or bottom)

@@ -212,7 +212,7 @@ std::vector<KeySchema> build_keys() {
           .automatic("three times the reference glyph's"),
       Key("glyphs.color_by", T::choice, "the colour scalar, or \"array:NAME\"").choices(color_by_choices())
           .automatic("the traced family's eigenvalue (major: \"lambda1\"; several families: \"family_eigenvalue\", "
-                     "each line's own) for stress, \"fa\" for diffusion, \"speed\" for a flow"),
+                     "each line's own) for stress, \"direction\" for diffusion, \"speed\" for a flow"),
       Key("glyphs.thickness", T::number, "2-D data: the glyphs' thickness across the plane").length()
           .automatic("each glyph's smaller in-plane diameter"),
       Key("glyphs.shape", T::choice, "each glyph's form").choices({"ellipsoid", "superquadric", "signed"}).fallback("\"ellipsoid\""),

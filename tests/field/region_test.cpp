@@ -78,14 +78,14 @@ TEST(Region, LinesSeedsAndGlyphsStayInTheFibre) {
 }
 
 // Given alone, the file is recognised as diffusion: the region is FA ≥ 0.3,
-// the colour FA, and the lines as dense in a faint bundle as a strong one.
+// the colour the fibres' direction, and the lines as dense in a faint bundle as a strong one.
 TEST(Region, DiffusionDataKeepsToItsFibresUnasked) {
   const GlyphScene scene = build_glyph_scene(spec_for(std::nullopt), kExtent);
   EXPECT_EQ(scene.quantity, DataQuantity::diffusion);
   ASSERT_TRUE(scene.values.region.above);
   EXPECT_EQ(*scene.values.region.above, 0.3);
   EXPECT_EQ(scene.values.region.measure, ColorScalar::fa);
-  EXPECT_EQ(scene.color, ColorScalar::fa);
+  EXPECT_EQ(scene.color, ColorScalar::direction);
   EXPECT_FALSE(*scene.values.seeds.importance);
   ASSERT_FALSE(scene.sources.empty());
   for (const GlyphSource& s : scene.sources) EXPECT_LT(from_axis(s.centre), 1.5 * kBundle);

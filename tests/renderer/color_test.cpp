@@ -9,6 +9,7 @@
 
 #include "renderer/image/color_management.h"
 #include "renderer/image/colormap.h"
+#include "renderer/image/direction_key.h"
 #include "tests/temp_dir.h"
 
 namespace hsb {
@@ -111,6 +112,23 @@ TEST_F(Color, FilmicViewRollsHighlightsOffInsteadOfClipping) {
 }
 
 TEST_F(Color, UnknownViewIsAnError) { EXPECT_ANY_THROW(ColorManagement("sRGB", "NoSuchView")); }
+
+// Direction colour: x red, y green, z blue whatever the eigenvector's
+// sign, a diagonal their mix, faded to the uncoloured grey as the weight
+// (FA) falls.
+TEST_F(Color, DirectionColourIsTheAxisFadedToGrey) {
+  const Rgb x = direction_srgb(Vec3::UnitX(), 1.0), minus_y = direction_srgb(-Vec3::UnitY(), 1.0);
+  EXPECT_EQ(x, (Rgb{1.0f, 0.0f, 0.0f}));
+  EXPECT_EQ(minus_y, (Rgb{0.0f, 1.0f, 0.0f}));
+  const Rgb diagonal = direction_srgb(Vec3(1, 0, -1).normalized(), 1.0);
+  EXPECT_FLOAT_EQ(diagonal[0], diagonal[2]);
+  EXPECT_EQ(diagonal[1], 0.0f);
+  const Rgb none = direction_srgb(Vec3::UnitZ(), 0.0), half = direction_srgb(Vec3::UnitZ(), 0.5);
+  EXPECT_FLOAT_EQ(none[0], none[2]);  // grey: no hue
+  EXPECT_GT(half[2], half[0]);
+  EXPECT_LT(half[2], 1.0f);
+  EXPECT_EQ(direction_srgb(Vec3::UnitZ(), 7.0), direction_srgb(Vec3::UnitZ(), 1.0));  // the weight is clamped
+}
 
 TEST_F(Color, ColormapEndsAndInterpolation) {
   const Colormap& v = colormap_named("viridis");

@@ -17,6 +17,7 @@
 #include "renderer/app/render_job.h"
 #include "renderer/image/text.h"
 #include "tests/renderer/command_output.h"
+#include "field/tensor/tensor_measures.h"
 #include "tests/temp_dir.h"
 
 namespace hsb {
@@ -210,6 +211,59 @@ TEST_F(FigureOutput, SignedGlyphsGetAShapeKeyBesideTheBar) {
     EXPECT_NE(std::string(e.what()).find("output.shape_key = true needs glyphs.shape = \"signed\""), std::string::npos)
         << e.what();
   }
+}
+
+// Direction colour (the default for diffusion data, asked for here on the
+// plate's stress): each glyph the colour of its major eigenvector, faded
+// to grey as FA falls, and a key of the data's axes as the camera sees
+// them instead of the bar, in the picture's pixels and as vector lines and
+// text in a PDF.
+TEST_F(FigureOutput, DirectionColourHasAnAxisKeyInsteadOfTheBar) {
+  const ColorManagement color("", "");
+  const std::string path = scene(std::string(kPlate) +
+                                 "[glyphs]\ncolor_by = \"direction\"\n[camera]\nposition = [0, -2000, 0]\n"
+                                 "look_at = [0, 0, 0]\nup = [0, 0, 1]\n");
+  const std::unique_ptr<PreparedScene> p = prepare_scene(load_scene(path), color);
+  ASSERT_TRUE(p->output.legend);
+  const LegendLayout& l = *p->output.legend;
+  EXPECT_FALSE(l.bar);
+  ASSERT_TRUE(l.direction);
+  for (std::size_t i = 0; i < p->glyphs.sources.size(); ++i) {
+    const GlyphSource& g = p->glyphs.sources[i];
+    const Rgb expected = color.to_scene_linear(direction_srgb(g.axes.col(0), fractional_anisotropy(g.eigenvalues)));
+    for (int c = 0; c < 3; ++c) ASSERT_FLOAT_EQ(p->field.sources[i].color[std::size_t(c)], expected[std::size_t(c)]);
+  }
+  // Seen along +y, x runs right, z up and y away.
+  const auto& axes = l.direction->axes;
+  EXPECT_NEAR(axes[0][0], 1.0, 1e-9);
+  EXPECT_NEAR(axes[2][1], 1.0, 1e-9);
+  EXPECT_NEAR(std::hypot(axes[1][0], axes[1][1]), 0.0, 1e-9);
+  // The key lies inside the picture, in the part the camera leaves it.
+  EXPECT_GT(l.triad_x - l.triad_r, (1.0 - l.reserved) * p->render.width);
+  EXPECT_LT(l.triad_x + l.triad_r, p->render.width);
+  EXPECT_GT(l.triad_y - l.triad_r, 0.0);
+  EXPECT_LT(l.triad_title_y, p->render.height);
+
+  // The x axis' line is red in the picture, the z axis' blue.
+  const RenderSummary png = render(path);
+  auto in = open_image(png.image_path);
+  ASSERT_TRUE(in);
+  const int w = in->spec().width, h = in->spec().height;
+  std::vector<float> pixels(std::size_t(w) * std::size_t(h) * 3);
+  ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, pixels.data()));
+  const auto at = [&](double x, double y) {
+    const std::size_t i = (std::size_t(std::lround(y)) * std::size_t(w) + std::size_t(std::lround(x))) * 3;
+    return std::array<float, 3>{pixels[i], pixels[i + 1], pixels[i + 2]};
+  };
+  const auto red = at(l.triad_x + 0.7 * l.triad_r, l.triad_y), blue = at(l.triad_x, l.triad_y - 0.7 * l.triad_r);
+  EXPECT_GT(red[0], red[1] + 0.3f);
+  EXPECT_GT(red[0], red[2] + 0.3f);
+  EXPECT_GT(blue[2], blue[0] + 0.3f);
+  EXPECT_GT(blue[2], blue[1] + 0.3f);
+
+  const RenderSummary pdf = render(path, {"output.file=\"d.pdf\""});
+  const std::string text = output_of("pdftotext '" + pdf.image_path + "' -");
+  for (const char* word : {"direction of e", "FA"}) EXPECT_NE(text.find(word), std::string::npos) << text;
 }
 
 // A colour bar's title longer than the bar (a short picture, a long

@@ -1,0 +1,27 @@
+#include "renderer/image/direction_key.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hsb {
+
+namespace {
+// The colour of no direction: the grey an uncoloured glyph gets.
+constexpr double kGrey = 0.62;
+}  // namespace
+
+Rgb direction_srgb(const Vec3& direction, double weight) {
+  const double w = std::clamp(weight, 0.0, 1.0);
+  Rgb c;
+  for (int k = 0; k < 3; ++k)
+    c[std::size_t(k)] = float(w * std::min(1.0, std::fabs(direction[k])) + (1.0 - w) * kGrey);
+  return c;
+}
+
+DirectionKey direction_key(const Vec3& right, const Vec3& up) {
+  DirectionKey key;
+  for (int k = 0; k < 3; ++k) key.axes[std::size_t(k)] = {right[k], up[k]};
+  return key;
+}
+
+}  // namespace hsb
