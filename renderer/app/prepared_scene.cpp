@@ -388,6 +388,15 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   const double extent = glyph_extent(s.surface);
   p.glyphs = build_glyph_scene(s.pipeline, extent, [&](const Box3& domain) { check_data_lengths(s, domain.diagonal()); });
   p.warnings = p.glyphs.warnings;
+  // A diffusion volume's glyph field: superquadrics, which tell a line
+  // from a disc where ellipsoids blur them (Kindlmann), as Teem draws it.
+  // (Not where the scene asks for the exact intersector, ellipsoids' own.)
+  if (!s.surface.shape_given && p.glyphs.quantity == DataQuantity::diffusion &&
+      p.glyphs.placement == SourcePlacement::at_data_points && s.render.intersector != Intersector::exact)
+    p.spec.surface.shape = GlyphShape::superquadric;
+  p.resolve("glyphs.shape", s.surface.shape == GlyphShape::ellipsoid      ? "ellipsoid"
+                            : s.surface.shape == GlyphShape::superquadric ? "superquadric"
+                                                                          : "signed");
   record_field_values(p);
   const Box3& domain = p.glyphs.domain;
   const double diagonal = domain.diagonal();

@@ -213,9 +213,11 @@ void read_glyphs(TableReader& g, GlyphPipelineSpec& spec, SurfaceSpec& surface, 
   } else if (spec.placement == SourcePlacement::list) {
     g.fail_at("placement", "= \"list\" needs glyphs.file, a CSV file of sources");
   }
-  surface.shape = g.choice<GlyphShape>("shape", {{"ellipsoid", GlyphShape::ellipsoid},
-                                                 {"superquadric", GlyphShape::superquadric},
-                                                 {"signed", GlyphShape::signed_superquadric}});
+  surface.shape_given = g.has("shape");
+  surface.shape = g.choice<GlyphShape>("shape", GlyphShape::ellipsoid,
+                                       {{"ellipsoid", GlyphShape::ellipsoid},
+                                        {"superquadric", GlyphShape::superquadric},
+                                        {"signed", GlyphShape::signed_superquadric}});
   if (g.has("sharpness") && surface.shape == GlyphShape::ellipsoid)
     g.fail_at("sharpness", "applies only to glyphs.shape = \"superquadric\" or \"signed\"");
   surface.sharpness = g.number("sharpness");

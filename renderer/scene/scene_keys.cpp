@@ -215,7 +215,8 @@ std::vector<KeySchema> build_keys() {
                      "each line's own) for stress, \"direction\" for diffusion, \"speed\" for a flow"),
       Key("glyphs.thickness", T::number, "2-D data: the glyphs' thickness across the plane").length()
           .automatic("each glyph's smaller in-plane diameter"),
-      Key("glyphs.shape", T::choice, "each glyph's form").choices({"ellipsoid", "superquadric", "signed"}).fallback("\"ellipsoid\""),
+      Key("glyphs.shape", T::choice, "each glyph's form").choices({"ellipsoid", "superquadric", "signed"})
+          .automatic("\"superquadric\" for a diffusion volume's glyphs at its points (as Teem draws them); else \"ellipsoid\""),
       Key("glyphs.sharpness", T::number, "superquadric and signed: γ, how sharp its edges (Teem's tend glyph -sh)")
           .range(0.0, 10.0).fallback("3"),
       Key("glyphs.stretch", T::number, "streamballs: the radius along the flow times this").range(1.0, 100.0).fallback("1"),

@@ -30,7 +30,10 @@ struct SurfaceSpec {
   double influence_radius = 1.0;  // R of eq. 10/11, fixed for all sources
   double isovalue = 0.5;          // C
   // Read from [glyphs]: each glyph's form, and a superquadric's sharpness γ.
+  // Automatic (shape_given false): the ellipsoid, or the superquadric for
+  // a diffusion volume's glyphs at its points.
   GlyphShape shape = GlyphShape::ellipsoid;
+  bool shape_given = false;
   double sharpness = 3.0;
 };
 
