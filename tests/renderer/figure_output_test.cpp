@@ -213,6 +213,29 @@ TEST_F(FigureOutput, SignedGlyphsGetAShapeKeyBesideTheBar) {
   }
 }
 
+// Teem's helix given alone is read as diffusion: direction colours with
+// their key, and its glyph field as superquadrics unless a shape is named.
+TEST(DiffusionFigure, TeemsHelixAloneGetsDirectionColourAndSuperquadricGlyphs) {
+  const ColorManagement color("", "");
+  const std::string helix = std::string(HSB_SOURCE_DIR) + "/scenes/data/formats/teem_helix.nrrd";
+  const auto prepared = [&](const std::vector<std::string>& overrides) {
+    return prepare_scene(load_scene_or_data_file(helix, overrides), color);
+  };
+  const std::unique_ptr<PreparedScene> lines = prepared({"render.width=200"});
+  EXPECT_EQ(lines->glyphs.quantity, DataQuantity::diffusion);
+  EXPECT_EQ(lines->glyphs.color, ColorScalar::direction);
+  ASSERT_TRUE(lines->output.legend);
+  EXPECT_TRUE(lines->output.legend->direction);
+  EXPECT_EQ(lines->spec.surface.shape, GlyphShape::ellipsoid);  // hyperstreamballs keep the paper's glyph
+  const std::unique_ptr<PreparedScene> field = prepared({"render.width=200", "glyphs.placement=points"});
+  EXPECT_EQ(field->spec.surface.shape, GlyphShape::superquadric);
+  EXPECT_EQ(field->resolved["glyphs"]["shape"].value_or(std::string()), "superquadric");
+  EXPECT_EQ(prepared({"render.width=200", "glyphs.placement=points", "glyphs.shape=ellipsoid"})->spec.surface.shape,
+            GlyphShape::ellipsoid);
+  EXPECT_EQ(prepared({"render.width=200", "glyphs.placement=points", "data.quantity=stress"})->spec.surface.shape,
+            GlyphShape::ellipsoid);
+}
+
 // Direction colour (the default for diffusion data, asked for here on the
 // plate's stress): each glyph the colour of its major eigenvector, faded
 // to grey as FA falls, and a key of the data's axes as the camera sees
