@@ -337,6 +337,13 @@ std::vector<GlyphSource> sources_at_sites(const DataSites& sites, std::size_t st
   return sources;
 }
 
+// How many sites hold a tensor inside the region.
+std::size_t sites_in_region(const DataSites& sites, const RegionSpec& region) {
+  std::size_t n = 0;
+  for (const Sym3& t : sites.tensors) n += t.is_finite() && region.holds(decompose(t).values);
+  return n;
+}
+
 // Sources the scene itself gives (a curve, a list): no data set, sizes as
 // given, the domain what they cover.
 GlyphScene given_sources(const GlyphPipelineSpec& spec, double glyph_extent) {
@@ -589,9 +596,9 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   scene.color = resolve_color(spec, loaded, families, scene.placement, scene.quantity);
   scene.values = resolve_lengths(spec, scene.domain, loaded, separation, families, scene.quantity);
   scene.values.region = region;
-  if (region.above) {
+  if (region.above || spec.trajectory.stop_below) {
     scene.values.trajectory.measure = [measure = region.measure](const Vec3& l) { return color_scalar(l, measure); };
-    scene.values.trajectory.min_measure = *region.above;
+    scene.values.trajectory.min_measure = spec.trajectory.stop_below.value_or(region.above.value_or(0.0));
   }
   if (data.kind == DataKind::point_load) scene.values.singular_radius = data.point_load.singular_radius;
   const GlyphValues& values = scene.values;
@@ -638,14 +645,20 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
     const std::size_t sites = loaded.sites.positions.size();
     if (data.kind != DataKind::vtk_file)
       throw DataError("glyphs.placement = \"points\" needs a data file: the point load has no data points");
-    scene.values.stride = spec.stride.value_or(automatic_stride(sites));
-    const std::size_t shown = (sites + std::size_t(scene.values.stride) - 1) / std::size_t(scene.values.stride);
+    // The stride thins the glyphs the region keeps; they stand as far
+    // apart as the data's points at that stride.
+    const std::size_t kept = region.above ? sites_in_region(loaded.sites, region) : sites;
+    scene.values.stride = spec.stride.value_or(automatic_stride(kept));
+    const auto thinned = [&](std::size_t n) {
+      return (n + std::size_t(scene.values.stride) - 1) / std::size_t(scene.values.stride);
+    };
+    const std::size_t shown = thinned(kept);
     std::ostringstream what;
     what << "the glyphs (one at each of " << shown << " data points, glyphs.stride " << scene.values.stride << ")";
     scene.memory_estimate = resident_bytes() + double(shown) * kBytesPerSource;
     check_memory(scene.memory_estimate, what.str(), "raise glyphs.stride");
     scene.sources = sources_at_sites(loaded.sites, std::size_t(scene.values.stride), color, region);
-    gap = site_gap(scene.domain, shown);
+    gap = site_gap(scene.domain, thinned(sites));
   } else if (scene.placement == SourcePlacement::at_seeds) {
     scene.trajectories.clear();  // even seeding's lines only chose the seeds
     scene.memory_estimate = resident_bytes() + double(seeds.size()) * kBytesPerSource;

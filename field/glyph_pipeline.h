@@ -109,6 +109,10 @@ struct TrajectorySpec {
   int max_steps = 100000;
   TraceDirection direction = TraceDirection::both;
   std::optional<double> max_turn;  // degrees per step; automatic: no limit
+  // Lines end where the region's measure falls below this (automatic: the
+  // region's own threshold, its edge): seeds in the fibres' core, lines
+  // followed out to their fringe, as tractography seeds and stops.
+  std::optional<double> stop_below;
 };
 
 // How eigenvalues become radii; scale, floor and ceiling left out are

@@ -232,6 +232,7 @@ void record_field_values(PreparedScene& p) {
   p.resolve("trajectories.min_magnitude", v.trajectory.min_magnitude);
   p.resolve("trajectories.max_turn", v.trajectory.max_turn);
   if (v.region.above) p.resolve("region.above", *v.region.above);
+  if (v.trajectory.measure) p.resolve("trajectories.stop_below", v.trajectory.min_measure);
   if (p.glyphs.placement == SourcePlacement::at_data_points) {
     p.resolve("glyphs.placement", "points");  // data without volume takes it whatever the scene says
     p.resolve("glyphs.stride", v.stride);

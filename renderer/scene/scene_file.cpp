@@ -164,6 +164,7 @@ void read_trajectories(TableReader& t, TrajectorySpec& spec) {
   spec.direction = t.choice<TraceDirection>("direction", {{"both", TraceDirection::both}, {"forward", TraceDirection::forward},
                                           {"backward", TraceDirection::backward}});
   spec.max_turn = t.optional_number("max_turn");
+  spec.stop_below = t.optional_number("stop_below");
   t.finish();
 }
 

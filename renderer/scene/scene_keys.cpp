@@ -193,6 +193,8 @@ std::vector<KeySchema> build_keys() {
       Key("trajectories.max_steps", T::integer, "guard on the steps per direction").range(1, std::numeric_limits<int>::max()).fallback("100000"),
       Key("trajectories.direction", T::choice, "trace both ways, or only along or against the field")
           .choices({"both", "forward", "backward"}).fallback("\"both\""),
+      Key("trajectories.stop_below", T::number, "end lines where region.measure falls below this")
+          .automatic("region.above: lines end at the region's edge; none without a region"),
       Key("trajectories.max_turn", T::number, "stop before a step that turns more than this many degrees from the last")
           .range(0.0, 180.0).automatic("180: no limit"),
 

@@ -108,10 +108,35 @@ TEST(Region, GlyphsAtDataPointsOnlyInsideIt) {
   const GlyphScene inside = build_glyph_scene(spec, kExtent);
   ASSERT_FALSE(inside.sources.empty());
   for (const GlyphSource& s : inside.sources) EXPECT_GE(fractional_anisotropy(s.eigenvalues), 0.3);
+  // The automatic stride thins what the region keeps (fewer than 20,000
+  // here: none), not every point of the volume (29,791: every other).
+  spec.stride.reset();
+  const GlyphScene automatic = build_glyph_scene(spec, kExtent);
+  EXPECT_EQ(automatic.values.stride, 1);
+  EXPECT_EQ(automatic.sources.size(), inside.sources.size());
+  spec.stride = 1;
   spec.region.above = 0.0;  // FA ≥ 0: everywhere
   const GlyphScene all = build_glyph_scene(spec, kExtent);
   EXPECT_EQ(all.sources.size(), 31u * 31u * 31u);
   EXPECT_LT(inside.sources.size(), all.sources.size() / 10);
+}
+
+// Seeds in the core, lines followed out through the fringe.
+TEST(Region, LinesRunOnToALowerStoppingThreshold) {
+  GlyphPipelineSpec spec = spec_for(0.6);
+  spec.trajectory.stop_below = 0.3;
+  const GlyphScene scene = build_glyph_scene(spec, kExtent);
+  const LoadedField data = make_field(spec.data);
+  ASSERT_FALSE(scene.trajectories.empty());
+  for (const Vec3& seed : scene.values.seeds.points) EXPECT_GE(fa_in(data, seed), 0.6);
+  double lowest = 1.0;
+  for (const Trajectory& t : scene.trajectories)
+    for (const Vec3& p : t.points) {
+      ASSERT_GE(fa_in(data, p), 0.3) << p.transpose();
+      lowest = std::min(lowest, fa_in(data, p));
+    }
+  EXPECT_LT(lowest, 0.6);  // out of the core
+  EXPECT_EQ(scene.values.trajectory.min_measure, 0.3);
 }
 
 TEST(Region, AnotherMeasureAndExplicitSeeds) {
