@@ -61,7 +61,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, Golden,
                          ::testing::Values("ellipsoids_at_seeds", "hyperstreamlines_quartic",
                                            "union_of_ellipsoids", "cylinder_hyperstreamlines",
                                            "streamballs_double_glazing", "panels_along_a_curve",
-                                           "signed_hyperstreamlines", "signed_beads"),
+                                           "signed_hyperstreamlines", "signed_beads", "diffusion_glyph_field"),
                          [](const ::testing::TestParamInfo<std::string>& param) { return param.param; });
 
 }  // namespace
