@@ -311,14 +311,33 @@ SourcePlacement resolved_placement(const GlyphPipelineSpec& spec, const LoadedFi
   return SourcePlacement::at_data_points;
 }
 
-// A glyph at every stride-th site, from the value there (a tensor glyph or
-// a streamball), coloured by the chosen scalar or the colour array there.
-// Sites without a finite value (or colour), or outside the region, get none.
-std::vector<GlyphSource> sources_at_sites(const DataSites& sites, std::size_t stride, ColorScalar color,
-                                          const RegionSpec& region) {
+// The sites a glyph field draws from: every one, or with a region those
+// whose tensor lies in it (each decomposed once, in parallel).
+std::vector<std::size_t> sites_to_draw(const DataSites& sites, const RegionSpec& region) {
+  std::vector<std::size_t> which;
+  if (!region.above || sites.tensors.empty()) {
+    which.resize(sites.positions.size());
+    for (std::size_t i = 0; i < which.size(); ++i) which[i] = i;
+    return which;
+  }
+  std::vector<char> inside(sites.tensors.size());
+  tbb::parallel_for(std::size_t{0}, inside.size(), [&](std::size_t i) {
+    inside[i] = sites.tensors[i].is_finite() && region.holds(decompose(sites.tensors[i]).values);
+  });
+  for (std::size_t i = 0; i < inside.size(); ++i)
+    if (inside[i]) which.push_back(i);
+  return which;
+}
+
+// A glyph at every stride-th of the sites `which`, from the value there (a
+// tensor glyph or a streamball), coloured by the chosen scalar or the
+// colour array there. Sites without a finite value (or colour) get none.
+std::vector<GlyphSource> sources_at_sites(const DataSites& sites, const std::vector<std::size_t>& which,
+                                          std::size_t stride, ColorScalar color) {
   std::vector<GlyphSource> sources;
   const bool flow = !sites.vectors.empty();
-  for (std::size_t i = 0; i < sites.positions.size(); i += stride) {
+  for (std::size_t k = 0; k < which.size(); k += stride) {
+    const std::size_t i = which[k];
     GlyphSource source;
     if (flow) {
       if (!sites.vectors[i].allFinite()) continue;
@@ -326,7 +345,6 @@ std::vector<GlyphSource> sources_at_sites(const DataSites& sites, std::size_t st
     } else {
       if (i >= sites.tensors.size() || !sites.tensors[i].is_finite()) continue;
       source = make_source(sites.positions[i], sites.tensors[i], color);
-      if (!region.holds(source.eigenvalues)) continue;
     }
     if (color == ColorScalar::array) {
       if (i >= sites.colors.size() || !std::isfinite(sites.colors[i])) continue;
@@ -335,13 +353,6 @@ std::vector<GlyphSource> sources_at_sites(const DataSites& sites, std::size_t st
     sources.push_back(source);
   }
   return sources;
-}
-
-// How many sites hold a tensor inside the region.
-std::size_t sites_in_region(const DataSites& sites, const RegionSpec& region) {
-  std::size_t n = 0;
-  for (const Sym3& t : sites.tensors) n += t.is_finite() && region.holds(decompose(t).values);
-  return n;
 }
 
 // Sources the scene itself gives (a curve, a list): no data set, sizes as
@@ -647,7 +658,8 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
       throw DataError("glyphs.placement = \"points\" needs a data file: the point load has no data points");
     // The stride thins the glyphs the region keeps; they stand as far
     // apart as the data's points at that stride.
-    const std::size_t kept = region.above ? sites_in_region(loaded.sites, region) : sites;
+    const std::vector<std::size_t> drawn = sites_to_draw(loaded.sites, region);
+    const std::size_t kept = drawn.size();
     scene.values.stride = spec.stride.value_or(automatic_stride(kept));
     const auto thinned = [&](std::size_t n) {
       return (n + std::size_t(scene.values.stride) - 1) / std::size_t(scene.values.stride);
@@ -657,7 +669,7 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
     what << "the glyphs (one at each of " << shown << " data points, glyphs.stride " << scene.values.stride << ")";
     scene.memory_estimate = resident_bytes() + double(shown) * kBytesPerSource;
     check_memory(scene.memory_estimate, what.str(), "raise glyphs.stride");
-    scene.sources = sources_at_sites(loaded.sites, std::size_t(scene.values.stride), color, region);
+    scene.sources = sources_at_sites(loaded.sites, drawn, std::size_t(scene.values.stride), color);
     gap = site_gap(scene.domain, thinned(sites));
   } else if (scene.placement == SourcePlacement::at_seeds) {
     scene.trajectories.clear();  // even seeding's lines only chose the seeds
