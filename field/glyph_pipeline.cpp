@@ -30,6 +30,7 @@ LoadedField make_field(const DataSpec& spec) {
     loaded.color = std::move(data.color);
     loaded.boundary = std::move(data.boundary);
     loaded.plane_axis = data.plane_axis;
+    loaded.anatomical_frame = data.anatomical_frame;
     loaded.warnings = std::move(data.warnings);
     loaded.sites = std::move(data.sites);
     loaded.no_volume = std::move(data.no_volume);
@@ -563,6 +564,7 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   if (with_domain) with_domain(scene.domain);
   scene.boundary = std::move(loaded.boundary);
   scene.plane_axis = loaded.plane_axis;
+  scene.anatomical_frame = loaded.anatomical_frame;
   scene.warnings = std::move(loaded.warnings);
   scene.placement = resolved_placement(spec, loaded, scene.warnings);
   scene.quantity = data.quantity.value_or(

@@ -187,6 +187,7 @@ struct GlyphScene {
   std::vector<GlyphSource> sources;
   std::optional<TriangleMesh> boundary;  // a mesh's outer surface (none for analytic data)
   std::optional<int> plane_axis;         // a 2-D result: its plane's normal axis (seen along it)
+  std::string anatomical_frame;          // where the axes point ("RAS"), where the file says; else ""
   GlyphValues values;
   std::vector<std::string> warnings;     // about the data, for the user
   // The peak resident memory this scene will take once rendered, the
@@ -202,6 +203,7 @@ struct LoadedField {
   double max_speed = 0.0;                // of the flow's values
   std::optional<TriangleMesh> boundary;
   std::optional<int> plane_axis;  // a 2-D result (field/reading/vtk_data.h)
+  std::string anatomical_frame;   // "RAS", "LPS" where the format says (field/reading/vtk_data.h)
   std::vector<std::string> warnings;
   DataSites sites;        // the data's values where they stand (placement points, data without volume)
   std::string no_volume;  // why the data has no volume to trace in ("": it has)

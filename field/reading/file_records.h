@@ -13,6 +13,11 @@ class vtkFieldData;
 
 namespace hsb {
 
+// The record of the anatomical directions the world's axes point to, three
+// letters ("RAS": x to the right, y anterior, z superior; "LPS"), kept by
+// the readers whose formats say so (NIfTI's scanner space, NRRD's `space`).
+inline constexpr const char* kAnatomicalFrame = "anatomical_frame";
+
 // Stores `values` under `key` (replacing an earlier record of that key).
 void add_record(vtkFieldData* records, const std::string& key, const std::vector<std::string>& values);
 

@@ -30,6 +30,7 @@
 #include "field/reading/component_arrays.h"
 #include "field/reading/component_order.h"
 #include "field/reading/data_error.h"
+#include "field/reading/file_records.h"
 #include "field/reading/format_reader.h"
 
 namespace hsb {
@@ -109,6 +110,9 @@ vtkSmartPointer<vtkImageData> read_nifti(const std::string& path) {
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) matrix->SetElement(r, c, direction(r, c));
   image->SetDirectionMatrix(matrix);
+  // Through the sform or the qform, the world is the scanner's RAS+.
+  if (header->GetSFormCode() > 0 || header->GetQFormCode() > 0)
+    add_record(image->GetFieldData(), kAnatomicalFrame, {"RAS"});
   if (values == 3) {
     image->GetPointData()->SetVectors(array);
     return image;

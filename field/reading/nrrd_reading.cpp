@@ -35,12 +35,14 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <cctype>
 #include <sstream>
 
 #include "base/input_file.h"
 #include "field/reading/component_arrays.h"
 #include "field/reading/component_order.h"
 #include "field/reading/data_error.h"
+#include "field/reading/file_records.h"
 #include "field/reading/format_reader.h"
 #include "field/tensor/sym3.h"
 
@@ -310,6 +312,27 @@ VoxelLayout voxel_layout(const Header& h, int values) {
 
 // The volume in `path`. Throws DataError naming the file and the header
 // line for anything it cannot read as described.
+// The anatomical letters of NRRD's `space` ("right-anterior-superior" or
+// "RAS", "left-posterior-superior" or "LPS", ...; a time axis after them
+// aside), or "" for a space without them ("scanner-xyz", "3D-right-handed").
+std::string anatomical_letters(const std::string& space) {
+  std::string letters;
+  if (space.find('-') == std::string::npos) {
+    letters = space;
+  } else {
+    std::istringstream words(space);
+    for (std::string word; std::getline(words, word, '-') && letters.size() < 3;)
+      if (!word.empty()) letters += word[0];
+  }
+  for (char& c : letters) c = char(std::toupper(static_cast<unsigned char>(c)));
+  if (letters.size() < 3) return "";
+  letters.resize(3);
+  const std::string pairs[3] = {"RL", "AP", "SI"};
+  for (int k = 0; k < 3; ++k)
+    if (pairs[k].find(letters[std::size_t(k)]) == std::string::npos) return "";
+  return letters;
+}
+
 vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path) {
   const Header h = read_header(path);
   const NumberType type = number_type(h);
@@ -408,6 +431,9 @@ vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path) {
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) matrix->SetElement(r, c, direction(r, c));
   image->SetDirectionMatrix(matrix);
+  if (const HeaderField* f = h.find("space"))
+    if (const std::string letters = anatomical_letters(f->value); !letters.empty())
+      add_record(image->GetFieldData(), kAnatomicalFrame, {letters});
   if (layout.kind == VoxelLayout::vector) {
     image->GetPointData()->SetVectors(array);
   } else {

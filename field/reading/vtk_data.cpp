@@ -31,6 +31,7 @@
 #include <sstream>
 
 #include "base/child_process.h"
+#include "field/reading/file_records.h"
 #include "base/input_file.h"
 #include "field/reading/block_merging.h"
 #include "field/reading/component_arrays.h"
@@ -523,6 +524,8 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
   }
   if (data->GetNumberOfCells() > 0) out.boundary = boundary_surface(data, spec.path);  // a shell's own surface too
   if (const std::optional<PlaneOfData> plane = plane_of(data)) out.plane_axis = plane->axis;
+  if (const std::vector<std::string> frame = record_of(data, kAnatomicalFrame); !frame.empty())
+    out.anatomical_frame = frame.front();
   return out;
 }
 

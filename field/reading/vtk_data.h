@@ -65,6 +65,9 @@ struct VtkData {
   // A 2-D result (field/reading/plane_data.h): the axis of its plane's normal.
   std::optional<int> plane_axis;
   std::vector<std::string> warnings;  // e.g. a non-symmetric tensor array
+  // The anatomical directions the axes point to ("RAS", "LPS"; file_records.h),
+  // where the format says; "" elsewhere.
+  std::string anatomical_frame;
   // Filled when VtkFileSpec::sites asks, and always for data without
   // volume, which has nothing else to show.
   DataSites sites;

@@ -319,9 +319,9 @@ std::array<int, 2> picture_size(const SceneSpec& s) {
 
 namespace {
 // The direction key for the data's axes as `camera` sees them.
-DirectionKey view_direction_key(const CameraSpec& camera) {
+DirectionKey view_direction_key(const CameraSpec& camera, const std::string& anatomical_frame) {
   const Vec3 forward = (camera.look_at - camera.position).normalized(), right = forward.cross(camera.up).normalized();
-  return direction_key(right, right.cross(forward));
+  return direction_key(right, right.cross(forward), anatomical_frame);
 }
 }  // namespace
 
@@ -334,7 +334,8 @@ LegendLayout legend_for(const PreparedScene& p, int width, int height) {
   style.dpi = o.dpi;
   LegendContent content;
   content.bar = p.glyphs.color != ColorScalar::none && p.glyphs.color != ColorScalar::direction;
-  if (p.glyphs.color == ColorScalar::direction) content.direction = view_direction_key(p.camera);
+  if (p.glyphs.color == ColorScalar::direction)
+    content.direction = view_direction_key(p.camera, p.glyphs.anatomical_frame);
   content.title = o.colorbar_title.value_or(scalar_title(p.glyphs.color, p.spec));
   // Stress of both signs: the bar's ends say which is which.
   if (content.bar && carries_stress_sign(p.glyphs.color) && !p.scale.log && p.scale.lo < 0.0 && p.scale.hi > 0.0) {
@@ -493,7 +494,8 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   p.camera = frame_camera(camera, framed, p.render.width, p.render.height, reserve);
   // The legend was laid out before the camera was framed (its part of the
   // picture is kept from the view): its axes are the view's.
-  if (p.output.legend && p.output.legend->direction) p.output.legend->direction = view_direction_key(p.camera);
+  if (p.output.legend && p.output.legend->direction)
+    p.output.legend->direction = view_direction_key(p.camera, p.glyphs.anatomical_frame);
   p.resolve("camera.position", toml_vec3(p.camera.position));
   p.resolve("camera.look_at", toml_vec3(p.camera.look_at));
   p.resolve("camera.up", toml_vec3(p.camera.up));

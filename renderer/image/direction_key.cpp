@@ -18,9 +18,11 @@ Rgb direction_srgb(const Vec3& direction, double weight) {
   return c;
 }
 
-DirectionKey direction_key(const Vec3& right, const Vec3& up) {
+DirectionKey direction_key(const Vec3& right, const Vec3& up, const std::string& anatomical_frame) {
   DirectionKey key;
   for (int k = 0; k < 3; ++k) key.axes[std::size_t(k)] = {right[k], up[k]};
+  if (anatomical_frame.size() == 3)
+    for (std::size_t k = 0; k < 3; ++k) key.labels[k] = std::string(1, anatomical_frame[k]);
   return key;
 }
 

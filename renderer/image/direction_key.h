@@ -29,11 +29,14 @@ struct DirectionKey {
   // Each world axis's unit vector as the camera sees it: its components
   // along the picture's right and up, each in [−1, 1].
   std::array<std::array<double, 2>, 3> axes{};
+  // Each axis' positive end: "x", "y", "z", or the anatomical direction it
+  // points to ("R", "A", "S").
   std::array<std::string, 3> labels{"x", "y", "z"};
 };
 
 // The key for a view whose picture's right and up are `right` and `up`
-// (unit, world coordinates).
-DirectionKey direction_key(const Vec3& right, const Vec3& up);
+// (unit, world coordinates), its ends named by `anatomical_frame` where
+// the data has one ("RAS": x to the right, y anterior, z superior).
+DirectionKey direction_key(const Vec3& right, const Vec3& up, const std::string& anatomical_frame = "");
 
 }  // namespace hsb

@@ -84,6 +84,8 @@ TEST(NiftiReading, SymmetricMatrixIntentIsTheLowerTriangleInTheSpace) {
   expect_space_tensors(path, turned_place);
   EXPECT_NE(describe_vtk_file({path}).find("order     recorded in the file: NIfTI's symmetric-matrix intent"),
             std::string::npos);
+  // Placed by its sform, the world is the scanner's RAS+.
+  EXPECT_EQ(load_vtk_data({path}).anatomical_frame, "RAS");
 }
 
 TEST(NiftiReading, MrtrixSaysSoInItsDescription) {

@@ -115,6 +115,24 @@ TEST(NrrdReading, ADetachedHeaderNamesItsData) {
   EXPECT_EQ(data_files_read(path).size(), 2u);
 }
 
+// The space's anatomical directions reach the data (for the direction
+// key's labels), in NRRD's long and short spellings; a space without
+// anatomy has none.
+TEST(NrrdReading, TheSpaceSaysWhereTheAxesPoint) {
+  const std::string raw = bytes_of(masked_values());
+  const std::string base = header("raw");
+  const auto frame_of = [&](const std::string& space) {
+    std::string content = base + "\n" + raw;
+    content.replace(content.find("right-anterior-superior"), 23, space);
+    return load_vtk_data({write_file("space.nrrd", content)}).anatomical_frame;
+  };
+  EXPECT_EQ(frame_of("right-anterior-superior"), "RAS");
+  EXPECT_EQ(frame_of("left-posterior-superior"), "LPS");
+  EXPECT_EQ(frame_of("LAS"), "LAS");
+  EXPECT_EQ(frame_of("scanner-xyz"), "");
+  EXPECT_EQ(frame_of("3D-right-handed"), "");
+}
+
 // Each broken header is one DataError that names the file and its line.
 TEST(NrrdReading, WhatIsWrongIsSaidAtItsLine) {
   const std::string raw = bytes_of(masked_values());

@@ -227,6 +227,8 @@ TEST(DiffusionFigure, TeemsHelixAloneGetsDirectionColourAndSuperquadricGlyphs) {
   ASSERT_TRUE(lines->output.legend);
   EXPECT_TRUE(lines->output.legend->direction);
   EXPECT_EQ(lines->spec.surface.shape, GlyphShape::ellipsoid);  // hyperstreamballs keep the paper's glyph
+  // Its NRRD says its space is right-anterior-superior: the key's ends say so.
+  EXPECT_EQ(lines->output.legend->direction->labels, (std::array<std::string, 3>{"R", "A", "S"}));
   const std::unique_ptr<PreparedScene> field = prepared({"render.width=200", "glyphs.placement=points"});
   EXPECT_EQ(field->spec.surface.shape, GlyphShape::superquadric);
   EXPECT_EQ(field->resolved["glyphs"]["shape"].value_or(std::string()), "superquadric");
@@ -261,6 +263,7 @@ TEST_F(FigureOutput, DirectionColourHasAnAxisKeyInsteadOfTheBar) {
   EXPECT_NEAR(axes[0][0], 1.0, 1e-9);
   EXPECT_NEAR(axes[2][1], 1.0, 1e-9);
   EXPECT_NEAR(std::hypot(axes[1][0], axes[1][1]), 0.0, 1e-9);
+  EXPECT_EQ(l.direction->labels, (std::array<std::string, 3>{"x", "y", "z"}));  // a VTK file has no anatomy
   // The key lies inside the picture, in the part the camera leaves it.
   EXPECT_GT(l.triad_x - l.triad_r, (1.0 - l.reserved) * p->render.width);
   EXPECT_LT(l.triad_x + l.triad_r, p->render.width);
