@@ -15,7 +15,8 @@ namespace hsb {
 enum class DataQuantity { stress, diffusion };
 
 // Recognised from eigenvalues sampled through the data (NaN-free, non-zero
-// ones count: diffusion tools write 0 outside the brain's mask) by what every diffusion tensor is and a stress seldom is:
+// ones count: diffusion tools write 0 outside the brain's mask) by what
+// every diffusion tensor is and a stress seldom is:
 //  - positive definite almost everywhere, λ3 > 0 at 90 % of the samples
 //    (fitting noise leaves a few voxels indefinite), and not flat: the
 //    median λ3/λ1 at least 0.05 (tissue's FA stays below about 0.95; a

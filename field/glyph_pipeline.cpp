@@ -398,29 +398,27 @@ constexpr double kFamilyFloor = 0.05;
 // The FA a diffusion volume's picture keeps above by default.
 constexpr double kDiffusionRegion = 0.3;
 
-// The eigenvalues on a 16³ grid over the data's bounds (NaN where it has
-// none): enough to tell what the data holds.
-std::vector<Vec3> eigenvalues_on_grid(const TensorField& tensors) {
-  constexpr int n = 16;
-  const Box3 b = tensors.bounds();
-  std::vector<Vec3> values(std::size_t(n * n * n), Vec3::Constant(std::numeric_limits<double>::quiet_NaN()));
-  tbb::parallel_for(0, n * n * n, [&](int i) {
-    const Vec3 f((i % n + 0.5) / n, (i / n % n + 0.5) / n, (i / (n * n) + 0.5) / n);
-    if (const std::optional<Sym3> t = tensors.sample(b.lo + b.size().cwiseProduct(f)))
-      values[std::size_t(i)] = decompose(*t).values;
+// The eigenvalues at `points` (NaN where the data has none), in parallel.
+std::vector<Vec3> eigenvalues_at(const std::vector<Vec3>& points, const TensorField& tensors) {
+  std::vector<Vec3> values(points.size(), Vec3::Constant(std::numeric_limits<double>::quiet_NaN()));
+  tbb::parallel_for(std::size_t{0}, values.size(), [&](std::size_t i) {
+    if (const std::optional<Sym3> t = tensors.sample(points[i])) values[i] = decompose(*t).values;
   });
   return values;
 }
 
-// The eigenvalues at the body lattice's points, sampled once for the
-// choice of families and each family's own magnitudes (NaN where the data
-// has none).
-std::vector<Vec3> eigenvalues_in_body(const BodyLattice& body, const TensorField& tensors) {
-  std::vector<Vec3> values(body.points.size(), Vec3::Constant(std::numeric_limits<double>::quiet_NaN()));
-  tbb::parallel_for(std::size_t{0}, values.size(), [&](std::size_t i) {
-    if (const std::optional<Sym3> t = tensors.sample(body.points[i])) values[i] = decompose(*t).values;
-  });
-  return values;
+// The eigenvalues on a 16³ grid over the data's bounds: enough to tell
+// what the data holds.
+std::vector<Vec3> eigenvalues_on_grid(const TensorField& tensors) {
+  constexpr int n = 16;
+  const Box3 b = tensors.bounds();
+  std::vector<Vec3> points;
+  points.reserve(std::size_t(n * n * n));
+  for (int i = 0; i < n * n * n; ++i) {
+    const Vec3 cell_centre((i % n + 0.5) / n, (i / n % n + 0.5) / n, (i / (n * n) + 0.5) / n);
+    points.push_back(b.lo + b.size().cwiseProduct(cell_centre));
+  }
+  return eigenvalues_at(points, tensors);
 }
 
 // The families traced when the scene names none: major and minor
@@ -567,8 +565,10 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   scene.anatomical_frame = loaded.anatomical_frame;
   scene.warnings = std::move(loaded.warnings);
   scene.placement = resolved_placement(spec, loaded, scene.warnings);
-  scene.quantity = data.quantity.value_or(
-      tensors && data.kind == DataKind::vtk_file ? recognised_quantity(eigenvalues_on_grid(*tensors)) : DataQuantity::stress);
+  // Sampled only when the scene does not say.
+  scene.quantity = data.quantity                                     ? *data.quantity
+                   : tensors && data.kind == DataKind::vtk_file ? recognised_quantity(eigenvalues_on_grid(*tensors))
+                                                                : DataQuantity::stress;
   // Diffusion: the fibres, where FA > 0.3, the usual threshold for white matter.
   RegionSpec region = spec.region;
   if (scene.quantity == DataQuantity::diffusion && !region.above && !flow) region.above = kDiffusionRegion;
@@ -600,7 +600,9 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   }
   // Tensor lines need their eigenvalues over the body; a flow has one
   // direction, no families.
-  const std::vector<Vec3> body_eigenvalues = flow ? std::vector<Vec3>{} : eigenvalues_in_body(body, *tensors);
+  // The eigenvalues at the body lattice's points, sampled once for the
+  // choice of families and each family's own magnitudes.
+  const std::vector<Vec3> body_eigenvalues = flow ? std::vector<Vec3>{} : eigenvalues_at(body.points, *tensors);
   std::vector<EigenFamily> families = {EigenFamily::major};
   if (!flow && !spec.trajectory.families.empty())
     families = spec.trajectory.families;

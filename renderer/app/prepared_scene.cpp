@@ -351,10 +351,6 @@ bool wants_shape_key(const SceneSpec& spec) {
   return spec.output.shape_key.value_or(spec.surface.shape == GlyphShape::signed_superquadric);
 }
 
-// The sRGB colour every glyph gets with glyphs.color_by = "none": a middle
-// grey, dark enough to stand out from a white background and a light
-// shell, light enough for shading to model it.
-constexpr Rgb kUncoloured{0.62f, 0.62f, 0.62f};
 
 // Source i's sRGB colour on `scale`.
 Rgb source_srgb(const PreparedScene& p, const ColorScale& scale, std::size_t i) {
@@ -396,9 +392,7 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   if (!s.surface.shape_given && p.glyphs.quantity == DataQuantity::diffusion &&
       p.glyphs.placement == SourcePlacement::at_data_points && s.render.intersector != Intersector::exact)
     p.spec.surface.shape = GlyphShape::superquadric;
-  p.resolve("glyphs.shape", s.surface.shape == GlyphShape::ellipsoid      ? "ellipsoid"
-                            : s.surface.shape == GlyphShape::superquadric ? "superquadric"
-                                                                          : "signed");
+  p.resolve("glyphs.shape", glyph_shape_name(s.surface.shape));
   record_field_values(p);
   const Box3& domain = p.glyphs.domain;
   const double diagonal = domain.diagonal();

@@ -27,6 +27,12 @@ struct Colormap {
 const Colormap& colormap_named(const std::string& name);
 const std::vector<std::string>& colormap_names();
 
+// The sRGB colour every glyph gets with glyphs.color_by = "none", and
+// direction colour's where there is no direction: a middle grey, dark
+// enough to stand out from a white background and a light shell, light
+// enough for shading to model it.
+inline constexpr Rgb kUncoloured{0.62f, 0.62f, 0.62f};
+
 // A value range mapped onto a colormap, linearly or by the logarithm.
 struct ColorScale {
   const Colormap* map = nullptr;

@@ -3,18 +3,15 @@
 #include <algorithm>
 #include <cmath>
 
-namespace hsb {
+#include "renderer/image/colormap.h"
 
-namespace {
-// The colour of no direction: the grey an uncoloured glyph gets.
-constexpr double kGrey = 0.62;
-}  // namespace
+namespace hsb {
 
 Rgb direction_srgb(const Vec3& direction, double weight) {
   const double w = std::clamp(weight, 0.0, 1.0);
   Rgb c;
   for (int k = 0; k < 3; ++k)
-    c[std::size_t(k)] = float(w * std::min(1.0, std::fabs(direction[k])) + (1.0 - w) * kGrey);
+    c[std::size_t(k)] = float(w * std::min(1.0, std::fabs(direction[k])) + (1.0 - w) * kUncoloured[std::size_t(k)]);
   return c;
 }
 

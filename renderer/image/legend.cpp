@@ -382,7 +382,6 @@ LegendLayout layout_legend(const ColorScale& scale, const LegendContent& content
     l.key_y0 = 0.5 * (height - group) + group - key_h;
     l.triad_x = l.left + 0.5 * triad_w;
     l.triad_y = 0.5 * (height - group) + triad_above;
-    l.triad_title_y = l.triad_y + triad_above;
     l.top = 0.0;
     l.reserved = (block + margin) / width;
   } else {
@@ -405,10 +404,10 @@ LegendLayout layout_legend(const ColorScale& scale, const LegendContent& content
     l.bar_x1 = l.bar_x0 + length;
     l.triad_x = 0.5 * free_width;
     l.triad_y = height - margin - triad_h + triad_above;
-    l.triad_title_y = l.triad_y + triad_above;
     l.left = 0.0;
     l.reserved = (band + margin) / height;
   }
+  l.triad_title_y = l.triad_y + triad_above;
   // Fewer ticks where the bar is too short for their labels.
   for (int target = kDefaultTicks - 1; l.bar && !scale.log && target >= 2 && !tick_labels_fit(cr.get(), l, scale); --target)
     set_ticks(l, scale, target);

@@ -113,6 +113,15 @@ double superquadric_bound_scale(double alpha, double beta) {
 
 }  // namespace
 
+const char* glyph_shape_name(GlyphShape shape) {
+  switch (shape) {
+    case GlyphShape::ellipsoid: return "ellipsoid";
+    case GlyphShape::superquadric: return "superquadric";
+    case GlyphShape::signed_superquadric: return "signed";
+  }
+  return "?";
+}
+
 double shape_g(GlyphShape shape, const ShapeParams& params, const Vec3& q_s) {
   if (shape == GlyphShape::ellipsoid) return q_s.squaredNorm();
   const double n = superquadric_gauge(params, double(params.bound_scale) * q_s, nullptr);

@@ -57,6 +57,8 @@
 namespace hsb {
 
 enum class GlyphShape { ellipsoid, superquadric, signed_superquadric };
+// The name a scene gives it (glyphs.shape): "ellipsoid", "superquadric", "signed".
+const char* glyph_shape_name(GlyphShape shape);
 
 // The signed glyph's cone base radius ρ, in the glyph's scaled frame: its
 // points have a half-angle of atan ρ ≈ 56° and replace the faces beyond
