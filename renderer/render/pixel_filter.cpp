@@ -14,8 +14,8 @@ double blackman_harris(double d) {
   return 0.35875 - 0.48829 * std::cos(x) + 0.14128 * std::cos(2.0 * x) - 0.01168 * std::cos(3.0 * x);
 }
 
-// The window tabulated once: the gather evaluates it 25 times a sample, and
-// cosines would dominate the render. Linear interpolation between 4096
+// The window tabulated once: every sample needs it 2 × 5 times, and
+// cosines would show in the render. Linear interpolation between 4096
 // entries is within 1e-6 of the window.
 class WindowTable {
  public:
@@ -40,6 +40,14 @@ const WindowTable window;
 
 }  // namespace
 
-double filter_weight(double dx, double dy) { return window(dx) * window(dy); }
+FilterTaps filter_taps(float sx, float sy) {
+  FilterTaps taps;
+  for (int d = -kFilterReach; d <= kFilterReach; ++d) {
+    // The offset's sum in float, as the sample's position is kept.
+    taps.x[d + kFilterReach] = window(float(d) + sx - 0.5);
+    taps.y[d + kFilterReach] = window(float(d) + sy - 0.5);
+  }
+  return taps;
+}
 
 }  // namespace hsb

@@ -28,20 +28,24 @@ static_assert(kTile * kTile == kMaxPacket, "a tile fills one ray packet");
 // margins are kept; the rows are traced once each.
 constexpr int kBand = 16;
 
-// The camera samples of a window of picture rows, kept in a ring.
+// The camera samples of a window of picture rows, kept in a ring, with
+// each sample's filter taps.
 class SampleRows {
  public:
   SampleRows(int width, int per_pixel, int rows)
       : width_(width), per_pixel_(per_pixel), rows_(rows),
-        samples_(std::size_t(width) * std::size_t(per_pixel) * std::size_t(rows)) {}
-  CameraSample* pixel(int x, int y) {
-    const std::size_t slot = std::size_t(y % rows_);
-    return &samples_[(slot * std::size_t(width_) + std::size_t(x)) * std::size_t(per_pixel_)];
-  }
+        samples_(std::size_t(width) * std::size_t(per_pixel) * std::size_t(rows)), taps_(samples_.size()) {}
+  CameraSample* pixel(int x, int y) { return &samples_[slot(x, y)]; }
+  FilterTaps* taps(int x, int y) { return &taps_[slot(x, y)]; }
 
  private:
+  std::size_t slot(int x, int y) const {
+    const std::size_t row = std::size_t(y % rows_);
+    return (row * std::size_t(width_) + std::size_t(x)) * std::size_t(per_pixel_);
+  }
   int width_, per_pixel_, rows_;
   std::vector<CameraSample> samples_;
+  std::vector<FilterTaps> taps_;
 };
 
 // Where camera sample k of pixel (x, y) lies in the picture: stratified
@@ -91,6 +95,7 @@ void trace_rows(const RayScene& scene, const Camera& camera, const ShadingSpec& 
           sample_position(px[i], py[i], settings.width, k, per_pixel, position_x, position_y);
           stored.x = float(position_x - px[i]);  // within the pixel, where float keeps every bit
           stored.y = float(position_y - py[i]);
+          rows.taps(px[i], py[i])[k] = filter_taps(stored.x, stored.y);
         }
       }
     }
@@ -108,8 +113,9 @@ void gather_pixel(int x, int y, const RenderSettings& settings, int per_pixel, S
       const int nx = x + dx;
       if (nx < 0 || nx >= settings.width) continue;
       const CameraSample* samples = rows.pixel(nx, ny);
+      const FilterTaps* taps = rows.taps(nx, ny);
       for (int k = 0; k < per_pixel; ++k) {
-        const double w = filter_weight(float(dx) + samples[k].x - 0.5, float(dy) + samples[k].y - 0.5);
+        const double w = taps[k].x[dx + kFilterReach] * taps[k].y[dy + kFilterReach];
         if (w == 0.0) continue;
         const CameraSample& s = samples[k];
         for (int c = 0; c < 3; ++c) color[c] += w * s.color[std::size_t(c)];

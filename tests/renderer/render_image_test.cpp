@@ -98,11 +98,21 @@ TEST(RenderImage, GradientBackgroundRunsFromTopToBottom) {
 }
 
 TEST(PixelFilter, BlackmanHarrisIsOneAtTheCentreAndZeroAtTheRadius) {
-  EXPECT_NEAR(filter_weight(0, 0), 1.0, 1e-5);
-  EXPECT_NEAR(filter_weight(kFilterRadius, 0), 0.0, 1e-4);
-  EXPECT_EQ(filter_weight(kFilterRadius + 0.01, 0), 0.0);
-  EXPECT_NEAR(filter_weight(0.5, 0.25), filter_weight(-0.5, 0.25), 1e-12);  // symmetric
-  EXPECT_NEAR(filter_weight(0.5, 0.25), filter_weight(0.5, 0) * filter_weight(0, 0.25), 1e-12);  // separable
+  const int c = kFilterReach;  // the tap of the sample's own pixel
+  const FilterTaps centred = filter_taps(0.5f, 0.5f);
+  EXPECT_NEAR(centred.x[c], 1.0, 1e-5);
+  EXPECT_NEAR(centred.y[c], 1.0, 1e-5);
+  EXPECT_NEAR(centred.x[c - 1], centred.x[c + 1], 1e-12);  // symmetric
+  EXPECT_GT(centred.x[c + 1], 0.0);
+  // At a pixel's edge the centres one pixel beyond it are 1.5 pixels away.
+  const FilterTaps at_edge = filter_taps(0.0f, 0.999f);
+  EXPECT_EQ(at_edge.x[c - 1], 0.0);
+  EXPECT_GT(at_edge.x[c + 1], 0.1);
+  EXPECT_GT(at_edge.y[c + 1], 0.0);
+  EXPECT_LT(at_edge.y[c + 1], 1e-4);
+  // Mirrored positions weigh mirrored pixels alike.
+  const FilterTaps left = filter_taps(0.25f, 0.5f), right = filter_taps(0.75f, 0.5f);
+  for (int d = -kFilterReach; d <= kFilterReach; ++d) EXPECT_NEAR(left.x[c + d], right.x[c - d], 1e-12) << d;
 }
 
 }  // namespace
