@@ -522,7 +522,7 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
     if (volume) out.color = std::make_unique<MeshField<double>>(mesh_locator(), values, where);
     if (sites) out.sites.colors = site_colors(out.sites.positions, chosen.on_points, values, where, out.color.get());
   }
-  if (data->GetNumberOfCells() > 0) out.boundary = boundary_surface(data, spec.path);  // a shell's own surface too
+  if (spec.boundary && data->GetNumberOfCells() > 0) out.boundary = boundary_surface(data, spec.path);  // a shell's own surface too
   if (const std::optional<PlaneOfData> plane = plane_of(data)) out.plane_axis = plane->axis;
   if (const std::vector<std::string> frame = record_of(data, kAnatomicalFrame); !frame.empty())
     out.anatomical_frame = frame.front();

@@ -43,6 +43,7 @@ struct VtkFileSpec {
   int step = -1;            // of a time series: the step's index (-1: the first)
   std::string block;        // of a file of blocks: one, by name or index ("": all, merged)
   bool sites = false;       // also hand back the array's values where they stand (VtkData::sites)
+  bool boundary = true;     // extract the data set's outer surface (VtkData::boundary)
   // The order of 6 components (field/reading/component_order.h); "" = the order
   // the file records (field/reading/component_arrays.h), else VTK's.
   std::string components;

@@ -508,6 +508,8 @@ SceneSpec load_scene_text(const std::string& text, const std::string& path, cons
   read_camera(camera, spec.camera);
   read_light(light, spec.shading, spec.light);
   read_render(render, spec);
+  // A shell that is not drawn needs no surface extracted from the data.
+  spec.pipeline.data.file.boundary = spec.context.shell.value_or(true);
   read_output(output, spec.output, spec.surface.shape, base_dir);
   top.allow("sweep");  // read by the batch (renderer/app/batch.h), not here
   read_figure(figure, spec.figure);
