@@ -347,7 +347,7 @@ vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSessi
   if (!request.block.empty() && !reader.has_blocks)
     throw DataError(path + ": data.block applies only to files of blocks (.vtm, Exodus); this is a " + format->name +
                     " file");
-  return read_in_child(path, reader, request, vtk);
+  return reader.in_process ? read_checked(path, reader, request, vtk) : read_in_child(path, reader, request, vtk);
 }
 
 }  // namespace hsb

@@ -30,7 +30,7 @@ std::string no_volume_reason(vtkDataSet* data);
 // Runs `algorithm` in a child process first: VTK's filters trust the cells
 // they are given, so a degenerate mesh can make them read past their
 // buffers or loop. A crash or a hang in the child is one DataError naming
-// `path` and `what` ran on it. (Files themselves are parsed only in a
+// `path` and `what` ran on it. (Files VTK parses are parsed only in a
 // child: read_dataset.)
 void update_safely(vtkAlgorithm* algorithm, const std::string& path, const char* what);
 

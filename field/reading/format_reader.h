@@ -44,6 +44,10 @@ struct FormatReader {
   bool joins_pieces = false;
   // data.block picks one of its blocks.
   bool has_blocks = false;
+  // Parsed by hsb's own code, which checks every count the file declares
+  // against the bytes it has before trusting it (and is fuzzed to do so):
+  // read in this process, without a child's copy of what VTK read.
+  bool in_process = false;
 };
 
 // The readers, each defined beside its code.

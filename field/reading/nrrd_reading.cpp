@@ -13,8 +13,9 @@
 //    values says which;
 //  - the `measurement frame`: tensors are turned from it into the space.
 // The tensors come out in VTK's order, with the layout they were read
-// from recorded (field/reading/component_arrays.h). Internal to field/; the file
-// is parsed only in a child process (field/reading/dataset_reading.h).
+// from recorded (field/reading/component_arrays.h). Internal to field/. Every
+// count the header declares is checked against the bytes there are before
+// any is read, so the file is parsed in this process (FormatReader::in_process).
 
 #include <vtkDoubleArray.h>
 #include <vtkImageData.h>
@@ -455,6 +456,6 @@ std::vector<std::string> nrrd_parts(const std::string& path) {
 
 }  // namespace
 
-const FormatReader nrrd_reader{read_nrrd_data, nullptr, nrrd_parts};
+const FormatReader nrrd_reader{read_nrrd_data, nullptr, nrrd_parts, nullptr, false, false, true};
 
 }  // namespace hsb
