@@ -106,6 +106,7 @@ void trace_rows(const RayScene& scene, const Camera& camera, const ShadingSpec& 
 void gather_pixel(int x, int y, const RenderSettings& settings, int per_pixel, SampleRows& rows, Film& film) {
   double color[3] = {0, 0, 0}, alpha = 0.0, weight = 0.0;
   double normal[3] = {0, 0, 0}, scalar = 0.0, hit_weight = 0.0;
+  const bool surface_planes = film.has(Plane::normal) || film.has(Plane::scalar);
   for (int dy = -kFilterReach; dy <= kFilterReach; ++dy) {
     const int ny = y + dy;
     if (ny < 0 || ny >= settings.height) continue;
@@ -121,7 +122,7 @@ void gather_pixel(int x, int y, const RenderSettings& settings, int per_pixel, S
         for (int c = 0; c < 3; ++c) color[c] += w * s.color[std::size_t(c)];
         alpha += w * s.alpha;
         weight += w;
-        if (s.id < 0) continue;
+        if (!surface_planes || s.id < 0) continue;
         for (int c = 0; c < 3; ++c) normal[c] += w * s.normal[std::size_t(c)];
         scalar += w * s.scalar;
         hit_weight += w;
