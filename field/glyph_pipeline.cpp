@@ -16,6 +16,7 @@
 #include "field/sampling/mesh_field.h"
 #include "field/sampling/uniform_grid.h"
 #include "field/tensor/eigensystem.h"
+#include "field/tensor/tensor_measures.h"
 #include "field/tracing/even_seeding.h"
 #include "field/tracing/seeding.h"
 
@@ -321,9 +322,16 @@ std::vector<std::size_t> sites_to_draw(const DataSites& sites, const RegionSpec&
     for (std::size_t i = 0; i < which.size(); ++i) which[i] = i;
     return which;
   }
+  // Most of a diffusion volume lies well below its FA threshold, which the
+  // components tell without decomposing; near it, the eigenvalues decide,
+  // as everywhere else the region is asked.
+  constexpr double kFaMargin = 1e-9;  // far beyond the two FAs' round-off
   std::vector<char> inside(sites.tensors.size());
   tbb::parallel_for(std::size_t{0}, inside.size(), [&](std::size_t i) {
-    inside[i] = sites.tensors[i].is_finite() && region.holds(decompose(sites.tensors[i]).values);
+    const Sym3& t = sites.tensors[i];
+    if (!t.is_finite()) return;
+    if (region.measure == ColorScalar::fa && fractional_anisotropy(t) < *region.above - kFaMargin) return;
+    inside[i] = region.holds(decompose(t).values);
   });
   for (std::size_t i = 0; i < inside.size(); ++i)
     if (inside[i]) which.push_back(i);

@@ -16,6 +16,16 @@ double fractional_anisotropy(const Vec3& eigenvalues) {
   return std::min(1.0, std::sqrt(1.5) * deviatoric(eigenvalues).norm() / whole);
 }
 
+double fractional_anisotropy(const Sym3& t) {
+  const double mean = (t.xx + t.yy + t.zz) / 3.0;
+  const double off = 2.0 * (t.xy * t.xy + t.yz * t.yz + t.xz * t.xz);
+  const double whole = t.xx * t.xx + t.yy * t.yy + t.zz * t.zz + off;
+  if (!(whole > 0.0)) return 0.0;
+  const double deviatoric = (t.xx - mean) * (t.xx - mean) + (t.yy - mean) * (t.yy - mean) +
+                            (t.zz - mean) * (t.zz - mean) + off;
+  return std::min(1.0, std::sqrt(1.5 * deviatoric / whole));
+}
+
 double tensor_mode(const Vec3& eigenvalues) {
   const Vec3 d = deviatoric(eigenvalues);
   const double norm = d.norm();

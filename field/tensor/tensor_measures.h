@@ -20,6 +20,7 @@
 // tensor no shape (c_s = 1, a sphere, as the glyph is drawn).
 
 #include "base/vec3.h"
+#include "field/tensor/sym3.h"
 
 namespace hsb {
 
@@ -28,6 +29,9 @@ struct WestinMeasures {
 };
 
 double fractional_anisotropy(const Vec3& eigenvalues);
+// The same from the tensor's components, without decomposing it (both
+// norms are invariant): within round-off (1e-14) of the eigenvalues' FA.
+double fractional_anisotropy(const Sym3& tensor);
 double tensor_mode(const Vec3& eigenvalues);
 WestinMeasures westin_measures(const Vec3& eigenvalues);
 
