@@ -1,5 +1,8 @@
 #include "renderer/image/color_management.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <cstdlib>
 #include <sstream>
 
@@ -56,8 +59,13 @@ Rgb ColorManagement::to_picking(const Rgb& linear) const {
 }
 
 void ColorManagement::apply_display(std::vector<float>& rgba, int width, int height) const {
-  OCIO::PackedImageDesc image(rgba.data(), width, height, 4);
-  to_display_->apply(image);
+  // The processor works pixel by pixel and keeps no state: bands of rows
+  // on every core give the same values as the whole image on one.
+  tbb::parallel_for(tbb::blocked_range<int>(0, height, 32), [&](const tbb::blocked_range<int>& rows) {
+    OCIO::PackedImageDesc band(rgba.data() + std::size_t(rows.begin()) * std::size_t(width) * 4, width,
+                               long(rows.size()), 4);
+    to_display_->apply(band);
+  });
 }
 
 }  // namespace hsb

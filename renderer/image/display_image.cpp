@@ -1,5 +1,7 @@
 #include "renderer/image/display_image.h"
 
+#include <tbb/parallel_for.h>
+
 namespace hsb {
 
 std::vector<float> display_pixels(const Film& film, const ColorManagement& color, bool keep_alpha) {
@@ -7,14 +9,15 @@ std::vector<float> display_pixels(const Film& film, const ColorManagement& color
   const std::vector<float>& rgb = film.data(Plane::color);
   const std::vector<float>& alpha = film.data(Plane::alpha);
   std::vector<float> rgba(pixels * 4);
-  for (std::size_t i = 0; i < pixels; ++i) {
+  tbb::parallel_for(std::size_t{0}, pixels, [&](std::size_t i) {
     const float a = keep_alpha ? alpha[i] : 1.0f;
     for (std::size_t c = 0; c < 3; ++c) rgba[i * 4 + c] = a > 0.0f ? rgb[i * 3 + c] / a : 0.0f;
     rgba[i * 4 + 3] = a;
-  }
+  });
   color.apply_display(rgba, film.width(), film.height());
-  for (std::size_t i = 0; i < pixels; ++i)
+  tbb::parallel_for(std::size_t{0}, pixels, [&](std::size_t i) {
     for (std::size_t c = 0; c < 3; ++c) rgba[i * 4 + c] *= rgba[i * 4 + 3];
+  });
   return rgba;
 }
 

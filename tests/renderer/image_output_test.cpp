@@ -47,6 +47,40 @@ TEST(ImageOutput, PngAt8And16BitsWithMetadata) {
   }
 }
 
+// The 8-bit picture is dithered and quantised in bands on every core; its
+// bytes must be those OIIO's writer makes of the same floats with
+// oiio:dither on one, alpha (premultiplied, undone by the PNG writer) included.
+TEST(ImageOutput, EightBitsAreOiiosOwnDitheredBytes) {
+  ImageToWrite image;
+  image.width = 301;  // not a multiple of any band or tile
+  image.height = 157;
+  image.channels = 4;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const float alpha = float((x * 7 + y * 3) % 101) / 100.0f;
+      const float shade = 0.25f + 0.5f * float(x) / float(image.width) + 0.003f * float(y % 5);  // a smooth ramp
+      for (float v : {shade, 1.0f - shade, 0.5f * shade}) image.pixels.push_back(v * alpha);
+      image.pixels.push_back(alpha);
+    }
+  const std::string ours = (temp_dir() / "ours.png").string(), oiio = (temp_dir() / "oiio.png").string();
+  write_image(image, ours);
+  OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
+  spec.alpha_channel = 3;
+  spec.attribute("oiio:dither", 1);
+  auto out = OIIO::ImageOutput::create(oiio);
+  ASSERT_TRUE(out && out->open(oiio, spec) && out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data()) &&
+              out->close());
+  std::vector<unsigned char> a(image.pixels.size()), b(image.pixels.size());
+  for (auto [path, bytes] : {std::pair{ours, &a}, std::pair{oiio, &b}}) {
+    auto in = OIIO::ImageInput::open(path);
+    ASSERT_TRUE(in);
+    ASSERT_TRUE(in->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, bytes->data()));
+  }
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) differing += a[i] != b[i];
+  EXPECT_EQ(differing, 0u);  // without the same dither, most would differ
+}
+
 TEST(ImageOutput, ExrKeepsFloatsBeyondOne) {
   ImageToWrite image = gradient(5);
   image.channel_names = {"R", "G", "B", "A", "Z"};
