@@ -22,11 +22,16 @@ void validate_dims(const std::array<int, 3>& dims) {
   }
 }
 
+bool is_finite(const Sym3& v) { return v.is_finite(); }
+bool is_finite(double v) { return std::isfinite(v); }
+bool is_infinite(const Sym3& v) { return v.matrix().array().isInf().any(); }
+bool is_infinite(double v) { return std::isinf(v); }
+
 }  // namespace
 
-UniformGridField::UniformGridField(const Vec3& origin, const Vec3& spacing,
-                                   const std::array<int, 3>& dims, std::vector<Sym3> values,
-                                   const Mat3& direction)
+template <class T>
+UniformGrid<T>::UniformGrid(const Vec3& origin, const Vec3& spacing, const std::array<int, 3>& dims,
+                            std::vector<T> values, const Mat3& direction)
     : origin_(origin),
       spacing_(spacing),
       direction_(direction),
@@ -42,25 +47,23 @@ UniformGridField::UniformGridField(const Vec3& origin, const Vec3& spacing,
     throw std::invalid_argument("uniform grid: spacing must be finite and > 0 on every axis");
   if (values_.size() != node_count(dims_))
     throw std::invalid_argument("uniform grid: got " + std::to_string(values_.size()) +
-                                " tensors for " + std::to_string(dims_[0]) + "x" +
+                                " values for " + std::to_string(dims_[0]) + "x" +
                                 std::to_string(dims_[1]) + "x" + std::to_string(dims_[2]) +
                                 " = " + std::to_string(node_count(dims_)) + " nodes");
   // A NaN node is no data (sample() gives nothing around it); an infinite
   // one would make every sample near it infinite.
-  for (const Sym3& v : values_) {
-    const Mat3 m = v.matrix();
-    if (m.array().isInf().any()) throw std::invalid_argument("uniform grid: infinite tensor value");
-  }
+  for (const T& v : values_)
+    if (is_infinite(v)) throw std::invalid_argument("uniform grid: infinite value");
 }
 
-UniformGridField UniformGridField::sampled_from(const TensorField& field,
-                                                const std::array<int, 3>& dims) {
+template <class T>
+UniformGrid<T> UniformGrid<T>::sampled_from(const Field<T>& field, const std::array<int, 3>& dims) {
   validate_dims(dims);
   const Box3 b = field.bounds();
   const Vec3 spacing = b.size().cwiseQuotient(
       Vec3(dims[0] - 1, dims[1] - 1, dims[2] - 1));
 
-  std::vector<Sym3> values;
+  std::vector<T> values;
   values.reserve(node_count(dims));
   for (int k = 0; k < dims[2]; ++k) {
     for (int j = 0; j < dims[1]; ++j) {
@@ -74,7 +77,7 @@ UniformGridField UniformGridField::sampled_from(const TensorField& field,
         const Vec3 p = ((Vec3::Ones() - t).cwiseProduct(b.lo) + t.cwiseProduct(b.hi))
                            .cwiseMax(b.lo)
                            .cwiseMin(b.hi);
-        const std::optional<Sym3> s = field.sample(p);
+        const std::optional<T> s = field.sample(p);
         if (!s)
           throw std::runtime_error("uniform grid: the field cannot be sampled at node (" +
                                    std::to_string(i) + ", " + std::to_string(j) + ", " +
@@ -83,10 +86,11 @@ UniformGridField UniformGridField::sampled_from(const TensorField& field,
       }
     }
   }
-  return UniformGridField(b.lo, spacing, dims, std::move(values));
+  return UniformGrid(b.lo, spacing, dims, std::move(values));
 }
 
-Box3 UniformGridField::bounds() const {
+template <class T>
+Box3 UniformGrid<T>::bounds() const {
   const Vec3 extent = spacing_.cwiseProduct(Vec3(dims_[0] - 1, dims_[1] - 1, dims_[2] - 1));
   if (aligned_) return {origin_, origin_ + extent};
   Box3 box{origin_, origin_};
@@ -98,7 +102,8 @@ Box3 UniformGridField::bounds() const {
   return box;
 }
 
-const Sym3& UniformGridField::node(int i, int j, int k) const {
+template <class T>
+const T& UniformGrid<T>::node(int i, int j, int k) const {
   const std::size_t index =
       static_cast<std::size_t>(i) +
       static_cast<std::size_t>(dims_[0]) *
@@ -106,7 +111,8 @@ const Sym3& UniformGridField::node(int i, int j, int k) const {
   return values_.at(index);
 }
 
-std::optional<Sym3> UniformGridField::sample(const Vec3& x) const {
+template <class T>
+std::optional<T> UniformGrid<T>::sample(const Vec3& x) const {
   // Work in index space. A point is inside when its index coordinate lies in
   // [0, dims−1]; a relative slack of a few ulps admits points that are on
   // the far face in world space but land a rounding error past it in index
@@ -127,7 +133,7 @@ std::optional<Sym3> UniformGridField::sample(const Vec3& x) const {
 
   // Trilinear: blend the eight corners with weights that sum to one, so
   // affine component fields are reproduced exactly.
-  Sym3 result;
+  T result{};
   for (int corner = 0; corner < 8; ++corner) {
     const int di = corner & 1, dj = (corner >> 1) & 1, dk = (corner >> 2) & 1;
     const double w = (di ? t[0] : 1.0 - t[0]) * (dj ? t[1] : 1.0 - t[1]) *
@@ -135,8 +141,11 @@ std::optional<Sym3> UniformGridField::sample(const Vec3& x) const {
     result = result + w * node(cell[0] + di, cell[1] + dj, cell[2] + dk);
   }
   // A NaN node is no data (a masked voxel): its cells are outside.
-  if (!result.is_finite()) return std::nullopt;
+  if (!is_finite(result)) return std::nullopt;
   return result;
 }
+
+template class UniformGrid<Sym3>;
+template class UniformGrid<double>;
 
 }  // namespace hsb
