@@ -29,6 +29,7 @@ LoadedField make_field(const DataSpec& spec) {
     loaded.field = std::move(data.field);
     loaded.vectors = std::move(data.vectors);
     loaded.color = std::move(data.color);
+    loaded.mask = std::move(data.mask);
     loaded.boundary = std::move(data.boundary);
     loaded.plane_axis = data.plane_axis;
     loaded.anatomical_frame = data.anatomical_frame;
@@ -179,7 +180,7 @@ const char* stop_name(StopReason r) {
     case StopReason::max_steps: return "trajectories.max_steps";
     case StopReason::closed: return "its own start (a closed curve)";
     case StopReason::too_close: return "another trajectory (seeds.separation)";
-    case StopReason::left_region: return "the region's edge (region.above)";
+    case StopReason::left_region: return "the region's edge (region.above, region.mask)";
     case StopReason::sharp_turn: return "a turn sharper than trajectories.max_turn";
   }
   return "?";
@@ -317,7 +318,7 @@ SourcePlacement resolved_placement(const GlyphPipelineSpec& spec, const LoadedFi
 // whose tensor lies in it (each decomposed once, in parallel).
 std::vector<std::size_t> sites_to_draw(const DataSites& sites, const RegionSpec& region) {
   std::vector<std::size_t> which;
-  if (!region.above || sites.tensors.empty()) {
+  if (!region.restricts() || sites.tensors.empty()) {
     which.resize(sites.positions.size());
     for (std::size_t i = 0; i < which.size(); ++i) which[i] = i;
     return which;
@@ -330,8 +331,9 @@ std::vector<std::size_t> sites_to_draw(const DataSites& sites, const RegionSpec&
   tbb::parallel_for(std::size_t{0}, inside.size(), [&](std::size_t i) {
     const Sym3& t = sites.tensors[i];
     if (!t.is_finite()) return;
-    if (region.measure == ColorScalar::fa && fractional_anisotropy(t) < *region.above - kFaMargin) return;
-    inside[i] = region.holds(decompose(t).values);
+    if (region.above && region.measure == ColorScalar::fa && fractional_anisotropy(t) < *region.above - kFaMargin)
+      return;
+    inside[i] = region.holds(sites.positions[i], decompose(t).values);
   });
   for (std::size_t i = 0; i < inside.size(); ++i)
     if (inside[i]) which.push_back(i);
@@ -583,21 +585,25 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   if (flow && spec.region.above)
     throw DataError(data.file.path + ": region.above keeps to where a measure of the tensor is large, and this "
                     "file is read as a flow (vectors)");
+  if (!region.mask.empty())
+    region.mask_field = region.mask.rfind(RegionSpec::kMaskArrayPrefix, 0) == 0
+                            ? std::shared_ptr<const ScalarField>(std::move(loaded.mask))
+                            : std::shared_ptr<const ScalarField>(load_mask(region.mask));
   // Evenly spaced seeding measures the body first: its separation sets
   // the step, the spacing and the glyph size.
   const bool even = scene.placement != SourcePlacement::at_data_points &&
                     spec.seeds.resolved_strategy() == SeedStrategy::even;
   const MagnitudeSampler magnitude = [&](const Vec3& x) -> std::optional<double> {
+    // Outside the region is outside the body: seeds, separation and
+    // the lines' density follow the region alone.
     if (flow) {
       const std::optional<Vec3> v = flow->sample(x);
-      return v ? std::optional<double>(v->norm()) : std::nullopt;
+      return v && region.in_mask(x) ? std::optional<double>(v->norm()) : std::nullopt;
     }
     const std::optional<Sym3> t = tensors->sample(x);
     if (!t) return std::nullopt;
     const Vec3 l = decompose(*t).values;
-    // Outside the region is outside the body: seeds, separation and
-    // the lines' density follow the region alone.
-    return region.holds(l) ? std::optional<double>(l.cwiseAbs().maxCoeff()) : std::nullopt;
+    return region.holds(x, l) ? std::optional<double>(l.cwiseAbs().maxCoeff()) : std::nullopt;
   };
   BodyLattice body;
   std::optional<double> separation;
@@ -623,6 +629,7 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
     scene.values.trajectory.measure = [measure = region.measure](const Vec3& l) { return color_scalar(l, measure); };
     scene.values.trajectory.min_measure = spec.trajectory.stop_below.value_or(region.above.value_or(0.0));
   }
+  if (region.mask_field) scene.values.trajectory.inside = [region](const Vec3& x) { return region.in_mask(x); };
   if (data.kind == DataKind::point_load) scene.values.singular_radius = data.point_load.singular_radius;
   const GlyphValues& values = scene.values;
   std::vector<Vec3> seeds;
@@ -634,7 +641,7 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
     check_seed_and_trajectory_memory(values, scene.placement);
     seeds = all_seeds(values.seeds, scene.domain);
     // A seed outside the region has no line to start; nor a glyph.
-    if (region.above)
+    if (region.restricts())
       seeds.erase(std::remove_if(seeds.begin(), seeds.end(), [&](const Vec3& x) { return !magnitude(x); }),
                   seeds.end());
   }

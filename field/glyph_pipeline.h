@@ -88,11 +88,27 @@ struct SeedSpec {
 // (a diffusion volume's fibres, FA > 0.3): seeds are taken, lines run and
 // glyphs at data points stand only where `measure` (a colour scalar of the
 // tensor, glyph_mapping.h) is at least `above`. None: everywhere.
+// A mask (a brain mask, a region of interest) narrows it further: only
+// where the mask's value is at least ½, a binary mask's voxels and half the
+// way between them and the voxels outside.
 struct RegionSpec {
   ColorScalar measure = ColorScalar::fa;
   std::optional<double> above;
+  // "array:NAME", a scalar array of the data file, or a file of its own
+  // (load_mask); "": none.
+  std::string mask;
+  std::shared_ptr<const ScalarField> mask_field;  // the mask, once read
 
-  bool holds(const Vec3& eigenvalues) const { return !above || color_scalar(eigenvalues, measure) >= *above; }
+  static constexpr const char* kMaskArrayPrefix = "array:";
+  bool restricts() const { return above || mask_field; }
+  bool in_mask(const Vec3& x) const {
+    if (!mask_field) return true;
+    const std::optional<double> value = mask_field->sample(x);
+    return value && *value >= 0.5;
+  }
+  bool holds(const Vec3& x, const Vec3& eigenvalues) const {
+    return in_mask(x) && (!above || color_scalar(eigenvalues, measure) >= *above);
+  }
 };
 
 // The scene's [trajectories]; what it leaves out is automatic.
@@ -200,6 +216,7 @@ struct LoadedField {
   std::unique_ptr<TensorField> field;    // tensor data; or
   std::unique_ptr<VectorField> vectors;  // a flow
   std::unique_ptr<ScalarField> color;    // data.file.color_array, when named
+  std::unique_ptr<ScalarField> mask;     // data.file.mask_array, when named
   double max_speed = 0.0;                // of the flow's values
   std::optional<TriangleMesh> boundary;
   std::optional<int> plane_axis;  // a 2-D result (field/reading/vtk_data.h)

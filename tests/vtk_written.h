@@ -17,6 +17,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "base/box3.h"
 #include "base/vec3.h"
@@ -55,18 +56,39 @@ inline vtkSmartPointer<vtkDoubleArray> tensors_at_points(
   return a;
 }
 
+// A scalar array named `name` of `value` at each of `data`'s points.
+inline vtkSmartPointer<vtkDoubleArray> scalars_at_points(vtkDataSet* data, const std::string& name,
+                                                         const std::function<double(const Vec3&)>& value) {
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName(name.c_str());
+  a->SetNumberOfTuples(data->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i) {
+    double p[3];
+    data->GetPoint(i, p);
+    a->SetValue(i, value(Vec3(p[0], p[1], p[2])));
+  }
+  return a;
+}
+
+struct ScalarArray {
+  std::string name;
+  std::function<double(const Vec3&)> value;
+};
+
 // A grid of `n` points over `box` holding `tensor` as an array named
-// `name` (NaN where it gives none: outside the body), written as a .vti the
-// way VTK writes it; returns `path`.
+// `name` (NaN where it gives none: outside the body; none at all for an
+// empty function), and each of `scalars`, written as a .vti the way VTK
+// writes it; returns `path`.
 inline std::string grid_written(const std::filesystem::path& path, const Box3& box, const std::array<int, 3>& n,
                                 const std::function<std::optional<Sym3>(const Vec3&)>& tensor,
-                                const std::string& name = "stress") {
+                                const std::string& name = "stress", const std::vector<ScalarArray>& scalars = {}) {
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(n[0], n[1], n[2]);
   image->SetOrigin(box.lo.x(), box.lo.y(), box.lo.z());
   const Vec3 size = box.size();
   image->SetSpacing(size.x() / (n[0] - 1), size.y() / (n[1] - 1), size.z() / (n[2] - 1));
-  image->GetPointData()->AddArray(tensors_at_points(image, name, tensor));
+  if (tensor) image->GetPointData()->AddArray(tensors_at_points(image, name, tensor));
+  for (const ScalarArray& s : scalars) image->GetPointData()->AddArray(scalars_at_points(image, s.name, s.value));
   return written_by<vtkXMLImageDataWriter>(image, path);
 }
 

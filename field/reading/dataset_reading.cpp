@@ -340,7 +340,7 @@ vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSessi
   if (reader.step_file) {
     const std::string file = step_file_of(path, reader, request.step);
     if (reader_of(file) == &reader) throw DataError(path + ": its step names another series, " + file);
-    return read_dataset(file, vtk, {-1, request.block});
+    return read_dataset(file, vtk, {-1, request.block, request.scalar});
   }
   if (request.step > 0 && !reader.times)
     throw DataError(path + ": data.step applies only to a time series (.pvd, or Exodus with time steps)");

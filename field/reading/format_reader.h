@@ -19,6 +19,9 @@ namespace hsb {
 struct ReadRequest {
   int step = -1;      // a time step's index (-1: the first)
   std::string block;  // one block of a multiblock or Exodus file ("": all, merged)
+  // A volume of one value per voxel (a mask), where the volume formats
+  // (NRRD, NIfTI) otherwise expect tensors or vectors.
+  bool scalar = false;
 };
 
 // The hooks are called with a VtkSession held, and those that parse the

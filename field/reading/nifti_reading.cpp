@@ -40,7 +40,8 @@ constexpr int symmetric_matrix_intent = 1005;  // NIFTI_INTENT_SYMMATRIX
 
 // The volume in `path`. Throws DataError for a file VTK cannot read or
 // whose voxels are not 3, 6 or 9 values.
-vtkSmartPointer<vtkImageData> read_nifti(const std::string& path) {
+// With `scalar`, a volume of one value per voxel (a mask) instead.
+vtkSmartPointer<vtkImageData> read_nifti(const std::string& path, bool scalar) {
   auto reader = vtkSmartPointer<vtkNIFTIImageReader>::New();
   if (!reader->CanReadFile(path.c_str()))
     throw DataError(path + ": not a NIfTI file: no NIfTI-1 or NIfTI-2 header (magic \"n+1\", \"ni1\", \"n+2\") in it");
@@ -52,7 +53,10 @@ vtkSmartPointer<vtkImageData> read_nifti(const std::string& path) {
   vtkDataArray* voxels = read && header ? read->GetPointData()->GetScalars() : nullptr;
   if (!voxels || voxels->GetNumberOfTuples() == 0) throw DataError(path + ": VTK's NIfTI reader found no voxels in it");
   const int values = voxels->GetNumberOfComponents();
-  if (values != 3 && values != 6 && values != 9)
+  if (scalar && values != 1)
+    throw DataError(path + ": its voxels hold " + std::to_string(values) +
+                    " values; a mask is a volume of one value per voxel");
+  if (!scalar && values != 3 && values != 6 && values != 9)
     throw DataError(path + ": its voxels hold " + std::to_string(values) +
                     " values; a tensor volume has 6 (or 9, or 3 for vectors) along its fourth or fifth dimension");
 
@@ -89,7 +93,7 @@ vtkSmartPointer<vtkImageData> read_nifti(const std::string& path) {
   const ComponentOrder* recorded = lower_triangle ? component_order("nifti") : mrtrix ? component_order("mrtrix") : nullptr;
 
   auto array = vtkSmartPointer<vtkDoubleArray>::New();
-  array->SetName(values == 3 ? "vectors" : "tensors");
+  array->SetName(scalar ? "values" : values == 3 ? "vectors" : "tensors");
   array->SetNumberOfComponents(values);
   array->SetNumberOfTuples(voxels->GetNumberOfTuples());
   std::array<double, 9> v{};
@@ -113,6 +117,10 @@ vtkSmartPointer<vtkImageData> read_nifti(const std::string& path) {
   // Through the sform or the qform, the world is the scanner's RAS+.
   if (header->GetSFormCode() > 0 || header->GetQFormCode() > 0)
     add_record(image->GetFieldData(), kAnatomicalFrame, {"RAS"});
+  if (scalar) {
+    image->GetPointData()->SetScalars(array);
+    return image;
+  }
   if (values == 3) {
     image->GetPointData()->SetVectors(array);
     return image;
@@ -135,8 +143,8 @@ vtkSmartPointer<vtkImageData> read_nifti(const std::string& path) {
   return image;
 }
 
-vtkSmartPointer<vtkDataSet> read_nifti_data(const std::string& path, const ReadRequest&, const VtkSession&) {
-  return read_nifti(path);
+vtkSmartPointer<vtkDataSet> read_nifti_data(const std::string& path, const ReadRequest& request, const VtkSession&) {
+  return read_nifti(path, request.scalar);
 }
 
 }  // namespace

@@ -285,7 +285,7 @@ std::vector<double> read_values(const Header& h, const std::string& path, std::u
 struct VoxelLayout {
   int values = 0;       // per voxel
   bool masked = false;  // a confidence first
-  enum { symmetric, full, vector } kind = symmetric;
+  enum { symmetric, full, vector, scalar } kind = symmetric;
   std::string said;     // for the record
 };
 
@@ -334,16 +334,24 @@ std::string anatomical_letters(const std::string& space) {
   return letters;
 }
 
-vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path) {
+// A tensor (or vector) volume, or with `scalar` a volume of one value per
+// voxel (a mask), whose axes are then all space axes.
+vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path, bool scalar) {
   const Header h = read_header(path);
   const NumberType type = number_type(h);
   const HeaderField* dimension = h.find("dimension");
   const HeaderField* sizes_field = h.find("sizes");
   if (!dimension || !sizes_field) h.fail(nullptr, "the NRRD header lacks \"dimension:\" or \"sizes:\"");
   const std::vector<double> sizes = numbers(h, sizes_field);
-  if (dimension->value == "3")
+  // The first space axis: after the values of a voxel, if they have one.
+  const int first = scalar ? 0 : 1;
+  if (scalar && (dimension->value != "3" || sizes.size() != 3))
+    h.fail(sizes.size() != 3 ? sizes_field : dimension,
+           "a mask is a volume of one value per voxel: expected dimension 3 with three sizes, found dimension " +
+               dimension->value + " with " + std::to_string(sizes.size()) + " sizes");
+  if (!scalar && dimension->value == "3")
     h.fail(dimension, "a volume of one value per voxel: no tensors or vectors (a 4-D NRRD with a first axis of 6, 7 or 9)");
-  if (dimension->value != "4" || sizes.size() != 4)
+  if (!scalar && (dimension->value != "4" || sizes.size() != 4))
     h.fail(sizes.size() != 4 ? sizes_field : dimension,
            "expected dimension 4 with four sizes (values per voxel, then three space axes), found dimension " +
                dimension->value + " with " + std::to_string(sizes.size()) + " sizes");
@@ -354,20 +362,24 @@ vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path) {
     count *= std::uint64_t(s);
     if (count > most_values) h.fail(sizes_field, "the volume declares more than 2^31 values: " + sizes_field->value);
   }
-  const VoxelLayout layout = voxel_layout(h, int(sizes[0]));
-  if (layout.values != int(sizes[0]))
+  const VoxelLayout layout = scalar ? VoxelLayout{1, false, VoxelLayout::scalar, ""} : voxel_layout(h, int(sizes[0]));
+  if (layout.values != int(scalar ? 1 : sizes[0]))
     h.fail(sizes_field, "its kind has " + std::to_string(layout.values) + " values per voxel, its size is " +
                             std::to_string(int(sizes[0])));
-  const std::array<int, 3> dims{int(sizes[1]), int(sizes[2]), int(sizes[3])};
+  const std::array<int, 3> dims{int(sizes[std::size_t(first)]), int(sizes[std::size_t(first + 1)]),
+                                int(sizes[std::size_t(first + 2)])};
 
   // Where the voxels are: space directions (with an origin), else spacings.
   Mat3 axes = Mat3::Identity();
   Vec3 origin = Vec3::Zero();
   if (const HeaderField* f = h.find("space directions")) {
     const std::vector<std::optional<Vec3>> d = vectors(h, f);
-    if (d.size() != 4 || d[0] || !d[1] || !d[2] || !d[3])
-      h.fail(f, "expected \"none\" for the first axis and a vector for each space axis, found " + f->value);
-    axes << *d[1], *d[2], *d[3];
+    const bool values_axis_none = scalar || (!d.empty() && !d[0]);
+    if (d.size() != std::size_t(first + 3) || !values_axis_none || !d[std::size_t(first)] ||
+        !d[std::size_t(first + 1)] || !d[std::size_t(first + 2)])
+      h.fail(f, std::string(scalar ? "expected" : "expected \"none\" for the first axis and") +
+                    " a vector for each space axis, found " + f->value);
+    axes << *d[std::size_t(first)], *d[std::size_t(first + 1)], *d[std::size_t(first + 2)];
     if (std::fabs(axes.determinant()) < 1e-300 * axes.cwiseAbs().maxCoeff())
       h.fail(f, "the space directions are not independent: the voxels have no volume");
     if (const HeaderField* o = h.find("space origin")) {
@@ -378,8 +390,8 @@ vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path) {
   } else if (const HeaderField* spacings = h.find("spacings")) {
     std::istringstream in(spacings->value);
     std::vector<std::string> words{std::istream_iterator<std::string>(in), std::istream_iterator<std::string>()};
-    for (int a = 0; a < 3 && words.size() == 4; ++a) {
-      const double s = std::strtod(words[std::size_t(a + 1)].c_str(), nullptr);
+    for (int a = 0; a < 3 && words.size() == std::size_t(first + 3); ++a) {
+      const double s = std::strtod(words[std::size_t(a + first)].c_str(), nullptr);
       if (!(s > 0) || !std::isfinite(s))
         h.fail(spacings, "expected positive spacings for the space axes, found " + spacings->value);
       axes(a, a) = s;
@@ -401,12 +413,21 @@ vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path) {
   const std::vector<double> values = read_values(h, path, count, type);
   const vtkIdType voxels = vtkIdType(count / std::uint64_t(layout.values));
   auto array = vtkSmartPointer<vtkDoubleArray>::New();
-  array->SetName(layout.kind == VoxelLayout::vector ? "vectors" : "tensors");
-  const int out_components = layout.kind == VoxelLayout::vector ? 3 : layout.kind == VoxelLayout::full ? 9 : 6;
+  array->SetName(layout.kind == VoxelLayout::scalar   ? "values"
+                 : layout.kind == VoxelLayout::vector ? "vectors"
+                                                      : "tensors");
+  const int out_components = layout.kind == VoxelLayout::scalar ? 1
+                             : layout.kind == VoxelLayout::vector ? 3
+                             : layout.kind == VoxelLayout::full   ? 9
+                                                                  : 6;
   array->SetNumberOfComponents(out_components);
   array->SetNumberOfTuples(voxels);
   for (vtkIdType i = 0; i < voxels; ++i) {
     const double* v = values.data() + std::size_t(i) * std::size_t(layout.values);
+    if (layout.kind == VoxelLayout::scalar) {
+      array->SetValue(i, v[0]);
+      continue;
+    }
     if (layout.kind == VoxelLayout::vector) {
       const Vec3 w = frame * Vec3(v[0], v[1], v[2]);
       array->SetTuple3(i, w.x(), w.y(), w.z());
@@ -435,7 +456,9 @@ vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path) {
   if (const HeaderField* f = h.find("space"))
     if (const std::string letters = anatomical_letters(f->value); !letters.empty())
       add_record(image->GetFieldData(), kAnatomicalFrame, {letters});
-  if (layout.kind == VoxelLayout::vector) {
+  if (layout.kind == VoxelLayout::scalar) {
+    image->GetPointData()->SetScalars(array);
+  } else if (layout.kind == VoxelLayout::vector) {
     image->GetPointData()->SetVectors(array);
   } else {
     image->GetPointData()->SetTensors(array);
@@ -444,8 +467,8 @@ vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path) {
   return image;
 }
 
-vtkSmartPointer<vtkDataSet> read_nrrd_data(const std::string& path, const ReadRequest&, const VtkSession&) {
-  return read_nrrd(path);
+vtkSmartPointer<vtkDataSet> read_nrrd_data(const std::string& path, const ReadRequest& request, const VtkSession&) {
+  return read_nrrd(path, request.scalar);
 }
 
 // A detached header's data file.

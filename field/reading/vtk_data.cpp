@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -357,6 +358,29 @@ bool is_image_volume(vtkDataSet* data) {
   return dims[0] >= 2 && dims[1] >= 2 && dims[2] >= 2 && std::fabs(image->GetDirectionMatrix()->Determinant()) > 1e-12;
 }
 
+// Values at the data set's points or cells (tensors, or scalars), sampled
+// as the data set is: trilinearly on an image volume's grid, turned or
+// not, else through its cells, by the shared `locator`.
+template <class T>
+std::unique_ptr<Field<T>> sampled_field(vtkDataSet* data, std::vector<T> values, ValueLocation where,
+                                        const std::function<std::shared_ptr<const MeshLocator>()>& locator) {
+  if (where != ValueLocation::points || !is_image_volume(data))
+    return std::make_unique<MeshField<T>>(locator(), std::move(values), where);
+  auto* image = vtkImageData::SafeDownCast(data);
+  const int* extent = image->GetExtent();
+  const double* origin = image->GetOrigin();
+  const double* spacing = image->GetSpacing();
+  Mat3 direction;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) direction(i, j) = image->GetDirectionMatrix()->GetElement(i, j);
+  // The first node: the extent may start away from index 0.
+  const Vec3 first = Vec3(origin[0], origin[1], origin[2]) +
+                     direction * Vec3(extent[0] * spacing[0], extent[2] * spacing[1], extent[4] * spacing[2]);
+  const int* dims = image->GetDimensions();
+  return std::make_unique<UniformGrid<T>>(first, Vec3(spacing[0], spacing[1], spacing[2]),
+                                          std::array<int, 3>{dims[0], dims[1], dims[2]}, std::move(values), direction);
+}
+
 // The data set's outer surface as triangles with vertex normals. Edges
 // sharper than 40° split the normals, so a cylinder's faceted wall shades
 // smoothly while its rim stays a rim.
@@ -399,22 +423,30 @@ TriangleMesh boundary_surface(vtkDataSet* data, const std::string& path) {
   return mesh;
 }
 
-// The scalar array `spec.color_array` for colouring: one component (a
-// vector's magnitude when it has three), and where its values stand.
-std::pair<std::vector<double>, ValueLocation> color_values(vtkDataSet* data, const VtkFileSpec& spec) {
-  const ChosenArray chosen = named_array(data, spec.color_array, TensorAssociation::automatic);
-  if (!chosen.array)
-    throw DataError(spec.path + ": no array named \"" + spec.color_array + "\" to colour by; the file has " +
-                    list_arrays(data));
+// A scalar array's values, and where they stand. Three components (a
+// vector) give their magnitude where `vectors` allows, for colouring.
+std::pair<std::vector<double>, ValueLocation> scalar_values(const ChosenArray& chosen, const std::string& path,
+                                                            bool vectors) {
   const ValueLocation where = chosen.on_points ? ValueLocation::points : ValueLocation::cells;
-  if (chosen.components == 1) return {read_values<double>(chosen, spec.path), where};
-  if (chosen.components == 3) {
+  if (chosen.components == 1) return {read_values<double>(chosen, path), where};
+  if (chosen.components == 3 && vectors) {
     std::vector<double> magnitude;
-    for (const Vec3& v : read_values<Vec3>(chosen, spec.path)) magnitude.push_back(v.norm());
+    for (const Vec3& v : read_values<Vec3>(chosen, path)) magnitude.push_back(v.norm());
     return {std::move(magnitude), where};
   }
-  throw DataError(spec.path + ": array \"" + chosen.name + "\" has " + std::to_string(chosen.components) +
-                  " components; colouring needs a scalar (1) or a vector (3, by its magnitude)");
+  throw DataError(path + ": array \"" + chosen.name + "\" has " + std::to_string(chosen.components) +
+                  " components; " +
+                  (vectors ? "colouring needs a scalar (1) or a vector (3, by its magnitude)" : "a mask needs a scalar (1)"));
+}
+
+// The scalar array `name` of the data set, wanted `use` ("to colour by").
+std::pair<std::vector<double>, ValueLocation> named_scalar_values(vtkDataSet* data, const std::string& name,
+                                                                  const std::string& path, const std::string& use,
+                                                                  bool vectors) {
+  const ChosenArray chosen = named_array(data, name, TensorAssociation::automatic);
+  if (!chosen.array)
+    throw DataError(path + ": no array named \"" + name + "\" " + use + "; the file has " + list_arrays(data));
+  return scalar_values(chosen, path, vectors);
 }
 
 // Where the values of point data (or cell data) stand: the points, or the
@@ -496,30 +528,19 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
     if (sites) out.sites.tensors = tensors;
     if (!volume) {
       out.field = std::make_unique<PointsOnlyField<Sym3>>(bounds);
-    } else if (chosen.on_points && is_image_volume(data)) {
-      auto* image = vtkImageData::SafeDownCast(data);
-      const int* extent = image->GetExtent();
-      const double* origin = image->GetOrigin();
-      const double* spacing = image->GetSpacing();
-      Mat3 direction;
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) direction(i, j) = image->GetDirectionMatrix()->GetElement(i, j);
-      // The first node: the extent may start away from index 0.
-      const Vec3 first = Vec3(origin[0], origin[1], origin[2]) +
-                         direction * Vec3(extent[0] * spacing[0], extent[2] * spacing[1], extent[4] * spacing[2]);
-      const int* dims = image->GetDimensions();
-      out.field = std::make_unique<UniformGridField>(first, Vec3(spacing[0], spacing[1], spacing[2]),
-                                                     std::array<int, 3>{dims[0], dims[1], dims[2]},
-                                                     std::move(tensors), direction);
     } else {
-      out.field = std::make_unique<MeshField<Sym3>>(mesh_locator(), std::move(tensors),
-                                              chosen.on_points ? ValueLocation::points : ValueLocation::cells);
+      out.field = sampled_field(data, std::move(tensors), chosen.on_points ? ValueLocation::points : ValueLocation::cells,
+                                mesh_locator);
     }
   }
   if (sites) out.sites.positions = site_positions(data, chosen.on_points);
+  if (!spec.mask_array.empty()) {
+    auto [values, where] = named_scalar_values(data, spec.mask_array, spec.path, "for region.mask", false);
+    out.mask = sampled_field(data, std::move(values), where, mesh_locator);
+  }
   if (!spec.color_array.empty()) {
-    auto [values, where] = color_values(data, spec);
-    if (volume) out.color = std::make_unique<MeshField<double>>(mesh_locator(), values, where);
+    auto [values, where] = named_scalar_values(data, spec.color_array, spec.path, "to colour by", true);
+    if (volume) out.color = sampled_field(data, values, where, mesh_locator);
     if (sites) out.sites.colors = site_colors(out.sites.positions, chosen.on_points, values, where, out.color.get());
   }
   if (spec.boundary && data->GetNumberOfCells() > 0) out.boundary = boundary_surface(data, spec.path);  // a shell's own surface too
@@ -527,6 +548,30 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
   if (const std::vector<std::string> frame = record_of(data, kAnatomicalFrame); !frame.empty())
     out.anatomical_frame = frame.front();
   return out;
+}
+
+std::unique_ptr<ScalarField> load_mask(const std::string& path) {
+  const VtkSession vtk;
+  const vtkSmartPointer<vtkDataSet> data = read_dataset(path, vtk, {-1, "", true});
+  if (const std::string why = no_volume_reason(data); !why.empty())
+    throw DataError(path + ": a mask needs a volume to sample in, and " + why);
+  ChosenArray chosen;
+  if (vtkDataArray* active = data->GetPointData()->GetScalars(); active && active->GetNumberOfComponents() == 1) {
+    chosen.array = active;
+  } else if (vtkDataArray* on_points = only_array_of(data->GetPointData(), {1})) {
+    chosen.array = on_points;
+  } else if (vtkDataArray* on_cells = only_array_of(data->GetCellData(), {1})) {
+    chosen.array = on_cells;
+    chosen.on_points = false;
+  } else {
+    throw DataError(path + ": a mask needs one scalar array (one value per point or cell) to be the mask, and the file "
+                    "has " + list_arrays(data));
+  }
+  chosen.name = chosen.array->GetName() ? chosen.array->GetName() : "";
+  chosen.components = 1;
+  auto [values, where] = scalar_values(chosen, path, false);
+  return sampled_field(data.Get(), std::move(values), where,
+                       [&] { return std::make_shared<const MeshLocator>(data.Get()); });
 }
 
 std::string describe_vtk_file(const VtkFileSpec& spec) {

@@ -40,6 +40,7 @@ struct VtkFileSpec {
   CellTensors cell_tensors = CellTensors::constant;
   FieldKind kind = FieldKind::automatic;
   std::string color_array;  // a scalar array to colour by; "" = none
+  std::string mask_array;   // a scalar array the picture keeps to (region.mask); "" = none
   int step = -1;            // of a time series: the step's index (-1: the first)
   std::string block;        // of a file of blocks: one, by name or index ("": all, merged)
   bool sites = false;       // also hand back the array's values where they stand (VtkData::sites)
@@ -62,6 +63,7 @@ struct VtkData {
   std::unique_ptr<TensorField> field;     // tensor data; or
   std::unique_ptr<VectorField> vectors;   // vector data
   std::unique_ptr<ScalarField> color;     // VtkFileSpec::color_array, when named
+  std::unique_ptr<ScalarField> mask;      // VtkFileSpec::mask_array, when named
   TriangleMesh boundary;              // the data set's outer surface
   // A 2-D result (field/reading/plane_data.h): the axis of its plane's normal.
   std::optional<int> plane_axis;
@@ -88,6 +90,13 @@ struct VtkData {
 // trilinearly; any other data set through a cell locator and the cells' own
 // interpolation functions.
 VtkData load_vtk_data(const VtkFileSpec& spec);
+
+// A mask in a file of its own (region.mask = FILE), sampled as the data
+// is: its one scalar array (the active scalars, else the only array of
+// one value per point, else per cell). NIfTI and NRRD masks are volumes
+// of one value per voxel, placed as the formats place their tensors.
+// Throws DataError naming the file for one without volume or such array.
+std::unique_ptr<ScalarField> load_mask(const std::string& path);
 
 // Each VTK step first runs in a child process (a corrupt file crashes or
 // hangs VTK's readers); a child that takes longer than `seconds` plus a

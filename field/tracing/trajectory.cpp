@@ -36,6 +36,10 @@ DirectionSample eigen_direction(const TensorField& field, const Vec3& x,
     result.stop = StopReason::boundary;
     return result;
   }
+  if (options.inside && !options.inside(x)) {
+    result.stop = StopReason::left_region;
+    return result;
+  }
   if (s->frobenius_norm() < options.min_magnitude) {
     result.stop = StopReason::low_magnitude;
     return result;
@@ -67,6 +71,10 @@ DirectionSample flow_direction(const VectorField& field, const Vec3& x, const Tr
   DirectionSample result;
   const std::optional<Vec3> v = field.sample(x);
   if (!v) return result;  // stop: boundary
+  if (options.inside && !options.inside(x)) {
+    result.stop = StopReason::left_region;
+    return result;
+  }
   const double speed = v->norm();
   result.magnitude = speed;
   if (!(speed > 0.0) || speed < options.min_magnitude) {

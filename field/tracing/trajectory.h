@@ -18,8 +18,8 @@ enum class EigenFamily { major = 0, medium = 1, minor = 2 };
 // Why one end of a trajectory stopped.
 // too_close: evenly spaced seeding stopped it beside another trajectory
 // (or its own earlier part). left_region: the measure the options keep
-// above a floor fell below it (a fibre's edge, FA < 0.3). sharp_turn: the
-// next step would have turned more than max_turn.
+// above a floor fell below it (a fibre's edge, FA < 0.3), or the line left
+// the mask. sharp_turn: the next step would have turned more than max_turn.
 enum class StopReason {
   boundary, max_length, degenerate, low_magnitude, max_steps, closed, too_close, left_region, sharp_turn
 };
@@ -52,6 +52,9 @@ struct TrajectoryOptions {
   // domain's boundary, and stops there.
   std::function<double(const Vec3& eigenvalues)> measure;
   double min_measure = 0.0;
+  // The mask lines stay in (region.mask; none: anywhere), with the same
+  // creep up to its edge.
+  std::function<bool(const Vec3& x)> inside;
   // The sharpest turn, in degrees, between one step and the next (a line
   // that would jump from one fibre bundle to another where they cross);
   // 180: no limit.

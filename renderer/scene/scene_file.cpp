@@ -142,12 +142,28 @@ void read_seeds(TableReader& seeds, SeedSpec& spec) {
   seeds.finish();
 }
 
-void read_region(TableReader& r, RegionSpec& spec) {
+void read_region(TableReader& r, GlyphPipelineSpec& pipeline, const std::string& base_dir) {
+  RegionSpec& spec = pipeline.region;
   std::vector<std::pair<std::string, ColorScalar>> names;
   for (ColorScalar c : named_color_scalars())
     if (is_tensor_measure(c)) names.emplace_back(color_scalar_name(c), c);
   spec.measure = r.choice("measure", names);
   spec.above = r.optional_number("above");
+  if (const std::optional<std::string> mask = r.optional_string("mask")) {
+    if (pipeline.data.kind != DataKind::vtk_file)
+      r.fail_at("mask", "needs data.file: the point load has no mask");
+    const std::string prefix = RegionSpec::kMaskArrayPrefix;
+    if (mask->rfind(prefix, 0) == 0) {
+      // A scalar array of the data file, read with it.
+      spec.mask = *mask;
+      pipeline.data.file.mask_array = mask->substr(prefix.size());
+      if (pipeline.data.file.mask_array.empty())
+        r.fail_at("mask", "= \"array:NAME\" needs the array's name after the colon");
+    } else {
+      spec.mask = existing_file(r, "mask", *mask, base_dir);
+      if (const std::string why = unreadable_format_message(spec.mask); !why.empty()) r.fail_at("mask", "names " + why);
+    }
+  }
   r.finish();
 }
 
@@ -494,7 +510,7 @@ SceneSpec load_scene_text(const std::string& text, const std::string& path, cons
   } else {
     read_data(data, spec.pipeline.data, base_dir);
     read_seeds(seeds, spec.pipeline.seeds);
-    read_region(region, spec.pipeline.region);
+    read_region(region, spec.pipeline, base_dir);
   }
   read_trajectories(trajectories, spec.pipeline.trajectory);
   if (spec.pipeline.data.kind == DataKind::point_load && spec.pipeline.color == ColorScalar::array)

@@ -159,6 +159,10 @@ std::vector<KeySchema> build_keys() {
           .fallback("\"fa\""),
       Key("region.above", T::number, "seeds, lines and glyphs at data points only where the measure is at least this")
           .automatic("0.3 for diffusion data (with fa: the white matter); else none, everywhere"),
+      Key("region.mask", T::string, "seeds, lines and glyphs at data points only where this mask is at least ½: "
+                                    "\"array:NAME\" (a scalar array of the data file) or a file of one value per "
+                                    "voxel, point or cell (a brain mask), relative to the scene")
+          .none("everywhere (with region.above as well, where given)"),
 
       // [seeds]
       Key("seeds.strategy", T::choice, "how seeds are chosen: evenly spaced trajectories, a grid, or the points given")

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "field/glyph_pipeline.h"
+#include "field/tracing/trajectory.h"
 
 namespace hsb {
 namespace {
@@ -65,6 +66,35 @@ TEST(DiffusionPhantom, EveryBundleIsDrawnAlongItsOwnDirection) {
   // Near the bundles, yes (their blended fringe); out in the isotropic
   // background, no.
   EXPECT_LT(background, scene.sources.size() / 3) << background << " of " << scene.sources.size();
+}
+
+// With FSL's mask of the left hemisphere beside it (region.mask), the
+// phantom is drawn on the left (world x below the centre's) alone: its left
+// tract and cingulum and the arc's left half, lines stopped at the midline.
+TEST(DiffusionPhantom, AMaskFileKeepsThePictureToItsHemisphere) {
+  const std::string formats = std::string(HSB_SOURCE_DIR) + "/scenes/data/formats/";
+  GlyphPipelineSpec spec;
+  spec.data.kind = DataKind::vtk_file;
+  spec.data.file.path = formats + "dti_fsl_dtifit.nii.gz";
+  std::size_t right_unmasked = 0;
+  for (const GlyphSource& s : build_glyph_scene(spec, 0.64).sources) right_unmasked += s.centre.x() > 1.5 + 2.0;
+  EXPECT_GT(right_unmasked, 50u);  // the right half, unless masked
+  spec.region.mask = formats + "dti_fsl_left_hemisphere.nii.gz";
+  const GlyphScene scene = build_glyph_scene(spec, 0.64);
+  ASSERT_FALSE(scene.sources.empty());
+  ASSERT_FALSE(scene.trajectories.empty());
+  const double midline = 1.5;  // world x of the phantom's centre
+  const double voxel = 2.0;    // the mask's edge, interpolated, within a voxel of it
+  std::size_t left_tract = 0, left_cingulum = 0;
+  for (const GlyphSource& s : scene.sources) {
+    EXPECT_LT(s.centre.x(), midline + voxel) << s.centre.transpose();
+    left_tract += std::hypot(s.centre.x() - midline + 14.0, s.centre.y() + 17.0 + 6.0) < 5.0;
+    left_cingulum += std::hypot(s.centre.x() - midline + 6.0, s.centre.z() - 9.0 - 15.0) < 4.0;
+  }
+  for (const Trajectory& t : scene.trajectories)
+    for (const Vec3& p : t.points) ASSERT_LT(p.x(), midline + voxel) << p.transpose();
+  EXPECT_GT(left_tract, 5u);
+  EXPECT_GT(left_cingulum, 5u);
 }
 
 }  // namespace

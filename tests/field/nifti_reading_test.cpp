@@ -128,5 +128,32 @@ TEST(NiftiReading, VoxelsOfOtherSizesAreSaidSo) {
   }
 }
 
+// A mask (FSL's nodif_brain_mask, a region of interest): one value per
+// voxel, placed by the same sform as the tensors beside it.
+TEST(NiftiReading, AMaskIsOneValuePerVoxelPlacedAsTheTensors) {
+  const auto code = [](int i, int j, int k) { return 100.0 * i + 10.0 * j + k; };
+  const std::string path = write_nifti("mask.nii", {3, nx, ny, nz, 1, 1, 1, 1}, 0, "", turned,
+                                       [&](int i, int j, int k) { return std::array<double, 6>{code(i, j, k)}; });
+  const std::unique_ptr<ScalarField> mask = load_mask(path);
+  for (const auto& [i, j, k] : {std::array{1, 1, 1}, std::array{3, 2, 4}, std::array{2, 0, 3}, std::array{0, 2, 0}}) {
+    const std::optional<double> value = mask->sample(turned_place(i, j, k));
+    ASSERT_TRUE(value) << i << j << k;
+    EXPECT_NEAR(*value, code(i, j, k), 1e-9) << i << " " << j << " " << k;
+  }
+  // Between voxels, interpolated.
+  EXPECT_NEAR(*mask->sample(0.5 * (turned_place(1, 1, 1) + turned_place(2, 1, 1))), 0.5 * (code(1, 1, 1) + code(2, 1, 1)),
+              1e-9);
+  const std::string tensors = write_nifti("not_a_mask.nii", {4, nx, ny, nz, 6, 1, 1, 1}, 0, "", turned,
+                                          [](int, int, int) { return std::array<double, 6>{1, 1, 1, 0, 0, 0}; });
+  try {
+    load_mask(tensors);
+    FAIL() << "read a tensor volume as a mask";
+  } catch (const DataError& e) {
+    EXPECT_NE(std::string(e.what()).find("its voxels hold 6 values; a mask is a volume of one value per voxel"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace hsb

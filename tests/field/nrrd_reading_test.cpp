@@ -161,5 +161,41 @@ TEST(NrrdReading, WhatIsWrongIsSaidAtItsLine) {
   EXPECT_NE(message(broken("dimension: 4", "dimension: 3")).find("one value per voxel"), std::string::npos);
 }
 
+// A mask (a label map as 3D Slicer writes one): dimension 3, one value per
+// voxel, placed by the same space directions as a tensor volume's.
+TEST(NrrdReading, AMaskIsAVolumeOfOneValuePerVoxel) {
+  std::vector<float> codes;
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) codes.push_back(float(100 * i + 10 * j + k));
+  const std::string head = "NRRD0005\ntype: float\ndimension: 3\nspace: right-anterior-superior\nsizes: " +
+                           std::to_string(nx) + " " + std::to_string(ny) + " " + std::to_string(nz) +
+                           "\nspace directions: (2,0,0) (0,3,0) (0,0,0.5)\nkinds: space space space\n"
+                           "endian: little\nencoding: raw\nspace origin: (10,20,30)\n\n";
+  const std::string path = write_file("mask.nrrd", head + bytes_of(codes));
+  const std::unique_ptr<ScalarField> mask = load_mask(path);
+  for (const auto& [i, j, k] : {std::array{1, 1, 1}, std::array{3, 2, 4}, std::array{0, 0, 0}}) {
+    const std::optional<double> value = mask->sample(axis_aligned(i, j, k));
+    ASSERT_TRUE(value) << i << j << k;
+    EXPECT_NEAR(*value, 100.0 * i + 10.0 * j + k, 1e-9) << i << " " << j << " " << k;
+  }
+  // A tensor volume is no mask, and a mask no tensor volume: each said so.
+  try {
+    load_mask(write_file("tensors.nrrd", header("raw") + "\n" + bytes_of(masked_values())));
+    FAIL() << "read tensors as a mask";
+  } catch (const DataError& e) {
+    EXPECT_NE(std::string(e.what()).find("a mask is a volume of one value per voxel: expected dimension 3"),
+              std::string::npos)
+        << e.what();
+  }
+  try {
+    load_vtk_data({path});
+    FAIL() << "read a mask as tensors";
+  } catch (const DataError& e) {
+    EXPECT_NE(std::string(e.what()).find("a volume of one value per voxel: no tensors or vectors"), std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace hsb

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "field/glyph_pipeline.h"
+#include "field/reading/data_error.h"
 #include "field/tensor/eigensystem.h"
 #include "field/tensor/tensor_measures.h"
 #include "tests/temp_dir.h"
@@ -148,6 +149,112 @@ TEST(Region, AnotherMeasureAndExplicitSeeds) {
   ASSERT_EQ(scene.trajectories.size(), 1u);  // the seed outside has no line
   for (const Vec3& p : scene.trajectories.front().points)
     EXPECT_GE(westin_measures(decompose(*data.field->sample(p)).values).linear, 0.5);
+}
+
+// A region of interest: the half x < ½ of the volume, as a scalar array of
+// the data file and as a file of its own on the same grid (a brain mask
+// beside FSL's tensors). Interpolated, the mask is ½ half a node spacing
+// before x = ½: the nodes at 14/30 are in, at 15/30 out.
+constexpr double kMaskEdge = 14.5 / 30.0;
+double left_half(const Vec3& p) { return p.x() < 0.5 ? 1.0 : 0.0; }
+
+std::string volume_with_mask_array() {
+  static const std::string path =
+      grid_written(test_temp_dir("region") / "fibre_roi.vti", {Vec3::Zero(), Vec3::Ones()}, {31, 31, 31},
+                   fibre_in_background, "tensors", {{"roi", left_half}});
+  return path;
+}
+
+std::string mask_file() {
+  static const std::string path =
+      grid_written(test_temp_dir("region") / "roi_mask.vti", {Vec3::Zero(), Vec3::Ones()}, {31, 31, 31}, {}, "",
+                   {{"mask", left_half}});
+  return path;
+}
+
+GlyphPipelineSpec masked_by_array() {
+  GlyphPipelineSpec spec = spec_for(0.3);
+  spec.data.file.path = volume_with_mask_array();
+  spec.data.file.mask_array = "roi";
+  spec.region.mask = "array:roi";
+  return spec;
+}
+
+GlyphPipelineSpec masked_by_file() {
+  GlyphPipelineSpec spec = spec_for(0.3);
+  spec.region.mask = mask_file();
+  return spec;
+}
+
+TEST(Region, AMaskKeepsLinesAndGlyphsToItsHalfOfTheFibre) {
+  for (const GlyphPipelineSpec& spec : {masked_by_array(), masked_by_file()}) {
+    SCOPED_TRACE(spec.region.mask);
+    const GlyphScene scene = build_glyph_scene(spec, kExtent);
+    ASSERT_FALSE(scene.trajectories.empty());
+    ASSERT_TRUE(scene.values.region.mask_field);
+    double longest = 0.0;
+    int at_mask_edge = 0;
+    for (const Trajectory& t : scene.trajectories) {
+      longest = std::max(longest, t.length());
+      at_mask_edge += t.forward_stop == StopReason::left_region || t.backward_stop == StopReason::left_region;
+      for (const Vec3& p : t.points) {
+        ASSERT_LE(p.x(), kMaskEdge + 1e-6) << p.transpose();
+        ASSERT_LT(from_axis(p), 1.5 * kBundle) << p.transpose();  // and still in the fibre (FA ≥ 0.3)
+      }
+    }
+    // The bundle's lines run from the volume's end up to the mask's edge.
+    EXPECT_GT(longest, 0.9 * kMaskEdge);
+    EXPECT_GT(at_mask_edge, 0);
+    for (const GlyphSource& s : scene.sources) EXPECT_LE(s.centre.x(), kMaskEdge + 1e-6) << s.centre.transpose();
+  }
+}
+
+TEST(Region, AMaskKeepsAGlyphFieldToItsVoxels) {
+  GlyphPipelineSpec unmasked = spec_for(0.3);
+  unmasked.placement = SourcePlacement::at_data_points;
+  unmasked.stride = 1;
+  const std::size_t whole = build_glyph_scene(unmasked, kExtent).sources.size();
+  for (GlyphPipelineSpec spec : {masked_by_array(), masked_by_file()}) {
+    SCOPED_TRACE(spec.region.mask);
+    spec.placement = SourcePlacement::at_data_points;
+    spec.stride = 1;
+    const GlyphScene scene = build_glyph_scene(spec, kExtent);
+    ASSERT_FALSE(scene.sources.empty());
+    for (const GlyphSource& s : scene.sources) {
+      EXPECT_LT(s.centre.x(), 0.5) << s.centre.transpose();
+      EXPECT_GE(fractional_anisotropy(s.eigenvalues), 0.3);
+    }
+    // The fibre's voxels at x = 0 … 14/30 of the 31 along it.
+    EXPECT_EQ(scene.sources.size() * 31, whole * 15);
+  }
+  // The mask alone (no threshold): every voxel of the half.
+  GlyphPipelineSpec alone = masked_by_file();
+  alone.region.above.reset();
+  alone.data.quantity = DataQuantity::stress;  // no automatic FA threshold either
+  alone.placement = SourcePlacement::at_data_points;
+  alone.stride = 1;
+  EXPECT_EQ(build_glyph_scene(alone, kExtent).sources.size(), 15u * 31u * 31u);
+}
+
+TEST(Region, AMaskThatIsNoneIsSaidSo) {
+  GlyphPipelineSpec spec = masked_by_array();
+  spec.data.file.mask_array = "nope";
+  spec.region.mask = "array:nope";
+  try {
+    build_glyph_scene(spec, kExtent);
+    FAIL() << "an array that is not there";
+  } catch (const DataError& e) {
+    EXPECT_NE(std::string(e.what()).find("no array named \"nope\" for region.mask; the file has"), std::string::npos)
+        << e.what();
+  }
+  spec = spec_for(0.3);
+  spec.region.mask = volume();  // tensors, no scalar array
+  try {
+    build_glyph_scene(spec, kExtent);
+    FAIL() << "a file with no scalar array";
+  } catch (const DataError& e) {
+    EXPECT_NE(std::string(e.what()).find("a mask needs one scalar array"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
