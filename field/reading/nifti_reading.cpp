@@ -56,6 +56,9 @@ vtkSmartPointer<vtkImageData> read_nifti(const std::string& path, bool scalar) {
   if (scalar && values != 1)
     throw DataError(path + ": its voxels hold " + std::to_string(values) +
                     " values; a mask is a volume of one value per voxel");
+  if (!scalar && values == 1)
+    throw DataError(path + ": its voxels hold one value: a mask or a scalar map, no tensors (6 values along the "
+                    "fourth or fifth dimension); a mask is given as region.mask, beside the tensors' file");
   if (!scalar && values != 3 && values != 6 && values != 9)
     throw DataError(path + ": its voxels hold " + std::to_string(values) +
                     " values; a tensor volume has 6 (or 9, or 3 for vectors) along its fourth or fifth dimension");

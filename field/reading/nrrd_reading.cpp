@@ -350,7 +350,8 @@ vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path, bool scalar) {
            "a mask is a volume of one value per voxel: expected dimension 3 with three sizes, found dimension " +
                dimension->value + " with " + std::to_string(sizes.size()) + " sizes");
   if (!scalar && dimension->value == "3")
-    h.fail(dimension, "a volume of one value per voxel: no tensors or vectors (a 4-D NRRD with a first axis of 6, 7 or 9)");
+    h.fail(dimension, "a volume of one value per voxel: no tensors or vectors (a 4-D NRRD with a first axis of 6, 7 or "
+                      "9); a mask is given as region.mask, beside the tensors' file");
   if (!scalar && (dimension->value != "4" || sizes.size() != 4))
     h.fail(sizes.size() != 4 ? sizes_field : dimension,
            "expected dimension 4 with four sizes (values per voxel, then three space axes), found dimension " +

@@ -79,7 +79,7 @@ TEST(DiffusionPhantom, AMaskFileKeepsThePictureToItsHemisphere) {
   std::size_t right_unmasked = 0;
   for (const GlyphSource& s : build_glyph_scene(spec, 0.64).sources) right_unmasked += s.centre.x() > 1.5 + 2.0;
   EXPECT_GT(right_unmasked, 50u);  // the right half, unless masked
-  spec.region.mask = formats + "dti_fsl_left_hemisphere.nii.gz";
+  spec.region.mask = std::string(HSB_SOURCE_DIR) + "/scenes/data/masks/dti_fsl_left_hemisphere.nii.gz";
   const GlyphScene scene = build_glyph_scene(spec, 0.64);
   ASSERT_FALSE(scene.sources.empty());
   ASSERT_FALSE(scene.trajectories.empty());

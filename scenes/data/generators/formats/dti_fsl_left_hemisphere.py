@@ -1,5 +1,6 @@
-"""dti_fsl_left_hemisphere.nii.gz: a region-of-interest mask beside
-dti_fsl_dtifit.nii.gz, laid out as FSL writes masks (nodif_brain_mask, a
+"""dti_fsl_left_hemisphere.nii.gz: a region-of-interest mask for
+dti_fsl_dtifit.nii.gz, written into scenes/data/masks/ (the folder
+"masks" beside the output folder: a mask is no data set to render alone), laid out as FSL writes masks (nodif_brain_mask, a
 seed mask for probtrackx; written with nibabel): NIfTI-1, gzip, uint8,
 3-D, shape 40 x 48 x 24, the same sform and qform as the tensors (a 10
 degree rotation about z times 2 mm), 1 inside and 0 outside.
@@ -10,6 +11,8 @@ right). With region.mask = this file, a picture of the phantom keeps to
 the left half: the left corticospinal tract and cingulum, and the arc up to
 the midline; nothing right of it.
 """
+import os
+
 import nibabel as nib
 import numpy as np
 
@@ -26,7 +29,9 @@ img.set_sform(a, code=1)
 img.set_qform(a, code=1)
 img.header.set_xyzt_units('mm', 'sec')
 img.header['descrip'] = b'FSL6.0'
-path = fc.out_path('dti_fsl_left_hemisphere.nii.gz')
+masks = os.path.join(os.path.dirname(fc.out_dir()), 'masks')
+os.makedirs(masks, exist_ok=True)
+path = os.path.join(masks, 'dti_fsl_left_hemisphere.nii.gz')
 nib.save(img, path)
 fc.report(path)
 
