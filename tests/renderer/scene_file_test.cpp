@@ -265,6 +265,26 @@ TEST_F(SceneFile, DataKindFollowsTheFile) {
       << csv;
 }
 
+// region.mask: an array of the data file, read with it, or a file beside
+// the scene; each mistake located.
+TEST_F(SceneFile, ARegionMaskIsAnArrayOrAFile) {
+  const std::string data = std::string(HSB_SOURCE_DIR) + "/scenes/data/formats/dti_fsl_dtifit.nii.gz";
+  const std::string head = "[data]\nfile = \"" + data + "\"\n[region]\n";
+  const SceneSpec array = load_scene(write(head + "mask = \"array:brain\"\n"));
+  EXPECT_EQ(array.pipeline.region.mask, "array:brain");
+  EXPECT_EQ(array.pipeline.data.file.mask_array, "brain");
+  std::filesystem::copy_file(std::string(HSB_SOURCE_DIR) + "/scenes/data/masks/dti_fsl_left_hemisphere.nii.gz",
+                             test_temp_dir("scene_test") / "roi.nii.gz",
+                             std::filesystem::copy_options::overwrite_existing);
+  const SceneSpec file = load_scene(write(head + "mask = \"roi.nii.gz\"\n"));  // beside the scene
+  EXPECT_EQ(file.pipeline.region.mask, (test_temp_dir("scene_test") / "roi.nii.gz").string());
+  EXPECT_TRUE(file.pipeline.data.file.mask_array.empty());
+  EXPECT_EQ(error_of(head + "mask = \"array:\"\n"),
+            path_ + ":4:8: region.mask = \"array:NAME\" needs the array's name after the colon");
+  EXPECT_NE(error_of(head + "mask = \"nope.nii\"\n").find(":4:8: region.mask names "), std::string::npos);
+  EXPECT_NE(error_of("[region]\nmask = \"array:brain\"\n").find("region.mask needs data.file"), std::string::npos);
+}
+
 TEST_F(SceneFile, ADataFileIsASceneNamingOnlyIt) {
   const std::string data = std::string(HSB_SOURCE_DIR) + "/scenes/data/cylinder_stress_coarse.vtu";
   ASSERT_TRUE(is_data_file(data));
