@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "renderer/render/camera_samples.h"
 #include "renderer/render/pixel_filter.h"
@@ -34,9 +35,17 @@ class SampleRows {
  public:
   SampleRows(int width, int per_pixel, int rows)
       : width_(width), per_pixel_(per_pixel), rows_(rows),
-        samples_(std::size_t(width) * std::size_t(per_pixel) * std::size_t(rows)), taps_(samples_.size()) {}
+        samples_(std::size_t(width) * std::size_t(per_pixel) * std::size_t(rows)) {
+    // One sample a pixel stands at its centre: one set of taps serves all.
+    if (per_pixel == 1) centred_ = filter_taps(0.5f, 0.5f);
+    else taps_.resize(samples_.size());
+  }
   CameraSample* pixel(int x, int y) { return &samples_[slot(x, y)]; }
-  FilterTaps* taps(int x, int y) { return &taps_[slot(x, y)]; }
+  const FilterTaps* taps(int x, int y) const { return centred_ ? &*centred_ : &taps_[slot(x, y)]; }
+  // Keeps the taps of sample k of pixel (x, y), at (sx, sy) within it.
+  void set_taps(int x, int y, int k, float sx, float sy) {
+    if (!centred_) taps_[slot(x, y) + std::size_t(k)] = filter_taps(sx, sy);
+  }
 
  private:
   std::size_t slot(int x, int y) const {
@@ -46,6 +55,7 @@ class SampleRows {
   int width_, per_pixel_, rows_;
   std::vector<CameraSample> samples_;
   std::vector<FilterTaps> taps_;
+  std::optional<FilterTaps> centred_;
 };
 
 // Where camera sample k of pixel (x, y) lies in the picture: stratified
@@ -95,7 +105,7 @@ void trace_rows(const RayScene& scene, const Camera& camera, const ShadingSpec& 
           sample_position(px[i], py[i], settings.width, k, per_pixel, position_x, position_y);
           stored.x = float(position_x - px[i]);  // within the pixel, where float keeps every bit
           stored.y = float(position_y - py[i]);
-          rows.taps(px[i], py[i])[k] = filter_taps(stored.x, stored.y);
+          rows.set_taps(px[i], py[i], k, stored.x, stored.y);
         }
       }
     }
