@@ -26,6 +26,7 @@
 #include "renderer/app/pinned_scene.h"
 #include "renderer/app/prepared_scene.h"
 #include "renderer/app/render_job.h"
+#include "renderer/image/image_io_module.h"
 #include "renderer/render/ray_scene.h"
 #include "renderer/scene/scene_error.h"
 #include "renderer/scene/scene_keys.h"
@@ -342,6 +343,9 @@ int main(int argc, char** argv) {
         std::printf("%s\n", path.c_str());
     }));
   }
+  // A render writes images (or checks them with --skip-existing): the
+  // image module loads while the first scene is read.
+  hsb::preload_image_io();
   // The batch: every scene times every swept value, this node's share,
   // each item made when its turn comes.
   hsb::Shard shard;

@@ -1,12 +1,8 @@
 #include "renderer/image/image_output.h"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include "base/file_extension.h"
 #include "base/partial_file.h"
+#include "renderer/image/image_io_module.h"
 
 #include <filesystem>
 #include <fstream>
@@ -30,17 +26,7 @@ bool is_vector_format(const std::string& path) {
 
 std::string stored_scene_sha1(const std::string& path) {
   if (!std::filesystem::is_regular_file(path)) return "";
-  if (!is_vector_format(path)) {
-    // Decoded whole, not only its header: a file cut short (a disk that
-    // filled, a copy interrupted) holds the right hash and a broken
-    // picture, and must be rendered again.
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) return "";
-    const std::string hash = in->spec().get_string_attribute("hsb:scene_sha1");
-    std::vector<float> pixels(in->spec().image_pixels() * std::size_t(in->spec().nchannels));
-    if (!in->read_image(0, 0, 0, in->spec().nchannels, OIIO::TypeDesc::FLOAT, pixels.data())) return "";
-    return hash;
-  }
+  if (!is_vector_format(path)) return image_io().stored_sha1(path);
   // Both vector formats keep it in plain text: "hsb:scene_sha1=HEX" in a
   // PDF's uncompressed document information, key="hsb:scene_sha1">HEX in an SVG.
   std::ifstream in(path, std::ios::binary);
@@ -58,36 +44,6 @@ std::string stored_scene_sha1(const std::string& path) {
   return "";
 }
 
-namespace {
-
-// OIIO's dither seed for oiio:dither = 1.
-constexpr unsigned kDitherSeed = 1;
-
-// The picture quantised to 8 bits with OIIO's own dither (its blue noise
-// of one level's amplitude, placed by each pixel's position) and
-// conversion: the bytes its writer makes from floats with oiio:dither,
-// but in bands of rows on every core, where the writer dithers and
-// converts a row at a time on one (a third of a 4-megapixel PNG's time).
-std::vector<unsigned char> dithered_8bit(const ImageToWrite& image, int alpha_channel) {
-  const std::size_t row = std::size_t(image.width) * std::size_t(image.channels);
-  std::vector<unsigned char> bytes(row * std::size_t(image.height));
-  tbb::parallel_for(tbb::blocked_range<int>(0, image.height, 32), [&](const tbb::blocked_range<int>& rows) {
-    const std::size_t first = std::size_t(rows.begin()) * row, count = std::size_t(rows.size()) * row;
-    std::vector<float> band(image.pixels.begin() + std::ptrdiff_t(first),
-                            image.pixels.begin() + std::ptrdiff_t(first + count));
-    const OIIO::stride_t pixel = OIIO::stride_t(image.channels) * OIIO::stride_t(sizeof(float));
-    OIIO::add_dither(image.channels, image.width, int(rows.size()), 1, band.data(), pixel,
-                     pixel * image.width, OIIO::AutoStride, 1.0f / 255.0f, alpha_channel, -1, kDitherSeed, 0, 0,
-                     rows.begin(), 0);
-    OIIO::convert_image(image.channels, image.width, int(rows.size()), 1, band.data(), OIIO::TypeDesc::FLOAT,
-                        OIIO::AutoStride, OIIO::AutoStride, OIIO::AutoStride, bytes.data() + first,
-                        OIIO::TypeDesc::UINT8, OIIO::AutoStride, OIIO::AutoStride, OIIO::AutoStride);
-  });
-  return bytes;
-}
-
-}  // namespace
-
 void write_image(const ImageToWrite& image, const std::string& path) {
   const std::string ext = lower_extension(path);
   const bool exr = ext == ".exr";
@@ -98,49 +54,14 @@ void write_image(const ImageToWrite& image, const std::string& path) {
   if (exr && image.bit_depth != 16 && image.bit_depth != 32)
     throw std::runtime_error(path + ": an EXR's bit depth must be 16 (half) or 32 (float)");
 
-  const OIIO::TypeDesc format = exr ? (image.bit_depth == 16 ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT)
-                                    : (image.bit_depth == 16 ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
-  OIIO::ImageSpec spec(image.width, image.height, image.channels, format);
-  if (!image.channel_names.empty()) spec.channelnames = image.channel_names;
-  if (image.channels >= 4) spec.alpha_channel = 3;
-  if (exr && !image.integer_channels.empty()) {
-    spec.channelformats.assign(std::size_t(image.channels), format);
-    for (int c : image.integer_channels) spec.channelformats[std::size_t(c)] = OIIO::TypeDesc::UINT;
-  }
-  if (exr) spec.attribute("compression", "zip");
-  // PNG encoding is the one single-threaded step after the render. One row
-  // filter (Sub) instead of libpng's per-row trial of all five, and zlib
-  // level 3 instead of 6, halve it (0.24 s -> 0.12 s for the 800×800
-  // cylinder figure) for files about 12% larger.
-  if (ext == ".png") {
-    spec.attribute("png:filter", 16);  // PNG_FILTER_SUB
-    spec.attribute("png:compressionLevel", 3);
-  }
-  if (image.dpi > 0.0) {
-    spec.attribute("XResolution", float(image.dpi));
-    spec.attribute("YResolution", float(image.dpi));
-    spec.attribute("ResolutionUnit", "inch");
-  }
-  for (const auto& [key, value] : image.metadata) spec.attribute(key, value);
-
   PartialFile file(path);
-  // Where the format can, the encoder writes into memory and the bytes go
-  // to disk through PartialFile::write, which checks every write: libpng's
-  // own file output ignores a full disk and leaves a truncated image.
-  OIIO::Filesystem::IOVecOutput memory;
-  auto out = OIIO::ImageOutput::create(file.path());
-  if (!out) throw std::runtime_error(path + ": " + OIIO::geterror());
-  const bool in_memory = out->supports("ioproxy") && out->set_ioproxy(&memory);
-  // Dither the quantisation to 8 bits so smooth shading does not band.
-  const std::vector<unsigned char> bytes =
-      format == OIIO::TypeDesc::UINT8 ? dithered_8bit(image, spec.alpha_channel) : std::vector<unsigned char>();
-  const bool ok = out->open(file.path(), spec) &&
-                  (bytes.empty() ? out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data())
-                                 : out->write_image(OIIO::TypeDesc::UINT8, bytes.data())) &&
-                  out->close();
-  if (!ok) throw std::runtime_error(path + ": " + out->geterror());
-  out.reset();
-  if (in_memory) file.write(memory.buffer().data(), memory.buffer().size());
+  std::vector<char> memory;
+  try {
+    image_io().encode(image, ext, file.path(), memory);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(path + ": " + e.what());
+  }
+  if (!memory.empty()) file.write(memory.data(), memory.size());
   file.commit();
 }
 

@@ -1,0 +1,40 @@
+#pragma once
+// OpenImageIO's part of hsb, kept in a module of its own
+// (libhsb_image_io.so beside the binary) and loaded when a raster image is
+// first read or written. Debian's libOpenImageIO brings 261 libraries with
+// it (GDAL, OpenVDB, OpenCV, poppler): loading them takes 0.2 s and 90 MB
+// before anything else, which `hsb info`, `hsb keys`, a PDF or SVG figure
+// and every child process need not pay, and which a render can pay while
+// it reads its data (preload_image_io).
+
+#include <string>
+#include <vector>
+
+#include "renderer/image/image_output.h"
+
+namespace hsb {
+
+struct ImageIo {
+  // Encodes `image` in the format of `extension` (".png", ".tif", ".tiff",
+  // ".exr"): into `memory` where the format's writer can write there, else
+  // into the file `file`. Throws std::runtime_error with OIIO's message.
+  void (*encode)(const ImageToWrite& image, const std::string& extension, const std::string& file,
+                 std::vector<char>& memory);
+  // The hsb:scene_sha1 a raster image at `path` holds, once it is decoded
+  // whole; "" when it cannot be read or holds none.
+  std::string (*stored_sha1)(const std::string& path);
+};
+
+// The module's functions, loading it (and OpenImageIO) on the first call.
+// Throws std::runtime_error naming the module when it cannot be loaded.
+const ImageIo& image_io();
+
+// Starts loading the module on a thread of its own, so that a render finds
+// it loaded when it writes its image. A fork waits for the load to end: a
+// child must not inherit the dynamic loader's lock half taken.
+void preload_image_io();
+
+}  // namespace hsb
+
+// What the module exports: its functions.
+extern "C" const hsb::ImageIo* hsb_image_io_functions();
