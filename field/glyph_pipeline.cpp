@@ -16,7 +16,6 @@
 #include "field/sampling/mesh_field.h"
 #include "field/sampling/uniform_grid.h"
 #include "field/tensor/eigensystem.h"
-#include "field/tensor/tensor_measures.h"
 #include "field/tracing/even_seeding.h"
 #include "field/tracing/seeding.h"
 
@@ -323,16 +322,10 @@ std::vector<std::size_t> sites_to_draw(const DataSites& sites, const RegionSpec&
     for (std::size_t i = 0; i < which.size(); ++i) which[i] = i;
     return which;
   }
-  // Most of a diffusion volume lies well below its FA threshold, which the
-  // components tell without decomposing; near it, the eigenvalues decide,
-  // as everywhere else the region is asked.
-  constexpr double kFaMargin = 1e-9;  // far beyond the two FAs' round-off
   std::vector<char> inside(sites.tensors.size());
   tbb::parallel_for(std::size_t{0}, inside.size(), [&](std::size_t i) {
     const Sym3& t = sites.tensors[i];
-    if (!t.is_finite()) return;
-    if (region.above && region.measure == ColorScalar::fa && fractional_anisotropy(t) < *region.above - kFaMargin)
-      return;
+    if (!t.is_finite() || region.surely_below(t)) return;
     inside[i] = region.holds(sites.positions[i], decompose(t).values);
   });
   for (std::size_t i = 0; i < inside.size(); ++i)
@@ -585,10 +578,9 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   if (flow && spec.region.above)
     throw DataError(data.file.path + ": region.above keeps to where a measure of the tensor is large, and this "
                     "file is read as a flow (vectors)");
-  if (!region.mask.empty())
-    region.mask_field = region.mask.rfind(RegionSpec::kMaskArrayPrefix, 0) == 0
-                            ? std::shared_ptr<const ScalarField>(std::move(loaded.mask))
-                            : std::shared_ptr<const ScalarField>(load_mask(region.mask));
+  // The mask array came with the data (data.file.mask_array); a mask file is read now.
+  if (loaded.mask) region.mask_field = std::move(loaded.mask);
+  else if (!region.mask.empty()) region.mask_field = load_mask(region.mask);
   // Evenly spaced seeding measures the body first: its separation sets
   // the step, the spacing and the glyph size.
   const bool even = scene.placement != SourcePlacement::at_data_points &&
@@ -601,7 +593,7 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
       return v && region.in_mask(x) ? std::optional<double>(v->norm()) : std::nullopt;
     }
     const std::optional<Sym3> t = tensors->sample(x);
-    if (!t) return std::nullopt;
+    if (!t || region.surely_below(*t)) return std::nullopt;
     const Vec3 l = decompose(*t).values;
     return region.holds(x, l) ? std::optional<double>(l.cwiseAbs().maxCoeff()) : std::nullopt;
   };

@@ -23,6 +23,7 @@
 #include "field/glyphs/triangle_mesh.h"
 #include "field/reading/vtk_data.h"
 #include "field/sampling/point_load.h"
+#include "field/tensor/tensor_measures.h"
 #include "field/tracing/trajectory.h"
 
 namespace hsb {
@@ -108,6 +109,15 @@ struct RegionSpec {
   }
   bool holds(const Vec3& x, const Vec3& eigenvalues) const {
     return in_mask(x) && (!above || color_scalar(eigenvalues, measure) >= *above);
+  }
+  // Whether the tensor's components alone show it below the threshold,
+  // before any decomposition: most of a diffusion volume lies well below
+  // its FA threshold. Near it (within 1e-9, far beyond the round-off
+  // between the components' FA and the eigenvalues') holds() decides, so
+  // the region is the same either way. Other measures: never.
+  bool surely_below(const Sym3& tensor) const {
+    constexpr double kFaMargin = 1e-9;
+    return above && measure == ColorScalar::fa && fractional_anisotropy(tensor) < *above - kFaMargin;
   }
 };
 

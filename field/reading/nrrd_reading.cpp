@@ -364,7 +364,7 @@ vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path, bool scalar) {
     if (count > most_values) h.fail(sizes_field, "the volume declares more than 2^31 values: " + sizes_field->value);
   }
   const VoxelLayout layout = scalar ? VoxelLayout{1, false, VoxelLayout::scalar, ""} : voxel_layout(h, int(sizes[0]));
-  if (layout.values != int(scalar ? 1 : sizes[0]))
+  if (!scalar && layout.values != int(sizes[0]))
     h.fail(sizes_field, "its kind has " + std::to_string(layout.values) + " values per voxel, its size is " +
                             std::to_string(int(sizes[0])));
   const std::array<int, 3> dims{int(sizes[std::size_t(first)]), int(sizes[std::size_t(first + 1)]),

@@ -527,9 +527,11 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
     }
     // Read out, the file's array would only raise the peak memory (by a
     // third for a glyph field of a large volume).
-    vtkDataSetAttributes* holder = chosen.on_points ? static_cast<vtkDataSetAttributes*>(data->GetPointData())
-                                                    : static_cast<vtkDataSetAttributes*>(data->GetCellData());
-    if (!averaged) holder->RemoveArray(chosen.name.c_str());
+    if (!averaged) {
+      vtkDataSetAttributes* holder = chosen.on_points ? static_cast<vtkDataSetAttributes*>(data->GetPointData())
+                                                      : static_cast<vtkDataSetAttributes*>(data->GetCellData());
+      holder->RemoveArray(chosen.name.c_str());
+    }
     if (sites) out.sites.tensors = tensors;
     if (!volume) {
       out.field = std::make_unique<PointsOnlyField<Sym3>>(bounds);

@@ -1,7 +1,7 @@
 #pragma once
 // A uniform (image-data) grid of tensors (or of scalars: a mask) with
-// trilinear interpolation. Node
-// (i, j, k) stands at origin + D (i·sx, j·sy, k·sz): D is the grid's
+// trilinear interpolation. Node (i, j, k) stands at
+// origin + D (i·sx, j·sy, k·sz): D is the grid's
 // direction matrix (VTK's Direction; the identity for an axis-aligned
 // grid), whose columns are the directions of its i, j and k axes.
 
@@ -43,6 +43,5 @@ class UniformGrid final : public Field<T> {
 };
 
 using UniformGridField = UniformGrid<Sym3>;
-using UniformGridScalars = UniformGrid<double>;
 
 }  // namespace hsb

@@ -351,7 +351,6 @@ bool wants_shape_key(const SceneSpec& spec) {
   return spec.output.shape_key.value_or(spec.surface.shape == GlyphShape::signed_superquadric);
 }
 
-
 // Source i's sRGB colour on `scale`.
 Rgb source_srgb(const PreparedScene& p, const ColorScale& scale, std::size_t i) {
   const GlyphSource& g = p.glyphs.sources[i];

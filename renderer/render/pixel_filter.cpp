@@ -14,7 +14,7 @@ double blackman_harris(double d) {
   return 0.35875 - 0.48829 * std::cos(x) + 0.14128 * std::cos(2.0 * x) - 0.01168 * std::cos(3.0 * x);
 }
 
-// The window tabulated once: every sample needs it 2 × 5 times, and
+// The window tabulated once: every sample needs it 2 × 3 times, and
 // cosines would show in the render. Linear interpolation between 4096
 // entries is within 1e-6 of the window.
 class WindowTable {
