@@ -12,6 +12,7 @@
 #include "renderer/surface/embree_bounds.h"
 #include "renderer/surface/embree_ray.h"
 #include "renderer/surface/ray_packets.h"
+#include "renderer/surface/single_source.h"
 #include "renderer/surface/spatial_rank.h"
 
 namespace hsb {
@@ -27,7 +28,31 @@ struct SpanQueryContext {
   RayLanes rays;
   FieldRay* tracers;
   std::size_t candidates;
+  // Whether a span that enters its source's own level surface ends the
+  // search beyond that point (g is the quadratic the span holds), and g there.
+  bool prune;
+  double g_level;
+  // An `any` query (shadow rays): one such entry is the answer, and the
+  // traversal ends there.
+  bool stop_at_entry;
 };
+
+// A source whose own level surface ray k enters at t bounds the first
+// crossing from above (single_source.h): F ≥ C there whatever the others
+// add, and every source non-zero at or before t has an influence box the
+// ray enters at or before t. So the query's ray is shortened to t (rounded
+// up to the next float, as the window's own end is) and Embree visits no
+// box beyond it: a ray through a pile of glyphs collects the sources in
+// front of its first hit, not all it passes behind.
+void prune_beyond_entry(const SpanQueryContext& query, const RaySpan& span, unsigned k, RTCRayN* rays, unsigned n,
+                        unsigned lane) {
+  if (!query.prune) return;
+  const double t = single_source_entry(span, query.g_level, query.rays.tmin[k], query.rays.tmax[k]);
+  if (t < 0.0) return;
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  float& tfar = RTCRayN_tfar(rays, n, lane);
+  tfar = query.stop_at_entry ? -inf : std::min(tfar, std::nextafter(float(t), inf));
+}
 
 void check_device(RTCDevice device, const char* what) {
   const RTCError error = rtcGetDeviceError(device);
@@ -91,6 +116,7 @@ BlobGeometry::BlobGeometry(RTCDevice device, const BlobField& field, const Trace
       bounds_(influence_bounds(field)),
       margin_(bounds_margin(bounds_.diagonal())),
       first_window_(2.0 * mean_influence_diagonal(field)),
+      listed_scale_(field.blend == Blend::max ? kernel_level_radius(field.kernel, field.isovalue) : 1.0),
       rank_(spatial_ranks(field, bounds_)),
       device_(device),
       packet_width_(native_packet_width(device)) {
@@ -137,7 +163,15 @@ unsigned BlobGeometry::attach_to(RTCScene scene, unsigned mask) {
 
 void BlobGeometry::span_bounds(const RTCBoundsFunctionArguments* args) {
   const auto* self = static_cast<const BlobGeometry*>(args->geometryUserPtr);
-  store_bounds(influence_bounds(self->field_, args->primID), self->margin_, args->bounds_o);
+  store_bounds(self->listed_bounds(args->primID), self->margin_, args->bounds_o);
+}
+
+Box3 BlobGeometry::listed_bounds(std::size_t i) const {
+  const Box3 influence = influence_bounds(field_, i);
+  if (listed_scale_ == 1.0) return influence;
+  const BlobSource& s = field_.sources[i];
+  const Vec3 centre(s.centre[0], s.centre[1], s.centre[2]);
+  return {centre + listed_scale_ * (influence.lo - centre), centre + listed_scale_ * (influence.hi - centre)};
 }
 
 void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
@@ -151,8 +185,10 @@ void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
     const unsigned k = checked_ray_index(embree_rays, 1, 0);
     RaySpan span;
     if (ray_span(source, args->primID, query->rank[args->primID], r.origin(int(k)), r.direction(int(k)), r.tmin[k],
-                 r.tmax[k], span))
+                 r.tmax[k], span)) {
       query->tracers[k].spans.push_back(span);
+      prune_beyond_entry(*query, span, k, embree_rays, 1, 0);
+    }
     return;
   }
   // Which of the query's rays each lane holds. A packet issued at the
@@ -181,6 +217,7 @@ void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
     for (unsigned rest = entered; rest; rest &= rest - 1) {
       const unsigned i = unsigned(__builtin_ctz(rest)), k = unsigned(first) + i;
       query->tracers[k].spans.push_back(spans.span(int(k), args->primID, query->rank[args->primID]));
+      prune_beyond_entry(*query, query->tracers[k].spans.back(), k, embree_rays, n, i);
     }
     return;
   }
@@ -193,8 +230,10 @@ void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
   for (unsigned rest = entered; rest; rest &= rest - 1) {
     const unsigned i = unsigned(__builtin_ctz(rest));
     query->tracers[index[i]].spans.push_back(spans.span(int(i), args->primID, query->rank[args->primID]));
+    prune_beyond_entry(*query, query->tracers[index[i]].spans.back(), index[i], embree_rays, n, i);
   }
-  // No hit is reported: traversal goes on and visits every crossed box.
+  // No hit is reported: traversal goes on and visits every crossed box it
+  // has not pruned.
 }
 
 std::size_t BlobGeometry::collect_spans(const RayInterval* rays, int count, FieldRay* tracers) const {
@@ -203,13 +242,17 @@ std::size_t BlobGeometry::collect_spans(const RayInterval* rays, int count, Fiel
   return query_spans(rays, tracers, (1u << count) - 1u);
 }
 
-std::size_t BlobGeometry::query_spans(const RayInterval* rays, FieldRay* tracers, unsigned lanes) const {
+std::size_t BlobGeometry::query_spans(const RayInterval* rays, FieldRay* tracers, unsigned lanes,
+                                      CrossingQuery crossing) const {
   SpanQueryContext query;
   rtcInitIntersectContext(&query.embree);
   query.field = &field_;
   query.rank = rank_.data();
   query.tracers = tracers;
   query.candidates = 0;
+  query.prune = shape_is_quadric(field_.shape);
+  query.g_level = level_g(field_.kernel, field_.isovalue);
+  query.stop_at_entry = crossing == CrossingQuery::any;
   // Ray i of the query is lane i of `rays` and has Embree id i. For a
   // packet, idle lanes repeat an asked ray so the SIMD lanes stay finite.
   const bool alone = (lanes & (lanes - 1)) == 0;
@@ -261,7 +304,7 @@ void BlobGeometry::first_crossings(const RayInterval* rays, int count, FieldRay*
     for (int i = 0; i < count; ++i)
       if (looking & (1u << i)) window[i].tmax = std::min(window[i].tmin + length[i], t_end[i]);
     stats.span_queries += unsigned(__builtin_popcount(looking));
-    stats.span_candidates += query_spans(window.data(), tracers, looking);
+    stats.span_candidates += query_spans(window.data(), tracers, looking, query);
     for (int i = 0; i < count; ++i) {
       const unsigned bit = 1u << i;
       if (!(looking & bit)) continue;
@@ -287,7 +330,7 @@ namespace {
 // source whose bounds come within the radius of the region's centre; the
 // box test settles which of them meet the region.
 struct NearbyQuery {
-  const BlobField* field;
+  const BlobGeometry* geometry;
   Box3 region;
   std::size_t limit;
   std::vector<std::uint32_t>* found;
@@ -297,7 +340,7 @@ struct NearbyQuery {
 bool nearby_candidate(RTCPointQueryFunctionArguments* args) {
   auto* q = static_cast<NearbyQuery*>(args->userPtr);
   if (q->overflow) return false;
-  if (!influence_bounds(*q->field, args->primID).overlaps(q->region)) return false;
+  if (!q->geometry->listed_bounds(args->primID).overlaps(q->region)) return false;
   if (q->found->size() == q->limit) {
     // Too many to be worth it: shrink the query to nothing so the
     // traversal ends soon.
@@ -316,7 +359,7 @@ bool BlobGeometry::gather_nearby(const Box3& region, std::size_t limit, NearbySo
   nearby.clear();
   scratch.clear();
   if (!region.lo.allFinite() || !region.hi.allFinite()) return false;  // the rays' own checks say why
-  NearbyQuery q{&field_, region, limit, &scratch};
+  NearbyQuery q{this, region, limit, &scratch};
   const Vec3 centre = region.centre();
   RTCPointQuery query;
   query.x = float(centre.x());
@@ -365,7 +408,7 @@ double BlobGeometry::first_crossing_traversed(const RayInterval& ray, FieldRay& 
                                              CrossingQuery query) const {
   return first_crossing_of(ray, tracer, stats, query, [&](const RayInterval& clipped) {
     ++stats.span_queries;
-    stats.span_candidates += query_spans(&clipped, &tracer, 1u);
+    stats.span_candidates += query_spans(&clipped, &tracer, 1u, query);
   });
 }
 

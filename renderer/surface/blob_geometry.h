@@ -62,10 +62,23 @@ class BlobGeometry {
 
   const BlobField& field() const { return field_; }
 
+  // The box source i is listed under in the span BVH: what a ray must enter
+  // for the source to matter to the surface. For a sum, its influence box.
+  // For a union only each source's own level surface K = C draws (F = max K
+  // reaches C exactly there, single_source.h), and its normal and colour
+  // are the winning source's: the box of that level surface, the influence
+  // box shrunk about the centre to the level radius (the shape's u is a
+  // gauge, so {u ≤ u_C} is {u ≤ 1} scaled by u_C). With the usual kernels
+  // and isovalues that is about a sixth of the volume, and as many fewer
+  // boxes overlap along a ray.
+  Box3 listed_bounds(std::size_t i) const;
+
   // For each of `count` rays (at most kMaxPacket), collects into
   // tracers[i].spans every source whose support ray i crosses within its
-  // interval, in one traversal of the span BVH. Returns how many influence
-  // boxes were tested, summed over the rays. Public for the tests.
+  // interval, in one traversal of the span BVH, up to where the ray enters
+  // one source's own level surface (beyond it nothing changes the first
+  // crossing, single_source.h). Returns how many boxes were tested, summed
+  // over the rays. Public for the tests.
   std::size_t collect_spans(const RayInterval* rays, int count, FieldRay* tracers) const;
 
   // For each of `count` rays (at most kMaxPacket), the first crossing of
@@ -103,8 +116,11 @@ class BlobGeometry {
   static void span_bounds(const RTCBoundsFunctionArguments* args);
   static void span_intersect(const RTCIntersectFunctionNArguments* args);
   // collect_spans for the rays whose bit is set in `lanes`: one traversal,
-  // a packet one when there are several.
-  std::size_t query_spans(const RayInterval* rays, FieldRay* tracers, unsigned lanes) const;
+  // a packet one when there are several. A ray that enters one source's
+  // own level surface collects no source beyond that point, and for an
+  // `any` query none after it.
+  std::size_t query_spans(const RayInterval* rays, FieldRay* tracers, unsigned lanes,
+                          CrossingQuery crossing = CrossingQuery::first) const;
   // What first_crossing_near() and first_crossing_traversed() share: the ray
   // clipped to the field's bounds, its spans collected there by
   // `collect_spans` (given the clipped ray), and the crossing among them.
@@ -120,6 +136,7 @@ class BlobGeometry {
   Box3 bounds_;
   double margin_;  // how far the boxes Embree sees are widened (embree_bounds.h)
   double first_window_;  // length of the first query window along a ray
+  double listed_scale_;  // listed_bounds(): the level radius for a union, else 1
   std::vector<std::uint32_t> rank_;  // each source's spatial rank (spatial_rank.h)
   RTCDevice device_;
   int packet_width_;  // the span queries' (ray_packets.h)

@@ -5,12 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <random>
 #include <set>
 
 #include "renderer/render/ambient_rays.h"
 #include "renderer/render/ray_scene.h"
 #include "renderer/surface/nearby_sources.h"
+#include "renderer/surface/single_source.h"
 #include "renderer/surface/spatial_rank.h"
 
 namespace hsb {
@@ -126,34 +128,50 @@ TEST_F(CrowdScene, ListedAndTraversedRaysAgreeToTheBit) {
   std::uniform_real_distribution<double> unit(-0.3, 0.3);
   FieldRay listed, traversed;
   TraceStats stats;
-  int hits = 0, misses = 0;
+  int hits = 0, misses = 0, pruned = 0;
   for (int r = 0; r < 400; ++r) {
     const RayInterval ray{Vec3(unit(rng), unit(rng), 0.2 + 0.1 * unit(rng)), random_direction(rng), 0.0, 0.3};
     for (const CrossingQuery query : {CrossingQuery::first, CrossingQuery::any}) {
       const double a = blobs.first_crossing_near(list, ray, listed, stats, query);
       const double b = blobs.first_crossing_traversed(ray, traversed, stats, query);
+      (a >= 0.0 ? hits : misses) += 1;
+      if (query == CrossingQuery::any) {
+        // Some point at or above C, each the first it met: the same verdict.
+        ASSERT_EQ(a >= 0.0, b >= 0.0) << "ray " << r;
+        continue;
+      }
       ASSERT_EQ(a, b) << "ray " << r;
-      // The same spans, in different orders (list rank, BVH traversal).
-      const auto sources = [](const FieldRay& tracer) {
-        std::vector<std::uint32_t> s;
-        for (const RaySpan& span : tracer.spans) s.push_back(span.source);
-        std::sort(s.begin(), s.end());
-        return s;
-      };
-      ASSERT_EQ(sources(listed), sources(traversed)) << "ray " << r;
-      if (a >= 0.0 && query == CrossingQuery::first) {
+      // The traversal stops where the ray enters a source's own level
+      // surface; the list has every source. The traversal's spans are the
+      // list's, less sources that begin beyond the crossing (in different
+      // orders: list rank, BVH traversal).
+      std::map<std::uint32_t, double> listed_starts;
+      for (const RaySpan& span : listed.spans) listed_starts[span.source] = span.t0;
+      std::set<std::uint32_t> traversed_sources;
+      for (const RaySpan& span : traversed.spans) {
+        ASSERT_TRUE(listed_starts.count(span.source)) << "ray " << r;
+        traversed_sources.insert(span.source);
+      }
+      for (const auto& [source, t0] : listed_starts)
+        if (!traversed_sources.count(source)) {
+          ASSERT_GE(a, 0.0) << "ray " << r << ": a miss collects every source";
+          ASSERT_GT(t0, a) << "ray " << r << ": source " << source;
+          ++pruned;
+        }
+      if (a >= 0.0) {
         const SurfaceSample x = listed.surface_at(field, ray.origin, ray.direction, a);
         const SurfaceSample y = traversed.surface_at(field, ray.origin, ray.direction, b);
         EXPECT_EQ(x.normal, y.normal) << "ray " << r;
         EXPECT_EQ(x.color, y.color) << "ray " << r;
         EXPECT_EQ(x.source, y.source) << "ray " << r;
       }
-      (a >= 0.0 ? hits : misses) += 1;
     }
   }
-  // Both outcomes occur, so the agreement means something.
+  // Both outcomes occur, and the traversal does leave sources out, so the
+  // agreement means something.
   EXPECT_GT(hits, 50);
   EXPECT_GT(misses, 50);
+  EXPECT_GT(pruned, 100);
 }
 
 TEST_F(CrowdScene, AmbientRaysGiveTheSameAnswersListedOrOneByOne) {
@@ -171,10 +189,77 @@ TEST_F(CrowdScene, AmbientRaysGiveTheSameAnswersListedOrOneByOne) {
   EXPECT_EQ(listed, traversed);
   EXPECT_EQ(listed_stats.span_queries, 0u);                 // no ray traversed the BVH
   EXPECT_EQ(traversed_stats.span_queries, rays.size());     // every ray did
-  EXPECT_EQ(listed_stats.spans, traversed_stats.spans);
+  // The traversal stops at the first source a blocked ray enters; the list
+  // hands every ray all its sources.
+  EXPECT_LT(traversed_stats.spans, listed_stats.spans);
   const auto blocked = std::count(listed.begin(), listed.end(), 1);
   EXPECT_GT(blocked, 0);
   EXPECT_LT(blocked, std::ptrdiff_t(rays.size()));
+}
+
+// A union draws only each source's own level surface: the span BVH lists a
+// source by that surface's box, and a ray's crossing is still the earliest
+// single-source entry over all sources, found from the few whose level box
+// it crosses. Every source whose support holds the crossing point has its
+// influence box entered before it, yet only the winner matters: normal and
+// colour are that source's.
+TEST(UnionScene, ListsEachSourceByItsLevelSurfacesBoxAndFindsTheSameCrossings) {
+  const EmbreeDevice device;
+  BlobField field = crowd(300, 4);
+  field.blend = Blend::max;
+  for (std::size_t i = 0; i < field.sources.size(); ++i)
+    field.sources[i].color = {float(i % 7) / 7.0f, 0.5f, float(i % 3) / 3.0f};
+  const RayScene scene{device, field, TraceSettings{Intersector::exact}};
+  const BlobGeometry& blobs = scene.blobs();
+  const double level = kernel_level_radius(field.kernel, field.isovalue);
+  ASSERT_LT(level, 0.9);
+  for (std::size_t i = 0; i < field.sources.size(); ++i) {
+    const Box3 influence = influence_bounds(field, i), listed = blobs.listed_bounds(i);
+    const Vec3 c(field.sources[i].centre[0], field.sources[i].centre[1], field.sources[i].centre[2]);
+    ASSERT_TRUE((listed.hi - c).isApprox(level * (influence.hi - c), 1e-12)) << i;
+    ASSERT_TRUE((c - listed.lo).isApprox(level * (c - influence.lo), 1e-12)) << i;
+  }
+  const Box3 region{Vec3(-0.1, -0.05, -0.1), Vec3(0.15, 0.1, 0.05)};
+  NearbySources list;
+  std::vector<std::uint32_t> scratch;
+  ASSERT_TRUE(blobs.gather_nearby(region, field.sources.size(), list, scratch));
+  std::set<std::uint32_t> expected;
+  std::size_t influencing = 0;
+  for (std::uint32_t i = 0; i < field.sources.size(); ++i) {
+    if (blobs.listed_bounds(i).overlaps(region)) expected.insert(i);
+    influencing += influence_bounds(field, i).overlaps(region);
+  }
+  EXPECT_EQ(std::set<std::uint32_t>(scratch.begin(), scratch.end()), expected);
+  EXPECT_GT(expected.size(), 10u);
+  EXPECT_LT(expected.size(), influencing * 3 / 4);
+
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<double> unit(-0.3, 0.3);
+  FieldRay tracer;
+  TraceStats stats;
+  const double g_level = level * level;
+  int hits = 0;
+  for (int r = 0; r < 300; ++r) {
+    const RayInterval ray{Vec3(unit(rng), unit(rng), 0.6), (Vec3(unit(rng), unit(rng), -1.0)).normalized(), 0.0,
+                          2.0};
+    // Every source on its own: the earliest entry into its level surface.
+    double earliest = -1.0;
+    std::uint32_t winner = 0;
+    for (std::uint32_t i = 0; i < field.sources.size(); ++i) {
+      RaySpan span;
+      if (!ray_span(field.sources[i], i, i, ray.origin, ray.direction, ray.tmin, ray.tmax, span)) continue;
+      const double t = single_source_entry(span, g_level, ray.tmin, ray.tmax);
+      if (t >= 0.0 && (earliest < 0.0 || t < earliest)) earliest = t, winner = i;
+    }
+    const double t = blobs.first_crossing_traversed(ray, tracer, stats);
+    ASSERT_EQ(t >= 0.0, earliest >= 0.0) << "ray " << r;
+    if (t < 0.0) continue;
+    ++hits;
+    EXPECT_NEAR(t, earliest, 1e-12) << "ray " << r;
+    const SurfaceSample s = tracer.surface_at(field, ray.origin, ray.direction, t);
+    EXPECT_EQ(s.color, field.sources[winner].color) << "ray " << r;
+  }
+  EXPECT_GT(hits, 100);
 }
 
 }  // namespace
