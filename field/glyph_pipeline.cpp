@@ -134,6 +134,8 @@ GlyphValues resolve_lengths(const GlyphPipelineSpec& spec, const Box3& domain, c
   t.max_steps = spec.trajectory.max_steps;
   t.direction = spec.trajectory.direction;
   t.max_turn = spec.trajectory.max_turn.value_or(180.0);
+  t.tensorlines = spec.trajectory.tensorlines;
+  t.puncture = spec.trajectory.puncture;
   t.signed_directions = loaded.vectors != nullptr;
   v.spacing = spec.spacing.value_or(automatic_spacing(domain, spec.size.mapping, separation));
   if (spec.placement == SourcePlacement::along_trajectories)
@@ -609,10 +611,14 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   // The eigenvalues at the body lattice's points, sampled once for the
   // choice of families and each family's own magnitudes.
   const std::vector<Vec3> body_eigenvalues = flow ? std::vector<Vec3>{} : eigenvalues_at(body.points, *tensors);
+  if (flow && spec.trajectory.tensorlines)
+    throw DataError(data.file.path + ": trajectories.method = \"tensorlines\" follows a tensor's major eigenvector, "
+                    "and this file is read as a flow (vectors), whose streamlines need no method");
+  // Tensorlines follow the major eigenvector only.
   std::vector<EigenFamily> families = {EigenFamily::major};
   if (!flow && !spec.trajectory.families.empty())
     families = spec.trajectory.families;
-  else if (!flow && even && scene.placement == SourcePlacement::along_trajectories)
+  else if (!flow && even && scene.placement == SourcePlacement::along_trajectories && !spec.trajectory.tensorlines)
     families = automatic_families(body_eigenvalues);
   scene.color = resolve_color(spec, loaded, families, scene.placement, scene.quantity);
   scene.values = resolve_lengths(spec, scene.domain, loaded, separation, families, scene.quantity);

@@ -135,6 +135,9 @@ struct TrajectorySpec {
   int max_steps = 100000;
   TraceDirection direction = TraceDirection::both;
   std::optional<double> max_turn;  // degrees per step; automatic: no limit
+  // Weinstein's tensorlines instead of the eigenvector (TrajectoryOptions).
+  bool tensorlines = false;
+  double puncture = 0.5;
   // Lines end where the region's measure falls below this (automatic: the
   // region's own threshold, its edge): seeds in the fibres' core, lines
   // followed out to their fringe, as tractography seeds and stops.

@@ -7,6 +7,7 @@
 
 #include "field/sampling/field.h"
 #include "field/tensor/eigensystem.h"
+#include "field/tensor/tensor_measures.h"
 
 namespace hsb {
 
@@ -57,7 +58,11 @@ DirectionSample eigen_direction(const TensorField& field, const Vec3& x,
     result.stop = StopReason::low_magnitude;
     return result;
   }
-  if (!eigenvector_defined(l, options.family, options.degeneracy_tolerance)) {
+  if (options.tensorlines && l(0) > 0.0) {
+    // Where e1 is undefined its weight c_l is (nearly) 0: no stop.
+    result.linearity = westin_measures(l).linear;
+    result.deflection = s->matrix() / l(0);
+  } else if (!eigenvector_defined(l, options.family, options.degeneracy_tolerance)) {
     result.stop = StopReason::degenerate;
     return result;
   }
@@ -115,6 +120,16 @@ HalfTrajectory trace_half(const DirectionSampler& sampler, const Vec3& seed,
     if (options.signed_directions) return sign * v;
     return v.dot(travel) < 0.0 ? Vec3(-v) : v;
   };
+  // The direction a sample sends the line in, arriving along v_in: the
+  // eigenvector, or the tensorline's blend of it with v_in and D̂ v_in.
+  const auto heading = [&](const DirectionSample& d, const Vec3& v_in) -> Vec3 {
+    const Vec3 e = oriented(d.direction);
+    if (!options.tensorlines || d.linearity >= 1.0) return e;
+    const Vec3 v = d.linearity * e +
+                   (1.0 - d.linearity) * ((1.0 - options.puncture) * v_in + options.puncture * (d.deflection * v_in));
+    const double length = v.norm();
+    return length > 1e-12 ? Vec3(v / length) : e;
+  };
   HalfTrajectory half;
   const double min_step = options.step * std::ldexp(1.0, -kMaxHalvings);
   const double max_turn_cos = options.max_turn >= 180.0 ? -2.0 : std::cos(options.max_turn * M_PI / 180.0);
@@ -140,7 +155,7 @@ HalfTrajectory trace_half(const DirectionSampler& sampler, const Vec3& seed,
 
     // RK4. The end point is sampled too: it is the next step's k1, and
     // sampling it here means every accepted point lies inside the domain.
-    const Vec3 k1 = oriented(at_x.direction);
+    const Vec3 k1 = heading(at_x, travel);
     DirectionSample failed;
     Vec3 ks[3];
     const double offsets[3] = {0.5 * step, 0.5 * step, step};
@@ -153,7 +168,7 @@ HalfTrajectory trace_half(const DirectionSampler& sampler, const Vec3& seed,
         ok = false;
         break;
       }
-      ks[stage] = oriented(d.direction);
+      ks[stage] = heading(d, previous);
       previous = ks[stage];
     }
     // A flow that turns back within one step has a stagnation point there

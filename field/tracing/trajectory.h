@@ -59,6 +59,18 @@ struct TrajectoryOptions {
   // that would jump from one fibre bundle to another where they cross);
   // 180: no limit.
   double max_turn = 180.0;
+  // Weinstein's tensorlines (Weinstein, Kindlmann and Lundberg 1999)
+  // instead of the bare eigenvector, for the major family: each step goes
+  //   v = c_l e1 + (1 − c_l)((1 − w) v_in + w D̂ v_in),  normalised,
+  // with c_l Westin's linear measure, v_in the incoming direction and
+  // D̂ = D/λ1. Where the tensor is linear (a fibre) that is e1; where it is
+  // planar or isotropic (a crossing, a partial volume) e1 means nothing,
+  // and the line goes on the way it came, bent by D towards the tensor's
+  // plane by the puncture weight w (0: straight on; 1: deflected by D
+  // alone). So a line crosses such a region instead of stopping at its
+  // degenerate eigenvalues or turning into the other bundle.
+  bool tensorlines = false;
+  double puncture = 0.5;
 };
 
 struct Trajectory {
@@ -81,6 +93,9 @@ struct DirectionSample {
   // How strong the field is here (the largest |λ|, or a flow's speed):
   // evenly spaced seeding draws lines closer where it is large.
   double magnitude = 0.0;
+  // For tensorlines: c_l and D/λ1 here (TrajectoryOptions::tensorlines).
+  double linearity = 1.0;
+  Mat3 deflection = Mat3::Zero();
 };
 using DirectionSampler = std::function<DirectionSample(const Vec3&)>;
 

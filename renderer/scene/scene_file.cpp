@@ -181,6 +181,11 @@ void read_trajectories(TableReader& t, TrajectorySpec& spec) {
                                           {"backward", TraceDirection::backward}});
   spec.max_turn = t.optional_number("max_turn");
   spec.stop_below = t.optional_number("stop_below");
+  spec.tensorlines = t.choice<bool>("method", {{"eigenvector", false}, {"tensorlines", true}});
+  spec.puncture = t.number("puncture");
+  if (spec.tensorlines && !spec.families.empty() &&
+      (spec.families.size() != 1 || spec.families.front() != EigenFamily::major))
+    t.fail_at("method", "= \"tensorlines\" follows the major eigenvector only; trajectories.family must be \"major\" or left out");
   t.finish();
 }
 

@@ -201,6 +201,10 @@ std::vector<KeySchema> build_keys() {
           .automatic("region.above: lines end at the region's edge; none without a region"),
       Key("trajectories.max_turn", T::number, "stop before a step that turns more than this many degrees from the last")
           .range(0.0, 180.0).automatic("180: no limit"),
+      Key("trajectories.method", T::choice, "follow the eigenvector, or Weinstein's tensorlines: the major eigenvector where the tensor is linear, straight on (bent by the tensor) where it is planar or isotropic, so lines cross fibre crossings")
+          .choices({"eigenvector", "tensorlines"}).fallback("\"eigenvector\""),
+      Key("trajectories.puncture", T::number, "tensorlines: how much the tensor bends a line where it is not linear (0: straight on, 1: by the tensor alone)")
+          .range(0.0, 1.0).fallback("0.5"),
 
       // [glyphs]
       Key("glyphs.placement", T::choice, "where sources go: along trajectories, at seeds, at the data's points, along a curve, from a list")

@@ -37,6 +37,14 @@ grep -q "render.width must be" "$work/err" || fail "unexpected message: $(cat "$
 "$hsb" render --set render.width=16 "$work/good.toml" -o "$work/out2" > "$work/log" 2>&1
 [[ $? -eq 0 && -f "$work/out2/good.png" ]] || fail "--set before the scene: $(cat "$work/log")"
 
+# Tensorlines follow tensors: a flow says so, and renders nothing.
+"$hsb" render "$src/scenes/data/generated/double_glazing.vtu" -o "$work/flow" \
+  --set 'trajectories.method="tensorlines"' 2> "$work/err"
+[[ $? -ne 0 ]] || fail "exit status 0 for tensorlines on a flow"
+grep -q 'double_glazing.vtu: trajectories.method = "tensorlines" follows a tensor.s major eigenvector, and this file is read as a flow' \
+  "$work/err" || fail "unexpected message: $(cat "$work/err")"
+[[ -z $(ls -A "$work/flow" 2>/dev/null) ]] || fail "files left behind: $(ls -A "$work/flow")"
+
 "$hsb" render "$work/missing.toml" -o "$work/out" 2> "$work/err"
 [[ $? -ne 0 ]] || fail "exit status 0 for a missing scene"
 # info and export on the project's real data.

@@ -310,6 +310,79 @@ TEST(Trajectory, StopsBeforeATurnSharperThanItsLimit) {
   EXPECT_NE(trace_trajectory(f, Vec3(0.1, 0.5, 0.5), o).forward_stop, StopReason::sharp_turn);
 }
 
+// Two fibre bundles crossing at right angles in the plane z = ½: A along
+// x (|y − ½| < 0.1), B along y (|x − ½| < 0.1). Where they cross the
+// tensor is planar (λ1 = λ2), as a voxel holding both bundles is; outside
+// both it is isotropic.
+struct CrossingFibres final : TensorField {
+  Box3 bounds() const override { return {Vec3::Zero(), Vec3::Ones()}; }
+  std::optional<Sym3> sample(const Vec3& x) const override {
+    if (!bounds().contains(x)) return std::nullopt;
+    const bool in_a = std::fabs(x.y() - 0.5) < 0.1, in_b = std::fabs(x.x() - 0.5) < 0.1;
+    if (in_a && in_b) return Sym3{3, 3, 1, 0, 0, 0};
+    if (in_a) return Sym3{3, 1, 1, 0, 0, 0};
+    if (in_b) return Sym3{1, 3, 1, 0, 0, 0};
+    return Sym3{2, 2, 2, 0, 0, 0};
+  }
+};
+
+// The eigenvector stops where the bundles cross (its eigenvalue is no
+// longer apart from the next); a tensorline goes straight through, on
+// along its own bundle to the far side, as a fibre does.
+TEST(Trajectory, TensorlinesCrossWhereTheEigenvectorStops) {
+  const CrossingFibres f;
+  TrajectoryOptions o;
+  o.step = 0.01;
+  o.direction = TraceDirection::forward;
+  Trajectory t = trace_trajectory(f, Vec3(0.1, 0.5, 0.5), o);
+  if (t.points.back().x() < 0.1) {  // forward went −x: trace the other way
+    o.direction = TraceDirection::backward;
+    t = trace_trajectory(f, Vec3(0.1, 0.5, 0.5), o);
+  }
+  EXPECT_LT(t.points.back().x(), 0.4 + 1e-9);
+  EXPECT_GT(t.points.back().x(), 0.4 - o.step);
+  for (const double puncture : {0.0, 0.5, 1.0}) {
+    o.tensorlines = true;
+    o.puncture = puncture;
+    const Trajectory line = trace_trajectory(f, Vec3(0.1, 0.5, 0.5), o);
+    EXPECT_NEAR(line.points.back().x(), 1.0, 1e-5) << "puncture " << puncture;
+    for (const Vec3& p : line.points) ASSERT_NEAR(p.y(), 0.5, 1e-12) << "puncture " << puncture;
+  }
+}
+
+// Where the tensor is linear (c_l = 1), a tensorline is the eigenvector's
+// line to the bit; where it is not, the line keeps part of its heading.
+TEST(Trajectory, TensorlinesAreEigenvectorLinesWhereTheTensorIsLinear) {
+  struct LinearCircles final : TensorField {
+    Box3 bounds() const override { return {Vec3(-2, -2, -1), Vec3(2, 2, 1)}; }
+    std::optional<Sym3> sample(const Vec3& x) const override {
+      if (!bounds().contains(x)) return std::nullopt;
+      const Vec3 t = Vec3::UnitZ().cross(Vec3(x.x(), x.y(), 0).normalized());
+      return Sym3::symmetric_part(t * t.transpose());  // λ = (1, 0, 0)
+    }
+  } linear;
+  TrajectoryOptions o = circle_options();
+  const Trajectory plain = trace_trajectory(linear, Vec3(1, 0, 0), o);
+  o.tensorlines = true;
+  const Trajectory line = trace_trajectory(linear, Vec3(1, 0, 0), o);
+  ASSERT_EQ(line.points.size(), plain.points.size());
+  for (std::size_t i = 0; i < line.points.size(); ++i) ASSERT_EQ(line.points[i], plain.points[i]) << i;
+  // The circle field's c_l is 1/6: a tensorline bends less than the circle
+  // and drifts outwards, more the less the tensor bends it.
+  const CircleField circles;
+  const Vec3 seed(1, 0, 0);
+  double last_radius = 1.0;
+  for (const double puncture : {1.0, 0.5, 0.0}) {
+    o.puncture = puncture;
+    o.max_length = 1.0;
+    o.direction = TraceDirection::forward;
+    const Trajectory bent = trace_trajectory(circles, seed, o);
+    const double radius = Vec3(bent.points.back().x(), bent.points.back().y(), 0).norm();
+    EXPECT_GT(radius, last_radius + 1e-3) << "puncture " << puncture;
+    last_radius = radius;
+  }
+}
+
 TEST(Trajectory, DegeneracyGapPerFamily) {
   // λ = (2, 2, 1): major and medium are degenerate, minor is fine.
   ConstantField f;

@@ -227,6 +227,21 @@ TEST_F(SceneFile, SignedGlyphsAndTheSignConvention) {
 // Beads: signed glyphs ask for them (the pipeline resolves it), a scene
 // may give them for any shape, never beside a spacing, and only along
 // trajectories.
+// Tensorlines: a method of [trajectories], for the major family only.
+TEST_F(SceneFile, TensorlinesFollowTheMajorEigenvector) {
+  EXPECT_FALSE(load_scene(write(minimal)).pipeline.trajectory.tensorlines);
+  const SceneSpec lines =
+      load_scene(write(std::string(minimal) + "[trajectories]\nmethod = \"tensorlines\"\npuncture = 0.2\n"));
+  EXPECT_TRUE(lines.pipeline.trajectory.tensorlines);
+  EXPECT_EQ(lines.pipeline.trajectory.puncture, 0.2);
+  const std::string minor =
+      error_of(std::string(minimal) + "[trajectories]\nfamily = \"minor\"\nmethod = \"tensorlines\"\n");
+  EXPECT_NE(minor.find(":5:10: trajectories.method = \"tensorlines\" follows the major eigenvector only"), std::string::npos)
+      << minor;
+  EXPECT_NE(error_of(std::string(minimal) + "[trajectories]\npuncture = 2\n").find("trajectories.puncture"),
+            std::string::npos);
+}
+
 TEST_F(SceneFile, BeadsAlongTrajectories) {
   const SceneSpec signed_glyphs = load_scene(write(std::string(minimal) + "[glyphs]\nshape = \"signed\"\n"));
   EXPECT_TRUE(signed_glyphs.pipeline.signed_shapes);
