@@ -346,6 +346,9 @@ int main(int argc, char** argv) {
   // A render writes images (or checks them with --skip-existing): the
   // image module loads while the first scene is read.
   hsb::preload_image_io();
+  struct FinishPreload {
+    ~FinishPreload() { hsb::finish_image_io_preload(); }
+  } finish_preload;  // however main returns
   // The batch: every scene times every swept value, this node's share,
   // each item made when its turn comes.
   hsb::Shard shard;

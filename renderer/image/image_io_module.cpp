@@ -62,6 +62,10 @@ void start_loading() {
 
 void preload_image_io() { start_loading(); }
 
+void finish_image_io_preload() {
+  if (loading.valid()) loading.wait();
+}
+
 const ImageIo& image_io() {
   start_loading();
   const Loaded& loaded = loading.get();

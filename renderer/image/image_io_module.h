@@ -34,6 +34,14 @@ const ImageIo& image_io();
 // child must not inherit the dynamic loader's lock half taken.
 void preload_image_io();
 
+// Waits for a load preload_image_io() began, if any. The process must not
+// exit while the loader runs the libraries' constructors: exit would
+// destroy their static objects (registered with exit as they were made,
+// so destroyed first) under the constructors still using them, as a scene
+// that failed at once did now and then (a double free in libproj's).
+// main() calls it on its way out.
+void finish_image_io_preload();
+
 }  // namespace hsb
 
 // What the module exports: its functions.
