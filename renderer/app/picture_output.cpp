@@ -134,6 +134,24 @@ std::map<std::string, std::string> picture_metadata(const SceneSpec& spec, const
   };
 }
 
+namespace {
+
+// An opaque picture (any background but a transparent one) goes out as RGB:
+// its alpha is 1 everywhere and says nothing, and a quarter fewer bytes
+// make a quarter less to deflate, the one step after the render that runs
+// on a single core. Returns whether `rgba` was opaque and is now RGB.
+bool drop_opaque_alpha(std::vector<float>& rgba) {
+  const std::size_t pixels = rgba.size() / 4;
+  for (std::size_t i = 0; i < pixels; ++i)
+    if (rgba[4 * i + 3] != 1.0f) return false;
+  for (std::size_t i = 0; i < pixels; ++i)
+    for (std::size_t c = 0; c < 3; ++c) rgba[3 * i + c] = rgba[4 * i + c];
+  rgba.resize(3 * pixels);
+  return true;
+}
+
+}  // namespace
+
 float legend_ink(const std::vector<float>& rgba, int width, int height, const LegendLayout& legend) {
   const std::array<double, 2> at = legend.ink_sample();
   return ink_over(rgba, width, std::clamp(int(at[0]), 0, width - 1), std::clamp(int(at[1]), 0, height - 1));
@@ -152,6 +170,7 @@ void write_display_picture(const std::string& path, std::vector<float> rgba, int
   ImageToWrite image;
   image.width = width;
   image.height = height;
+  image.channels = drop_opaque_alpha(rgba) ? 3 : 4;
   image.bit_depth = output.bit_depth;
   image.dpi = output.dpi;
   image.metadata = std::move(metadata);
