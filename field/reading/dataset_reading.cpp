@@ -287,6 +287,16 @@ std::vector<std::string> data_files_read(const std::string& path, int step) {
   const FormatReader* reader = reader_of(path);
   if (!reader) return files;
   std::string step_file;
+  if (reader->in_process) {
+    // hsb's own parser answers in this process, as it reads, without VTK
+    // (whose first session, like a child, would wait for the image
+    // module's loading: a render asks this while that runs).
+    if (reader->parts) {
+      const std::vector<std::string> parts = reader->parts(path);
+      files.insert(files.end(), parts.begin(), parts.end());
+    }
+    return files;
+  }
   {
     const VtkSession vtk;
     if (reader->parts) {

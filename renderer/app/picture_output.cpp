@@ -52,8 +52,8 @@ std::string data_file_of(const SceneSpec& spec) {
   return "";
 }
 
-}  // namespace
-
+// The SHA-1 of the data: of its file, or for data read from several (a
+// series' step, pieces, blocks) of their SHA-1s in turn.
 std::string data_sha1(const SceneSpec& spec) {
   const std::string data = data_file_of(spec);
   if (spec.pipeline.data.kind != DataKind::vtk_file) return file_sha1(data);
@@ -64,8 +64,6 @@ std::string data_sha1(const SceneSpec& spec) {
   return sha1_hex(hashes);
 }
 
-namespace {
-
 // The colour configuration the picture goes through: output.ocio_config,
 // else $OCIO, else the built-in one (the same in every build).
 std::string color_config_sha1(const SceneSpec& spec) {
@@ -75,13 +73,14 @@ std::string color_config_sha1(const SceneSpec& spec) {
   return file.empty() ? "built-in" : file_sha1(file);
 }
 
-}  // namespace
-
-// With the colour configuration's hash: the same scene through another
-// config is another picture.
+// The scene hash from the data file's, so the file is read once. With the
+// colour configuration's: the same scene through another config is
+// another picture.
 std::string scene_sha1(const SceneSpec& spec, const std::string& data_sha1) {
   return sha1_hex(scene_text(spec) + "\n" + data_sha1 + "\nocio " + color_config_sha1(spec));
 }
+
+}  // namespace
 
 std::string scene_sha1(const SceneSpec& spec) { return scene_sha1(spec, data_sha1(spec)); }
 
@@ -112,13 +111,8 @@ std::string metadata_text(const std::string& text) {
 
 std::map<std::string, std::string> picture_metadata(const SceneSpec& spec, const std::string& description,
                                                     const std::string& resolved, const ColorManagement& color) {
-  return picture_metadata(spec, description, resolved, color, data_sha1(spec));
-}
-
-std::map<std::string, std::string> picture_metadata(const SceneSpec& spec, const std::string& description,
-                                                    const std::string& resolved, const ColorManagement& color,
-                                                    const std::string& data_hash) {
   const std::string data_file = data_file_of(spec);
+  const std::string data_hash = data_sha1(spec);
   return {
       {"Software", std::string("Hyperstreamball ") + HSB_VERSION},
       {"ImageDescription",

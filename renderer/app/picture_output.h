@@ -15,25 +15,14 @@
 namespace hsb {
 
 // The hash an image stores as hsb:scene_sha1: of the scene's text, its
-// overrides and the data file's bytes; the second form given the data's
-// hash, so its files are read once.
+// overrides and the data file's bytes.
 std::string scene_sha1(const SceneSpec& spec);
-std::string scene_sha1(const SceneSpec& spec, const std::string& data_sha1);
-
-// The SHA-1 of the data (hsb:data_sha1): of its file, or for data read
-// from several (a series' step, pieces, blocks) of their SHA-1s in turn;
-// "" for the point load.
-std::string data_sha1(const SceneSpec& spec);
 
 // Every file's metadata: software, `description`, the scene text, its
 // hash, the data file and its hash, `resolved` (the scene with its
 // automatic values written out), the colour management.
 std::map<std::string, std::string> picture_metadata(const SceneSpec& spec, const std::string& description,
                                                     const std::string& resolved, const ColorManagement& color);
-// The same given data_sha1(spec).
-std::map<std::string, std::string> picture_metadata(const SceneSpec& spec, const std::string& description,
-                                                    const std::string& resolved, const ColorManagement& color,
-                                                    const std::string& data_sha1);
 
 // A one-line description of a prepared scene's picture.
 std::string picture_description(const PreparedScene& prepared);

@@ -2,7 +2,6 @@
 
 #include <chrono>
 #include <filesystem>
-#include <future>
 
 #include "renderer/app/batch.h"
 #include "renderer/app/panel_figure.h"
@@ -50,10 +49,6 @@ RenderSummary run_render_job(const RenderJob& job) {
   }
   if (!loaded.panels.empty()) return render_panel_figure(std::move(loaded), image_path, job.progress);
 
-  // The data's hash, for the picture's metadata, is read while the scene
-  // is prepared: reading the data is mostly one core's work, and the
-  // picture's output need not wait for the file to be read again.
-  std::future<std::string> data_hash = std::async(std::launch::async, [spec = loaded] { return data_sha1(spec); });
   const ColorManagement color = scene_color_management(loaded);
   const std::unique_ptr<PreparedScene> prepared = prepare_scene(std::move(loaded), color);
   prepared->output.file = file;
@@ -71,8 +66,7 @@ RenderSummary run_render_job(const RenderJob& job) {
   report(JobStage::writing, 1.0);
   const auto output_start = Clock::now();
   std::map<std::string, std::string> metadata =
-      picture_metadata(prepared->spec, picture_description(*prepared), pinned_scene_toml(*prepared), color,
-                       data_hash.get());
+      picture_metadata(prepared->spec, picture_description(*prepared), pinned_scene_toml(*prepared), color);
   if (is_scene_linear_format(image_path)) {
     write_scene_linear_picture(image_path, rendered.film, output, std::move(metadata));
   } else {
