@@ -8,17 +8,20 @@
 # background and image size as a POV-Ray scene; both programs render it on
 # both cores (POV-Ray with +WT2), without anti-aliasing, timed as whole
 # processes, each three times (the median is reported: one busy moment on a
-# shared machine moves a single run by ±20%). Prints both times, their ratio
-# and the fraction of pixels where the two images agree on surface versus
-# background, and the instruction set hsb used (HSB_ISA=avx2 forces one).
+# shared machine moves a single run by ±20%). Prints both times, their
+# ratio, both peak resident memories, the fraction of pixels where the two
+# images agree on surface versus background, and the instruction set hsb
+# used (HSB_ISA=avx2 forces one). A scene may be given several times with
+# other overrides (glyphs.spacing=0.0011 for 10⁵ sources on fig09).
 # Not part of the test suite: it measures, it does not judge.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 scripts/setup.sh > /dev/null
-if ! command -v povray > /dev/null; then
+if ! command -v povray > /dev/null || [[ ! -x /usr/bin/time ]]; then
   sudo=(); [[ $(id -u) -eq 0 ]] || sudo=(sudo)
-  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -q --no-install-recommends povray > /dev/null
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -q --no-install-recommends povray time > /dev/null
 fi
+mkdir -p build/bench/povray
 
 size=${1:-800}
 shift || true
@@ -32,39 +35,39 @@ fi
 common=(--set render.width="$size" --set render.height="$size" --set render.samples=1
         --set 'surface.kernel="quartic"' --set output.colorbar=false --set render.box=false
         --set render.shell=false --set 'render.background=[1,0,1]' --set light.shadows=true)
-now() { date +%s.%N; }
-# Median wall time of three runs of a command.
-median_seconds() {
-  local times=()
+# Median wall time and the largest peak resident memory (MB) of three
+# runs of a command.
+measure() {
+  local times=() peak=0 t m
   for _ in 1 2 3; do
-    local t0 t1
-    t0=$(now)
-    "$@" > /dev/null 2>&1
-    t1=$(now)
-    times+=("$(awk -v a="$t0" -v b="$t1" 'BEGIN { print b - a }')")
+    /usr/bin/time -f '%e %M' -o build/bench/povray/time.txt "$@" > /dev/null 2>&1
+    read -r t m < build/bench/povray/time.txt
+    times+=("$t")
+    ((m > peak)) && peak=$m
   done
-  printf '%s\n' "${times[@]}" | sort -g | sed -n 2p
+  echo "$(printf '%s\n' "${times[@]}" | sort -g | sed -n 2p) $((peak / 1024))"
 }
 
-printf '%-42s %8s %9s %9s %7s %10s\n' scene sources hsb_s povray_s ratio agreement
+printf '%-42s %8s %9s %9s %7s %7s %7s %10s\n' scene sources hsb_s povray_s ratio hsb_MB pov_MB agreement
 while (($# >= 2)); do
   scene=$1 extra=$2
   shift 2
   name=$(basename "$scene" .toml)
-  out=build/bench/povray/$name
+  label=${extra:+ ($extra)}
+  out=build/bench/povray/$name${extra:+_${extra//[^a-zA-Z0-9]/_}}
   mkdir -p "$out"
   sets=("${common[@]}")
   [[ -n $extra ]] && sets+=(--set "$extra")
   ./build/hsb export --format pov "$scene" -o "$out" "${sets[@]}" > /dev/null
 
   line=$(./build/hsb render "$scene" -o "$out" --set output.file=hsb.png "${sets[@]}")
-  hsb_s=$(median_seconds ./build/hsb render "$scene" -o "$out" --set output.file=hsb.png "${sets[@]}")
-  povray_s=$(median_seconds povray +WT2 "$out/$name.ini")
+  read -r hsb_s hsb_mb <<< "$(measure ./build/hsb render "$scene" -o "$out" --set output.file=hsb.png "${sets[@]}")"
+  read -r povray_s povray_mb <<< "$(measure povray +WT2 "$out/$name.ini")"
 
   sources=$(sed -n 's/.*sources=\([0-9]*\).*/\1/p' <<< "$line")
   agreement=$(./build/tests/bench/mask_agreement "$out/hsb.png" "$out/$name.povray.png" | awk '{print $2}')
-  awk -v n="$name" -v s="$sources" -v h="$hsb_s" -v p="$povray_s" -v g="$agreement" \
-    'BEGIN { printf "%-42s %8d %9.2f %9.2f %6.1fx %10s\n", n, s, h, p, p / h, g }'
+  awk -v n="$name$label" -v s="$sources" -v h="$hsb_s" -v p="$povray_s" -v g="$agreement" -v hm="$hsb_mb" -v pm="$povray_mb" \
+    'BEGIN { printf "%-42s %8d %9.2f %9.2f %6.1fx %7d %7d %10s\n", n, s, h, p, p / h, hm, pm, g }'
 done
 commit=$(git rev-parse --short HEAD 2> /dev/null || echo unknown)
 echo "(${size}x${size}, 1 sample per pixel, one light with shadows; median whole-process times of 3 runs on $(nproc) cores; hsb at $commit)"

@@ -18,6 +18,7 @@
 # suite: it measures, it does not judge.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source tests/bench/helix_glyph_field.sh
 scripts/setup.sh > /dev/null
 if ! command -v teem-tend > /dev/null || [[ ! -x /usr/bin/time ]]; then
   sudo=(); [[ $(id -u) -eq 0 ]] || sudo=(sudo)
@@ -51,16 +52,7 @@ for shape in ellipsoid superquadric; do
     camera=(-fr 400 -600 300 -at 0 0 0 -up 0 0 1 -fv 30 -rh)  # -rh: V down, as hsb's picture
     teem=(teem-tend glyph -i "$helix" -rt -a fa -atr 0.3 "${teem_shape[@]}" -gsc 150 "${camera[@]}"
           -is "$size" "$size" -ns 1 -nt 2 -bg 1 0 1 -o "$out/teem.nrrd")
-    hsb=(./build/hsb render "$helix" -o "$out" --set 'output.file="hsb.png"'
-         --set 'glyphs.placement="points"' --set glyphs.stride=1 --set region.above=0.3
-         --set "glyphs.shape=\"$shape\"" --set 'glyphs.mapping="linear"' --set glyphs.scale=150
-         --set glyphs.floor=0.01 --set glyphs.ceiling=inf --set 'surface.kernel="quartic"'
-         --set surface.influence_radius=1.847759065 --set 'surface.blend="max"'
-         --set 'camera.position=[400,-600,300]' --set 'camera.look_at=[0,0,0]' --set 'camera.up=[0,0,1]'
-         --set camera.fov=30 --set render.width="$size" --set render.height="$size" --set render.samples=1
-         --set light.shadows=false --set output.colorbar=false --set render.box=false --set render.shell=false
-         --set 'render.background=[1,0,1]')
-    [[ $shape == superquadric ]] && hsb+=(--set glyphs.sharpness=3)
+    helix_glyph_field "$helix" "$out" "$size" "$shape"
     line=$("${hsb[@]}")
     read -r hsb_s hsb_mb <<< "$(measure "${hsb[@]}")"
     read -r teem_s teem_mb <<< "$(measure "${teem[@]}")"
