@@ -80,6 +80,22 @@ double FieldRay::first_crossing(const BlobField& field, const Vec3& origin, cons
   // that is below C, so is F.
   const double c = field.isovalue;
   const double g_level = level_g(field.kernel, c);
+  if (quadric_) {
+    // A span query stops collecting where the ray enters a source's own
+    // level surface (blob_geometry.cpp): which sources beyond the earliest
+    // such entry it holds depends on the order the traversal met them in.
+    // None of them is non-zero before that entry, where the answer lies,
+    // so all are left out, and the answer is the same to the bit however
+    // the spans were gathered (a list, a traversal, any BVH width).
+    double first_entry = -1.0;
+    for (const RaySpan& s : spans) {
+      const double t = single_source_entry(s, g_level, tmin, tmax);
+      if (t >= 0.0 && (first_entry < 0.0 || t < first_entry)) first_entry = t;
+    }
+    if (first_entry >= 0.0)
+      spans.erase(std::remove_if(spans.begin(), spans.end(), [&](const RaySpan& s) { return s.t0 > first_entry; }),
+                  spans.end());
+  }
   double upper = -1.0, at_start = 0.0, peaks = 0.0, last_peak = tmin;
   peaks_.resize(spans.size());
   entries_.clear();

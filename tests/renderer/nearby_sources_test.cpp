@@ -141,23 +141,24 @@ TEST_F(CrowdScene, ListedAndTraversedRaysAgreeToTheBit) {
         continue;
       }
       ASSERT_EQ(a, b) << "ray " << r;
-      // The traversal stops where the ray enters a source's own level
-      // surface; the list has every source. The traversal's spans are the
-      // list's, less sources that begin beyond the crossing (in different
-      // orders: list rank, BVH traversal).
-      std::map<std::uint32_t, double> listed_starts;
-      for (const RaySpan& span : listed.spans) listed_starts[span.source] = span.t0;
-      std::set<std::uint32_t> traversed_sources;
-      for (const RaySpan& span : traversed.spans) {
-        ASSERT_TRUE(listed_starts.count(span.source)) << "ray " << r;
-        traversed_sources.insert(span.source);
-      }
-      for (const auto& [source, t0] : listed_starts)
-        if (!traversed_sources.count(source)) {
-          ASSERT_GE(a, 0.0) << "ray " << r << ": a miss collects every source";
-          ASSERT_GT(t0, a) << "ray " << r << ": source " << source;
-          ++pruned;
-        }
+      // The same spans (in different orders: list rank, BVH traversal):
+      // the traversal stops where the ray enters a source's own level
+      // surface, and the crossing keeps only the sources that begin
+      // before that entry, from either.
+      const auto sources = [](const FieldRay& tracer) {
+        std::vector<std::uint32_t> s;
+        for (const RaySpan& span : tracer.spans) s.push_back(span.source);
+        std::sort(s.begin(), s.end());
+        return s;
+      };
+      ASSERT_EQ(sources(listed), sources(traversed)) << "ray " << r;
+      // Fewer sources reach the traversal than the list holds.
+      std::vector<RaySpan> all;
+      list.collect_spans(ray.origin, ray.direction, ray.tmin, ray.tmax, all);
+      FieldRay gathered;
+      blobs.collect_spans(&ray, 1, &gathered);
+      ASSERT_LE(gathered.spans.size(), all.size()) << "ray " << r;
+      pruned += gathered.spans.size() < all.size();
       if (a >= 0.0) {
         const SurfaceSample x = listed.surface_at(field, ray.origin, ray.direction, a);
         const SurfaceSample y = traversed.surface_at(field, ray.origin, ray.direction, b);
@@ -171,7 +172,7 @@ TEST_F(CrowdScene, ListedAndTraversedRaysAgreeToTheBit) {
   // agreement means something.
   EXPECT_GT(hits, 50);
   EXPECT_GT(misses, 50);
-  EXPECT_GT(pruned, 100);
+  EXPECT_GT(pruned, 50);
 }
 
 TEST_F(CrowdScene, AmbientRaysGiveTheSameAnswersListedOrOneByOne) {
