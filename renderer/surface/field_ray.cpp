@@ -72,46 +72,43 @@ double FieldRay::first_crossing(const BlobField& field, const Vec3& origin, cons
                                 CrossingQuery query) {
   quadric_ = shape_is_quadric(field.shape);
   if (!quadric_) prepare_shape_rays(field, origin, direction);
-  // Bounds from the sources one at a time, before anything is ordered, in
-  // one pass. The earliest entry into a single source's own level surface:
-  // F ≥ C there whatever the others add. F at tmin: a ray that starts
-  // inside the surface crosses at once. The sum of each source's largest
-  // value on the ray (from g_e, an upper bound for every shape): when even
-  // that is below C, so is F.
+  // Bounds from the sources one at a time, before anything is ordered: the
+  // earliest single-source entry (first pass), then F at tmin (a ray that
+  // starts inside the surface crosses at once) and the sum of each
+  // source's largest value on the ray (from g_e, an upper bound for every
+  // shape): when even that is below C, so is F.
   const double c = field.isovalue;
   const double g_level = level_g(field.kernel, c);
-  if (quadric_) {
+  // The earliest entry into a single source's own level surface: F ≥ C
+  // there whatever the others add (single_source.h).
+  double upper = -1.0;
+  entries_.clear();
+  for (std::uint32_t i = 0; i < spans.size(); ++i) {
+    // Entering the bounding ellipsoid's level surface g_e = g_level: the
+    // ellipsoid's own entry, and for another shape the earliest its own
+    // surface (inside that one) can be entered.
+    const double t = single_source_entry(spans[i], g_level, tmin, tmax);
+    if (t < 0.0) continue;
+    if (!quadric_)
+      entries_.push_back({t, i});
+    else if (upper < 0.0 || t < upper)
+      upper = t;
+  }
+  if (upper >= 0.0) {
     // A span query stops collecting where the ray enters a source's own
     // level surface (blob_geometry.cpp): which sources beyond the earliest
     // such entry it holds depends on the order the traversal met them in.
     // None of them is non-zero before that entry, where the answer lies,
     // so all are left out, and the answer is the same to the bit however
-    // the spans were gathered (a list, a traversal, any BVH width).
-    double first_entry = -1.0;
-    for (const RaySpan& s : spans) {
-      const double t = single_source_entry(s, g_level, tmin, tmax);
-      if (t >= 0.0 && (first_entry < 0.0 || t < first_entry)) first_entry = t;
-    }
-    if (first_entry >= 0.0)
-      spans.erase(std::remove_if(spans.begin(), spans.end(), [&](const RaySpan& s) { return s.t0 > first_entry; }),
-                  spans.end());
+    // the spans were gathered (a list, a traversal, any BVH width). (The
+    // entering source itself begins before its entry, and stays.)
+    spans.erase(std::remove_if(spans.begin(), spans.end(), [&](const RaySpan& s) { return s.t0 > upper; }),
+                spans.end());
   }
-  double upper = -1.0, at_start = 0.0, peaks = 0.0, last_peak = tmin;
+  double at_start = 0.0, peaks = 0.0, last_peak = tmin;
   peaks_.resize(spans.size());
-  entries_.clear();
   for (std::uint32_t i = 0; i < spans.size(); ++i) {
     const RaySpan& s = spans[i];
-    // Entering the bounding ellipsoid's level surface g_e = g_level: the
-    // ellipsoid's own entry, and for another shape the earliest its own
-    // surface (inside that one) can be entered.
-    const double t = single_source_entry(s, g_level, tmin, tmax);
-    if (t >= 0.0) {
-      if (quadric_) {
-        if (upper < 0.0 || t < upper) upper = t;
-      } else {
-        entries_.push_back({t, i});
-      }
-    }
     // (Another shape's value at tmin is shape_trace's first probe.)
     if (quadric_ && s.t0 <= tmin) at_start = blended(field.blend, at_start, kernel_value(field.kernel, s.g(tmin)));
     peaks_[i] = kernel_value(field.kernel, s.g(peak_t(s)));
