@@ -28,9 +28,9 @@ struct SpanQueryContext {
   RayLanes rays;
   FieldRay* tracers;
   std::size_t candidates;
-  // Whether a span that enters its source's own level surface ends the
-  // search beyond that point (g is the quadratic the span holds), and g there.
-  bool prune;
+  // g at a source's own level surface K = C: a span that enters it (for a
+  // shape other than the ellipsoid, the ball inside it, single_source.h)
+  // ends the search beyond that point.
   double g_level;
   // An `any` query (shadow rays): one such entry is the answer, and the
   // traversal ends there.
@@ -46,8 +46,8 @@ struct SpanQueryContext {
 // front of its first hit, not all it passes behind.
 void prune_beyond_entry(const SpanQueryContext& query, const RaySpan& span, unsigned k, RTCRayN* rays, unsigned n,
                         unsigned lane) {
-  if (!query.prune) return;
-  const double t = single_source_entry(span, query.g_level, query.rays.tmin[k], query.rays.tmax[k]);
+  const double t = single_source_entry(span, inner_level_g(*query.field, span.source, query.g_level),
+                                       query.rays.tmin[k], query.rays.tmax[k]);
   if (t < 0.0) return;
   constexpr float inf = std::numeric_limits<float>::infinity();
   float& tfar = RTCRayN_tfar(rays, n, lane);
@@ -250,7 +250,6 @@ std::size_t BlobGeometry::query_spans(const RayInterval* rays, FieldRay* tracers
   query.rank = rank_.data();
   query.tracers = tracers;
   query.candidates = 0;
-  query.prune = shape_is_quadric(field_.shape);
   query.g_level = level_g(field_.kernel, field_.isovalue);
   query.stop_at_entry = crossing == CrossingQuery::any;
   // Ray i of the query is lane i of `rays` and has Embree id i. For a

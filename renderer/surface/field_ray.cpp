@@ -11,7 +11,6 @@
 namespace hsb {
 
 double FieldRay::value_at(const BlobField& field, double t, TraceStats& stats) const {
-  if (!quadric_) return shape_value_at(field, t, stats);
   const std::vector<std::uint32_t>& active = sweep_.active();
   ++stats.field_evaluations;
   stats.kernel_evaluations += active.size();
@@ -71,7 +70,7 @@ double FieldRay::first_crossing(const BlobField& field, const Vec3& origin, cons
                                 double tmax, const TraceSettings& settings, TraceStats& stats,
                                 CrossingQuery query) {
   quadric_ = shape_is_quadric(field.shape);
-  if (!quadric_) prepare_shape_rays(field, origin, direction);
+  stats.spans += spans.size();
   // Bounds from the sources one at a time, before anything is ordered: the
   // earliest single-source entry (first pass), then F at tmin (a ray that
   // starts inside the surface crosses at once) and the sum of each
@@ -79,31 +78,36 @@ double FieldRay::first_crossing(const BlobField& field, const Vec3& origin, cons
   // shape): when even that is below C, so is F.
   const double c = field.isovalue;
   const double g_level = level_g(field.kernel, c);
-  // The earliest entry into a single source's own level surface: F ≥ C
-  // there whatever the others add (single_source.h).
+  // The earliest entry into a single source's own level surface (for a
+  // shape other than the ellipsoid, into the ball inside it that bounds
+  // it, found without evaluating the shape): F ≥ C there whatever the
+  // others add (single_source.h).
   double upper = -1.0;
-  entries_.clear();
-  for (std::uint32_t i = 0; i < spans.size(); ++i) {
-    // Entering the bounding ellipsoid's level surface g_e = g_level: the
-    // ellipsoid's own entry, and for another shape the earliest its own
-    // surface (inside that one) can be entered.
-    const double t = single_source_entry(spans[i], g_level, tmin, tmax);
-    if (t < 0.0) continue;
-    if (!quadric_)
-      entries_.push_back({t, i});
-    else if (upper < 0.0 || t < upper)
-      upper = t;
+  for (const RaySpan& s : spans) {
+    const double t = single_source_entry(s, inner_level_g(field, s.source, g_level), tmin, tmax);
+    if (t >= 0.0 && (upper < 0.0 || t < upper)) upper = t;
   }
   if (upper >= 0.0) {
-    // A span query stops collecting where the ray enters a source's own
-    // level surface (blob_geometry.cpp): which sources beyond the earliest
-    // such entry it holds depends on the order the traversal met them in.
-    // None of them is non-zero before that entry, where the answer lies,
-    // so all are left out, and the answer is the same to the bit however
-    // the spans were gathered (a list, a traversal, any BVH width). (The
-    // entering source itself begins before its entry, and stays.)
+    // A span query stops collecting at such an entry (blob_geometry.cpp):
+    // which sources beyond the earliest one it holds depends on the order
+    // the traversal met them in. None of them is non-zero before that
+    // entry, where the answer lies, so all are left out, and the answer is
+    // the same to the bit however the spans were gathered (a list, a
+    // traversal, any BVH width). (The entering source itself begins before
+    // its entry, and stays.) An `any` query has its answer.
+    if (query == CrossingQuery::any) return upper;
     spans.erase(std::remove_if(spans.begin(), spans.end(), [&](const RaySpan& s) { return s.t0 > upper; }),
                 spans.end());
+  }
+  if (!quadric_) {
+    prepare_shape_rays(field, origin, direction);
+    // Entering the bounding ellipsoid's level surface g_e = g_level is the
+    // earliest a shape's own (inside that one) can be entered.
+    entries_.clear();
+    for (std::uint32_t i = 0; i < spans.size(); ++i) {
+      const double t = single_source_entry(spans[i], g_level, tmin, upper >= 0.0 ? upper : tmax);
+      if (t >= 0.0) entries_.push_back({t, i});
+    }
   }
   double at_start = 0.0, peaks = 0.0, last_peak = tmin;
   peaks_.resize(spans.size());
@@ -116,8 +120,12 @@ double FieldRay::first_crossing(const BlobField& field, const Vec3& origin, cons
     last_peak = std::max(last_peak, peak_t(s));
   }
   stats.kernel_evaluations += 2 * spans.size();
-  stats.spans += spans.size();
-  if (!quadric_) upper = first_shape_entry(field, g_level, tmax, stats);
+  if (!quadric_) {
+    // The exact entry into a shape's own level surface, at or before the
+    // ball's (or at the ball's, should round-off put Newton's a hair past).
+    const double exact = first_shape_entry(field, g_level, upper >= 0.0 ? upper : tmax, stats);
+    if (exact >= 0.0) upper = exact;
+  }
   // For a union the single sources are the whole answer.
   if (field.blend == Blend::max || (upper >= 0.0 && query == CrossingQuery::any)) return upper;
   if (at_start >= c) return tmin;

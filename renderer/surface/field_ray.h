@@ -102,13 +102,20 @@ class FieldRay {
   //    √g_level among entries_ (each span's outer bound), or −1.
   double first_shape_entry(const BlobField& field, double g_level, double tmax, TraceStats& stats);
   //  - F at t, over the spans whose interval holds t; keeps each one's u and
-  //    du/dt there for proven_below_until().
+  //    du/dt there for proven_below_until(), and F's slope dF/dt.
   //    A Probe::bound skips the sources whose last tangent rises from
   //    there on, adding K of that tangent's value instead: an upper bound of
-  //    F (probe_skipped_ says whether anything was skipped), and all the
-  //    proofs after it need.
+  //    F (skipped_ lists what was skipped), and all the proofs after it need.
   enum class Probe { exact, bound };
   double shape_value_at(const BlobField& field, double t, TraceStats& stats, Probe probe = Probe::exact) const;
+  //  - The last probe made exact: only the sources it skipped are
+  //    evaluated, and F has the bits an exact probe there would give.
+  double complete_probe(const BlobField& field, TraceStats& stats) const;
+  //  - The crossing inside a bracket F(lo) < C ≤ F(hi), hi the last probe,
+  //    to the precision refine() gives, by Newton's method with the probes'
+  //    slopes.
+  double refine_shape(const BlobField& field, double lo, double hi, double f_lo, double f_hi,
+                      TraceStats& stats) const;
   //  - An upper bound of span i's K over [from, to] (within its interval)
   //    from what is known of it: its last tangent, or before that the
   //    most u can fall from its edge, and its bounding ellipsoid.
@@ -145,8 +152,18 @@ class FieldRay {
   mutable std::vector<double> u_, du_dt_;
   // Where each span's u and du/dt were found (−∞ before its first).
   mutable std::vector<double> tangent_at_;
-  mutable double probed_at_ = 0.0, probed_value_ = 0.0;
-  mutable bool probe_skipped_ = false;
+  mutable double probed_at_ = 0.0, probed_value_ = 0.0, probed_slope_ = 0.0;
+  // The last probe's term of each live span (K, and dK/dt where evaluated)
+  // and which of them it skipped (indices into live_ and live_terms_).
+  struct Term {
+    double value, slope;
+  };
+  mutable std::vector<Term> live_terms_;
+  mutable std::vector<std::uint32_t> skipped_;
+  // Span i's term at t, evaluated (its u, du/dt and tangent kept).
+  Term shape_term(const BlobField& field, std::size_t i, double t) const;
+  // F and dF/dt from live_terms_, in the spans' order.
+  double sum_live_terms(const BlobField& field) const;
   // The spans whose interval holds where shape_value_at() last looked, and
   // the first that begins after it.
   mutable std::vector<std::uint32_t> live_;

@@ -61,8 +61,9 @@ std::vector<std::pair<GlyphShape, ShapeParams>> sample_shapes() {
 
 // The promises the tracer's bounds rest on, at random points of every
 // direction and scale: g_e ≤ g (the bounding ellipsoid), u ≥ max|q_k| (the
-// cube) and |∇u| ≤ Lσ in the stored frame (the rate of a source not yet
-// reached), with the analytic gradient matching finite differences (a
+// cube), u ≤ Lσ√g_e (the ball inside, whose entry proves F ≥ C:
+// inner_level_g) and |∇u| ≤ Lσ in the stored frame (the rate of a source
+// not yet reached), with the analytic gradient matching finite differences (a
 // signed glyph's crease, where two branches meet, aside).
 TEST(GlyphShapes, KeepTheBoundsTheTracerRestsOn) {
   std::mt19937 rng(11);
@@ -78,6 +79,7 @@ TEST(GlyphShapes, KeepTheBoundsTheTracerRestsOn) {
       ASSERT_LE(g_e, g * (1.0 + 1e-9)) << "α " << s.alpha << " β " << s.beta;
       const double u = std::sqrt(g);
       ASSERT_GE(u * (1.0 + 1e-9), sigma * q.cwiseAbs().maxCoeff());
+      ASSERT_LE(u, sigma * s.lipschitz * std::sqrt(g_e) * (1.0 + 1e-9)) << "α " << s.alpha << " β " << s.beta;
       // ∇u = ∇g / (2u).
       ASSERT_LE(grad.norm() / (2.0 * u), sigma * s.lipschitz * (1.0 + 1e-9));
       for (int k = 0; k < 3; ++k) {
