@@ -159,9 +159,13 @@ class FieldRay {
     double value, slope;
   };
   mutable std::vector<Term> live_terms_;
-  mutable std::vector<std::uint32_t> skipped_;
-  // Span i's term at t, evaluated (its u, du/dt and tangent kept).
-  Term shape_term(const BlobField& field, std::size_t i, double t) const;
+  mutable std::vector<std::uint32_t> skipped_, evaluated_;
+  // The live spans' terms at t listed by `terms` (indices into live_),
+  // evaluated all at once; each one's u, du/dt and tangent kept.
+  void evaluate_terms(const BlobField& field, const std::vector<std::uint32_t>& terms, double t,
+                      TraceStats& stats) const;
+  mutable std::vector<ShapeSample> samples_;  // evaluate_terms()' scratch
+  mutable std::vector<double> sample_u_, sample_rate_;
   // F and dF/dt from live_terms_, in the spans' order.
   double sum_live_terms(const BlobField& field) const;
   // The spans whose interval holds where shape_value_at() last looked, and

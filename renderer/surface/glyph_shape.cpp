@@ -1,6 +1,7 @@
 #include "renderer/surface/glyph_shape.h"
 
 #include "field/tensor/tensor_measures.h"
+#include "renderer/surface/superquadric_gauge.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -11,77 +12,50 @@ namespace hsb {
 
 namespace {
 
-// r^e for r in [0, 1], e ≥ 1, or 0 where r^e < 2⁻⁶⁴. Such a term leaves a
-// sum with a term of 1 unchanged, and its part of the gradient is below the
-// larger's last bit; yet pow would spend its time on it, twice over where
-// it underflows, and sharp glyphs raise most ratios to exponents in the
-// tens or hundreds. log₂ r is below both e₂ + 1 (e₂ its binary exponent)
-// and (r − 1)/ln 2.
-double power_below_one(double r, double e) {
-  std::uint64_t bits;
-  std::memcpy(&bits, &r, sizeof bits);
-  const int exponent = int((bits >> 52) & 0x7ff) - 1023;
-  const double log2_above = std::min(double(exponent + 1), (r - 1.0) * M_LOG2E);
-  if (e * log2_above <= -64.0) return 0.0;
-  return std::exp2(e * std::log2(r));
+// Lane 0 of `lanes`, or lane i, for the glyph `s` at q (its own frame):
+// the point by role (a, b equatorial, z the symmetry axis) and the
+// exponents.
+void fill_lane(GaugeLanes& lanes, int i, const ShapeParams& s, const Vec3& q) {
+  const int z = s.axis, a = (z + 1) % 3, b = (z + 2) % 3;
+  lanes.qa[i] = q[a], lanes.qb[i] = q[b], lanes.qz[i] = q[z];
+  lanes.p_equator[i] = 2.0 / double(s.alpha), lanes.inv_p_equator[i] = 0.5 * double(s.alpha);
+  lanes.p_whole[i] = 2.0 / double(s.beta), lanes.inv_p_whole[i] = 0.5 * double(s.beta);
 }
 
-// ‖(x, y)‖_p for p ≥ 2 (its reciprocal given too) and its partial
-// derivatives, each in [−1, 1]. The terms are divided by the larger one
-// first: |x|^p for p = 2·10⁶ would overflow or vanish, (|x|/m)^p is 1 for
-// the larger term and harmless for the other.
-struct PNorm {
-  double value = 0.0, dx = 0.0, dy = 0.0;
-};
-PNorm p_norm(double x, double y, double p, double inv_p) {
-  const double ax = std::fabs(x), ay = std::fabs(y), m = std::max(ax, ay);
-  if (m == 0.0) return {};
-  // pow takes most of a superquadric's time: the larger term's power is
-  // exactly 1, the smaller's is skipped where it would underflow, and each
-  // power comes with its derivative's, without dividing:
-  //   r^{p−1} = ∂‖·‖/∂(smaller) / (∂‖·‖/∂(larger)),
-  //   ‖·‖ = m · S^{1/p} and ∂‖·‖/∂(larger) = S^{1/p − 1}, S = 1 + r^p.
-  const double small = std::min(ax, ay), r = small / m;
-  const double slope_ratio = r > 0.0 ? power_below_one(r, p - 1.0) : 0.0;
-  const double sum = 1.0 + slope_ratio * r;  // in [1, 2]
-  const double d_large = slope_ratio > 0.0 ? std::exp2((inv_p - 1.0) * std::log2(sum)) : 1.0;
-  PNorm n;
-  n.value = m * (d_large * sum);
-  const double d_small = slope_ratio * d_large;
-  const bool x_large = ax == m;
-  n.dx = std::copysign(x_large ? d_large : d_small, x);
-  n.dy = std::copysign(x_large ? d_small : d_large, y);
+// N and ∇N from lane i, in the glyph's axis order; then the signed glyph's
+// points where it has them.
+double finish_lane(const GaugeLanes& lanes, int i, const ShapeParams& s, const Vec3& q, Vec3* gradient) {
+  if (gradient) {
+    const int z = s.axis, a = (z + 1) % 3, b = (z + 2) % 3;
+    (*gradient)[a] = lanes.da[i];
+    (*gradient)[b] = lanes.db[i];
+    (*gradient)[z] = lanes.dz[i];
+  }
+  double n = lanes.n[i];
+  for (int k = 0; k < 3; ++k) {
+    if (!(s.pointed & (1u << k))) continue;
+    const int i1 = (k + 1) % 3, j = (k + 2) % 3;
+    const double across = std::sqrt(q[i1] * q[i1] + q[j] * q[j]);  // q is O(1): no overflow to guard
+    const double cone = across / kConeBase + std::fabs(q[k]);
+    if (cone <= n) continue;
+    n = cone;
+    if (gradient) {
+      Vec3 g = Vec3::Zero();
+      if (across > 0.0) g[i1] = q[i1] / (across * kConeBase), g[j] = q[j] / (across * kConeBase);
+      g[k] = std::copysign(1.0, q[k]);
+      *gradient = g;
+    }
+  }
   return n;
 }
 
 // The superquadric gauge N at q (the glyph's own scaled frame) and ∇N, with
 // the signed glyph's points where it has them.
 double superquadric_gauge(const ShapeParams& s, const Vec3& q, Vec3* gradient) {
-  const int z = s.axis, a = (z + 1) % 3, b = (z + 2) % 3;
-  const double alpha = s.alpha, beta = s.beta;
-  const PNorm equator = p_norm(q[a], q[b], 2.0 / alpha, 0.5 * alpha);
-  const PNorm whole = p_norm(equator.value, q[z], 2.0 / beta, 0.5 * beta);
-  if (gradient) {
-    (*gradient)[a] = whole.dx * equator.dx;
-    (*gradient)[b] = whole.dx * equator.dy;
-    (*gradient)[z] = whole.dy;
-  }
-  double n = whole.value;
-  for (int k = 0; k < 3; ++k) {
-    if (!(s.pointed & (1u << k))) continue;
-    const int i = (k + 1) % 3, j = (k + 2) % 3;
-    const double across = std::sqrt(q[i] * q[i] + q[j] * q[j]);  // q is O(1): no overflow to guard
-    const double cone = across / kConeBase + std::fabs(q[k]);
-    if (cone <= n) continue;
-    n = cone;
-    if (gradient) {
-      Vec3 g = Vec3::Zero();
-      if (across > 0.0) g[i] = q[i] / (across * kConeBase), g[j] = q[j] / (across * kConeBase);
-      g[k] = std::copysign(1.0, q[k]);
-      *gradient = g;
-    }
-  }
-  return n;
+  GaugeLanes lanes;
+  fill_lane(lanes, 0, s, q);
+  superquadric_gauges(lanes, 1);
+  return finish_lane(lanes, 0, s, q, gradient);
 }
 
 // σ = max |q|/N(q) = 1/min N over the unit sphere. For fixed |(q_a, q_b)| = ρ
@@ -91,8 +65,14 @@ double superquadric_gauge(const ShapeParams& s, const Vec3& q, Vec3* gradient) {
 // sample's neighbours, and σ rounded up by 10⁻⁶ so the bound holds to
 // float precision.
 double superquadric_bound_scale(double alpha, double beta) {
-  const double p = 2.0 / alpha, r = 2.0 / beta, c = std::pow(2.0, 1.0 / p - 0.5);
-  const auto gauge = [&](double theta) { return p_norm(c * std::cos(theta), std::sin(theta), r, 0.5 * beta).value; };
+  const double p = 2.0 / alpha, c = std::pow(2.0, 1.0 / p - 0.5);
+  // ‖(c cos θ, sin θ)‖_{2/β}: the gauge of a glyph round about z at
+  // (c cos θ, 0, sin θ), whose equatorial norm is |c cos θ|.
+  ShapeParams round;
+  round.alpha = float(alpha), round.beta = float(beta), round.axis = 2;
+  const auto gauge = [&](double theta) {
+    return superquadric_gauge(round, Vec3(c * std::cos(theta), 0.0, std::sin(theta)), nullptr);
+  };
   constexpr int kSamples = 64;
   const double step = 0.5 * M_PI / kSamples;
   int best = 0;
@@ -141,17 +121,38 @@ double shape_g_gradient(GlyphShape shape, const ShapeParams& params, const Vec3&
   return n * n;
 }
 
-double shape_u_rate(GlyphShape shape, const ShapeParams& params, const Vec3& q_s, const Vec3& v_s, double& du_dt) {
+void shape_u_rates(GlyphShape shape, const ShapeSample* samples, int count, double* u, double* du_dt) {
   if (shape == GlyphShape::ellipsoid) {
-    const double u = q_s.norm();
-    du_dt = u > 0.0 ? q_s.dot(v_s) / u : -v_s.norm();
-    return u;
+    for (int i = 0; i < count; ++i) {
+      const Vec3 &q = samples[i].q_s, &v = samples[i].v_s;
+      u[i] = q.norm();
+      du_dt[i] = u[i] > 0.0 ? q.dot(v) / u[i] : -v.norm();
+    }
+    return;
   }
   // u = N(σ q_s): du/dt = σ ∇N · v_s.
-  const double sigma = params.bound_scale;
-  Vec3 dn;
-  const double u = superquadric_gauge(params, sigma * q_s, &dn);
-  du_dt = sigma * dn.dot(v_s);
+  GaugeLanes lanes;
+  for (int first = 0; first < count; first += kGaugeLanes) {
+    const int n = std::min(kGaugeLanes, count - first);
+    for (int i = 0; i < n; ++i) {
+      const ShapeSample& sample = samples[first + i];
+      fill_lane(lanes, i, *sample.params, double(sample.params->bound_scale) * sample.q_s);
+    }
+    superquadric_gauges(lanes, n);
+    for (int i = 0; i < n; ++i) {
+      const ShapeSample& sample = samples[first + i];
+      const double sigma = sample.params->bound_scale;
+      Vec3 dn;
+      u[first + i] = finish_lane(lanes, i, *sample.params, sigma * sample.q_s, &dn);
+      du_dt[first + i] = sigma * dn.dot(sample.v_s);
+    }
+  }
+}
+
+double shape_u_rate(GlyphShape shape, const ShapeParams& params, const Vec3& q_s, const Vec3& v_s, double& du_dt) {
+  const ShapeSample sample{&params, q_s, v_s};
+  double u;
+  shape_u_rates(shape, &sample, 1, &u, &du_dt);
   return u;
 }
 

@@ -95,6 +95,14 @@ double shape_g_gradient(GlyphShape shape, const ShapeParams& params, const Vec3&
 // closest approach it stays ≥ 0, and before it |du/dt| only shrinks. The
 // sphere tracer's slope bound rests on that.
 double shape_u_rate(GlyphShape shape, const ShapeParams& params, const Vec3& q_s, const Vec3& v_s, double& du_dt);
+// shape_u_rate() of many glyphs at once, each at its point of its ray
+// (the tracer's probes): the superquadric's gauges go through SIMD lanes
+// (superquadric_gauge.h), with the same bits as one at a time.
+struct ShapeSample {
+  const ShapeParams* params;
+  Vec3 q_s, v_s;
+};
+void shape_u_rates(GlyphShape shape, const ShapeSample* samples, int count, double* u, double* du_dt);
 
 // The ray's first t in [lo, hi] with u(q0 + t v) ≤ u_level, or −1: Newton's
 // method from lo on the convex u − u_level, whose every iterate stays at or

@@ -91,6 +91,7 @@ double FieldRay::shape_value_at(const BlobField& field, double t, TraceStats& st
   live_.clear();
   live_terms_.clear();
   skipped_.clear();
+  evaluated_.clear();
   std::size_t i = 0;
   for (; i < spans.size(); ++i) {
     const RaySpan& s = spans[i];
@@ -109,22 +110,37 @@ double FieldRay::shape_value_at(const BlobField& field, double t, TraceStats& st
         continue;
       }
     }
-    live_terms_.push_back(shape_term(field, i, t));
-    ++stats.kernel_evaluations;
+    evaluated_.push_back(std::uint32_t(live_terms_.size()));
+    live_terms_.push_back({0.0, 0.0});
   }
   first_unbegun_ = i;
+  evaluate_terms(field, evaluated_, t, stats);
   ++stats.field_evaluations;
   return sum_live_terms(field);
 }
 
-FieldRay::Term FieldRay::shape_term(const BlobField& field, std::size_t i, double t) const {
-  const ShapeRay& r = shape_rays_[i];
-  const double u = shape_u_rate(field.shape, shape_params(field, spans[i].source), r.q0 + t * r.v, r.v, du_dt_[i]);
-  u_[i] = u;
-  tangent_at_[i] = t;
-  // dK/dt = dK/dg · 2u du/dt.
-  const double g = u * u;
-  return {kernel_value(field.kernel, g), kernel_slope(field.kernel, g) * 2.0 * u * du_dt_[i]};
+void FieldRay::evaluate_terms(const BlobField& field, const std::vector<std::uint32_t>& terms, double t,
+                              TraceStats& stats) const {
+  // All at once: the shape's gauges run in SIMD lanes.
+  samples_.resize(terms.size());
+  sample_u_.resize(terms.size());
+  sample_rate_.resize(terms.size());
+  for (std::size_t k = 0; k < terms.size(); ++k) {
+    const std::uint32_t i = live_[terms[k]];
+    const ShapeRay& r = shape_rays_[i];
+    samples_[k] = {&shape_params(field, spans[i].source), r.q0 + t * r.v, r.v};
+  }
+  shape_u_rates(field.shape, samples_.data(), int(terms.size()), sample_u_.data(), sample_rate_.data());
+  for (std::size_t k = 0; k < terms.size(); ++k) {
+    const std::uint32_t i = live_[terms[k]];
+    const double u = sample_u_[k], g = u * u;
+    u_[i] = u;
+    du_dt_[i] = sample_rate_[k];
+    tangent_at_[i] = t;
+    // dK/dt = dK/dg · 2u du/dt.
+    live_terms_[terms[k]] = {kernel_value(field.kernel, g), kernel_slope(field.kernel, g) * 2.0 * u * du_dt_[i]};
+  }
+  stats.kernel_evaluations += terms.size();
 }
 
 double FieldRay::sum_live_terms(const BlobField& field) const {
@@ -142,10 +158,7 @@ double FieldRay::sum_live_terms(const BlobField& field) const {
 }
 
 double FieldRay::complete_probe(const BlobField& field, TraceStats& stats) const {
-  for (std::uint32_t k : skipped_) {
-    live_terms_[k] = shape_term(field, live_[k], probed_at_);
-    ++stats.kernel_evaluations;
-  }
+  evaluate_terms(field, skipped_, probed_at_, stats);
   skipped_.clear();
   return sum_live_terms(field);
 }
