@@ -14,6 +14,7 @@
 #include "renderer/surface/blob_field.h"
 #include "renderer/surface/field_bound.h"
 #include "renderer/surface/ray_span.h"
+#include "renderer/surface/span_bounds.h"
 #include "renderer/surface/support_sweep.h"
 #include "renderer/surface/trace_stats.h"
 
@@ -116,10 +117,12 @@ class FieldRay {
   //    slopes.
   double refine_shape(const BlobField& field, double lo, double hi, double f_lo, double f_hi,
                       TraceStats& stats) const;
-  //  - An upper bound of span i's K over [from, to] (within its interval)
-  //    from what is known of it: its last tangent, or before that the
-  //    most u can fall from its edge, and its bounding ellipsoid.
-  double term_bound(const BlobField& field, std::size_t i, double from, double to) const;
+  //  - An upper bound of span i's K over [from, s] (from within its
+  //    interval) from what is known of it: its last tangent, or before
+  //    that the most u can fall from its edge, and its bounding ellipsoid
+  //    (span_bounds.h); bound_row() is what it knows.
+  double term_bound(const BlobField& field, std::size_t i, double from, double s) const;
+  SpanBoundRow bound_row(std::size_t i, double from) const;
   bool has_tangent(std::size_t i) const { return tangent_at_[i] >= spans[i].t0; }
   //  - The largest s ≤ tmax up to which F < C is proven from what the
   //    last shape_value_at() found (to within a hundredth of the way, or
@@ -172,7 +175,9 @@ class FieldRay {
   // the first that begins after it.
   mutable std::vector<std::uint32_t> live_;
   mutable std::size_t first_unbegun_ = 0;
-  mutable std::vector<std::uint32_t> rising_;  // proven_below_until()'s scratch
+  // proven_below_until()'s scratch: the bound's rows and their values.
+  mutable SpanBoundRows rows_;
+  mutable std::vector<double> row_bounds_;
   // prepare_shape_rays()'s scratch for putting the spans in order.
   struct SpanKey {
     double t0;

@@ -1,5 +1,7 @@
 #include "renderer/surface/ray_span.h"
 
+#include "renderer/surface/isa_variants.h"
+
 #include <cmath>
 #include <cstddef>
 
@@ -109,9 +111,7 @@ __attribute__((always_inline)) inline unsigned source_spans_lanes(const SourceLa
   return mask & ((1u << sources.count) - 1u);
 }
 
-// One variant of both loops per instruction set, each compiled for that set
-// alone (GCC's target_clones would pick one when the program loads, with no
-// way to force another for a test or a reproduction).
+// One variant of both loops per instruction set (isa_variants.h).
 #define HSB_SPAN_KERNELS(suffix, target_isa)                                                                  \
   __attribute__((target(target_isa))) unsigned ray_spans_##suffix(                                            \
       const BlobSource& s, const RayLanes& __restrict rays, int first, int count, SpanLanes& __restrict spans) { \
@@ -123,11 +123,7 @@ __attribute__((always_inline)) inline unsigned source_spans_lanes(const SourceLa
     return source_spans_lanes(sources, o, d, tmin, tmax, spans);                                              \
   }
 
-HSB_SPAN_KERNELS(sse2, "sse2")
-HSB_SPAN_KERNELS(sse42, "sse4.2,popcnt")
-HSB_SPAN_KERNELS(avx, "avx")
-HSB_SPAN_KERNELS(avx2, "avx2,fma,bmi,bmi2")
-HSB_SPAN_KERNELS(avx512, "avx512f,avx512cd,avx512dq,avx512bw,avx512vl")
+HSB_FOR_EACH_ISA(HSB_SPAN_KERNELS)
 #undef HSB_SPAN_KERNELS
 
 // In InstructionSet order.

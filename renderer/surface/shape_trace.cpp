@@ -194,45 +194,53 @@ double FieldRay::refine_shape(const BlobField& field, double lo, double hi, doub
   return hi;
 }
 
-double FieldRay::term_bound(const BlobField& field, std::size_t i, double from, double to) const {
+SpanBoundRow FieldRay::bound_row(std::size_t i, double from) const {
   const RaySpan& span = spans[i];
-  // Convex, so above its tangent where it was last evaluated, which is
-  // lowest at the interval's end it falls towards; not yet evaluated, u ≥ 1
-  // at the support's edge t0 and changes at most Lσ√a per unit
-  // (glyph_shape.h).
-  const double u = has_tangent(i) ? u_[i] + du_dt_[i] * ((du_dt_[i] < 0.0 ? to : from) - tangent_at_[i])
-                                  : 1.0 - shape_rays_[i].rate * (to - span.t0);
-  // And u ≥ √g_e, the bounding ellipsoid's, smallest where the ray is
-  // closest to its centre.
-  const double g = std::max(std::max(u, 0.0) * std::max(u, 0.0), span.g(std::clamp(span.t_c, from, to)));
-  return kernel_value(field.kernel, g);
+  // Not yet evaluated, u ≥ 1 at the support's edge t0 and changes at most
+  // Lσ√a per unit (glyph_shape.h); convex, so above its tangent where it
+  // was last evaluated, which is lowest at the interval's end it falls
+  // towards (its end if it falls, `from` if it rises). And u ≥ √g_e, the
+  // bounding ellipsoid's, smallest where the ray is closest to its centre.
+  SpanBoundRow r{span.t1, 1.0, -shape_rays_[i].rate, span.t0, std::max(span.t_c, from), span.t_c, span.a, span.g_min};
+  if (has_tangent(i)) {
+    if (du_dt_[i] < 0.0) r.u0 = u_[i], r.rate = du_dt_[i], r.tau = tangent_at_[i];
+    else r.u0 = u_[i] + du_dt_[i] * (from - tangent_at_[i]), r.rate = 0.0, r.tau = 0.0;
+  }
+  return r;
+}
+
+double FieldRay::term_bound(const BlobField& field, std::size_t i, double from, double s) const {
+  return span_bound(bound_row(i, from), s, field.kernel);
 }
 
 double FieldRay::proven_below_until(const BlobField& field, double tmax, double min_step) const {
   const double t = probed_at_, c = field.isovalue;
-  // An upper bound of span i's value over [t, s].
-  const auto term = [&](std::size_t i, double s) {
-    return term_bound(field, i, std::max(t, spans[i].t0), std::min(s, spans[i].t1));
-  };
   // A span live at t that is past its closest approach by both its
   // tangent and its bounding ellipsoid has its largest value at t, whatever
   // s: those are summed once. (One a probe skipped before its first
-  // tangent still falls by its rate from its edge.)
+  // tangent still falls by its rate from its edge.) The others are rows
+  // of the bound, from t.
   double fixed = 0.0;
-  rising_.clear();
+  rows_.clear();
   for (std::uint32_t i : live_) {
     if (has_tangent(i) && du_dt_[i] >= 0.0 && spans[i].t_c <= t)
-      fixed = blended(field.blend, fixed, term(i, t));
-    else rising_.push_back(i);
+      fixed = blended(field.blend, fixed, term_bound(field, i, t, t));
+    else rows_.push(bound_row(i, t));
   }
+  const std::size_t rising = rows_.size();
   // An upper bound of F over [t, s]: each source's largest value there,
   // at most its peak on the ray. It never falls as s grows. The spans in
-  // their order: those live at t, then those begun by s.
+  // their order: those live at t, then those begun by s, each a row from
+  // where it begins, added as the tries first reach it.
+  std::size_t next = first_unbegun_;
   const auto bound = [&](double s) {
+    for (; next < spans.size() && spans[next].t0 <= s; ++next) rows_.push(bound_row(next, spans[next].t0));
+    std::size_t count = rows_.size();
+    while (count > rising && spans[first_unbegun_ + (count - rising) - 1].t0 > s) --count;
+    row_bounds_.resize(count);
+    span_bounds(rows_, count, s, field.kernel, row_bounds_.data());
     double b = fixed;
-    for (std::uint32_t i : rising_) b = blended(field.blend, b, term(i, s));
-    for (std::size_t i = first_unbegun_; i < spans.size() && spans[i].t0 <= s; ++i)
-      b = blended(field.blend, b, term(i, s));
+    for (std::size_t k = 0; k < count; ++k) b = blended(field.blend, b, row_bounds_[k]);
     return b;
   };
   // Out by doubling steps, from the last proof's length, to the first s
@@ -244,7 +252,7 @@ double FieldRay::proven_below_until(const BlobField& field, double tmax, double 
   // live source still rising, the bound stays `fixed` until the next
   // source begins: the steps start there.
   double lo = t, hi = tmax, e_lo = probed_value_ - c, e_hi = 0.0;
-  if (rising_.empty() && fixed < c) {
+  if (rising == 0 && fixed < c) {
     if (first_unbegun_ == spans.size()) return tmax;
     lo = std::min(spans[first_unbegun_].t0, tmax);
     e_lo = fixed - c;

@@ -1,5 +1,7 @@
 #include "renderer/surface/superquadric_gauge.h"
 
+#include "renderer/surface/isa_variants.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -100,17 +102,13 @@ inline double double_of(std::uint64_t b) {
 }
 
 // Every lane, a fixed count: the loop becomes whole vectors. One variant
-// per instruction set, each compiled for that set alone.
+// per instruction set (isa_variants.h).
 #define HSB_GAUGE_KERNEL(suffix, target_isa)                                               \
   __attribute__((target(target_isa))) void gauges_##suffix(GaugeLanes& __restrict lanes) { \
     for (int i = 0; i < kGaugeLanes; ++i) gauge_lane(lanes, i);                             \
   }
 
-HSB_GAUGE_KERNEL(sse2, "sse2")
-HSB_GAUGE_KERNEL(sse42, "sse4.2,popcnt")
-HSB_GAUGE_KERNEL(avx, "avx")
-HSB_GAUGE_KERNEL(avx2, "avx2,fma,bmi,bmi2")
-HSB_GAUGE_KERNEL(avx512, "avx512f,avx512cd,avx512dq,avx512bw,avx512vl")
+HSB_FOR_EACH_ISA(HSB_GAUGE_KERNEL)
 #undef HSB_GAUGE_KERNEL
 
 // In InstructionSet order.

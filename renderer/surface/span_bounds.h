@@ -1,0 +1,49 @@
+#pragma once
+// Upper bounds of many spans' kernel values at once: the glyph-shape
+// tracer's proofs (shape_trace.cpp) sum one per span for every length they
+// try, tens of spans a try on a ray through a crowd. Each row holds what
+// the tracer knows of one span over [from, s]:
+//  - u ≥ u0 + rate (to − tau), to = min(s, t1): its last tangent, or the
+//    most u can fall from its edge (rate 0 where it only rises from from);
+//  - g ≥ g_e ≥ a (min(t_near, to) − t_c)² + g_min, t_near = max(t_c, from):
+//    the bounding ellipsoid where the ray is closest to its centre;
+// so K(max(max(u, 0)², that)) bounds its value over [from, s]. One span
+// alone (FieldRay::term_bound) and many in SIMD lanes of the active
+// instruction set (span_bounds) get the same bits.
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+#include "renderer/surface/kernel.h"
+
+namespace hsb {
+
+struct SpanBoundRow {
+  double t1, u0, rate, tau, t_near, t_c, a, g_min;
+};
+
+// The lower bound of g over [from, s], and the upper bound of K it gives.
+inline double span_bound_g(const SpanBoundRow& r, double s) {
+  const double to = std::min(s, r.t1);
+  const double u = std::max(r.u0 + r.rate * (to - r.tau), 0.0);
+  const double near = std::min(r.t_near, to) - r.t_c;
+  return std::max(u * u, r.a * near * near + r.g_min);
+}
+inline double span_bound(const SpanBoundRow& r, double s, KernelKind kernel) {
+  return kernel_value(kernel, span_bound_g(r, s));
+}
+
+// Rows side by side, a column each, for the SIMD loop.
+struct SpanBoundRows {
+  std::vector<double> t1, u0, rate, tau, t_near, t_c, a, g_min;
+  void clear();
+  std::size_t size() const { return t1.size(); }
+  void push(const SpanBoundRow& r);
+  SpanBoundRow row(std::size_t k) const { return {t1[k], u0[k], rate[k], tau[k], t_near[k], t_c[k], a[k], g_min[k]}; }
+};
+
+// out[k] for rows [0, count): the bound of row k's K over [from, s].
+void span_bounds(const SpanBoundRows& rows, std::size_t count, double s, KernelKind kernel, double* out);
+
+}  // namespace hsb

@@ -1,0 +1,44 @@
+// The shape tracer's bounds of many spans at once (renderer/surface/span_bounds.h):
+// the SIMD rows give each span alone's bits, for every kernel, under the
+// instruction set in force (run again under each by the isa.* tests), and
+// a bound never falls as the interval grows.
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <random>
+
+#include "renderer/surface/instruction_set.h"
+#include "renderer/surface/span_bounds.h"
+
+namespace hsb {
+namespace {
+
+TEST(SpanBounds, RowsInLanesGiveEachSpanAlonesBits) {
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  SpanBoundRows rows;
+  for (int k = 0; k < 203; ++k) {  // not a multiple of any vector width
+    // Bounds from `from` ≤ 0.5, the smallest s asked.
+    const double t_c = 4.0 * unit(rng), from = 0.5 * unit(rng);
+    rows.push({from + 4.0 * unit(rng), 1.5 * unit(rng), unit(rng) < 0.2 ? 0.0 : -3.0 * unit(rng), 4.0 * unit(rng),
+               std::max(t_c, from), t_c, 5.0 * unit(rng), 1.2 * unit(rng)});
+  }
+  std::vector<double> out(rows.size());
+  int nonzero = 0;
+  for (const KernelKind kernel : {KernelKind::wyvill, KernelKind::quartic, KernelKind::blinn})
+    for (const double s : {0.5, 2.0, 3.7, 9.0}) {
+      span_bounds(rows, rows.size(), s, kernel, out.data());
+      for (std::size_t k = 0; k < rows.size(); ++k) {
+        const double alone = span_bound(rows.row(k), s, kernel);
+        ASSERT_EQ(std::memcmp(&alone, &out[k], sizeof alone), 0)
+            << isa_name(active_isa()) << " row " << k << " s " << s << ": " << out[k] << " against " << alone;
+        ASSERT_GE(span_bound(rows.row(k), s + 1.0, kernel), alone);
+        nonzero += alone > 0.0;
+      }
+    }
+  EXPECT_GT(nonzero, 300);
+}
+
+}  // namespace
+}  // namespace hsb
