@@ -227,18 +227,25 @@ SurfaceSample FieldRay::surface_at(const BlobField& field, const Vec3& origin,
     if (spans[i].g(t) < 1.0 + 1e-9) contributing_.push_back(i);  // the rest are zero at x
   std::sort(contributing_.begin(), contributing_.end(),
             [&](std::uint32_t a, std::uint32_t b) { return spans[a].rank < spans[b].rank; });
-  for (const std::uint32_t i : contributing_) {
-    const RaySpan& span = spans[i];
+  // q = W_s(x − c) for each; the shape gives g and ∇_q g (all at once: a
+  // superquadric's gauges run in SIMD lanes), and ∇g = W_sᵀ ∇_q g.
+  samples_.resize(contributing_.size());
+  sample_g_.resize(contributing_.size());
+  sample_gradients_.resize(contributing_.size());
+  for (std::size_t k = 0; k < contributing_.size(); ++k) {
+    const RaySpan& span = spans[contributing_[k]];
     const BlobSource& s = field.sources[span.source];
-    // q = W_s(x − c); the shape gives g and ∇_q g, and ∇g = W_sᵀ ∇_q g.
-    const Mat3 w = shape_matrix(s);
-    const Vec3 q = scaled_offset(s, w, x);
-    Vec3 grad_q;
-    const double g = shape_g_gradient(field.shape, shape_params(field, span.source), q, grad_q);
+    samples_[k] = {&shape_params(field, span.source), scaled_offset(s, shape_matrix(s), x), Vec3::Zero()};
+  }
+  shape_g_gradients(field.shape, samples_.data(), int(samples_.size()), sample_g_.data(), sample_gradients_.data());
+  for (std::size_t c = 0; c < contributing_.size(); ++c) {
+    const RaySpan& span = spans[contributing_[c]];
+    const BlobSource& s = field.sources[span.source];
+    const double g = sample_g_[c];
     const double k = kernel_value(field.kernel, g);
     if (k <= 0.0) continue;
     ++sample.crowd;
-    const Vec3 grad_g = w.transpose() * grad_q;
+    const Vec3 grad_g = shape_matrix(s).transpose() * sample_gradients_[c];
     const Vec3 source_color(s.color[0], s.color[1], s.color[2]);
     const bool strongest = k > best;
     if (strongest) {

@@ -167,8 +167,10 @@ class FieldRay {
   // evaluated all at once; each one's u, du/dt and tangent kept.
   void evaluate_terms(const BlobField& field, const std::vector<std::uint32_t>& terms, double t,
                       TraceStats& stats) const;
-  mutable std::vector<ShapeSample> samples_;  // evaluate_terms()' scratch
-  mutable std::vector<double> sample_u_, sample_rate_;
+  // evaluate_terms()' and surface_at()'s scratch.
+  mutable std::vector<ShapeSample> samples_;
+  mutable std::vector<double> sample_u_, sample_rate_, sample_g_;
+  mutable std::vector<Vec3> sample_gradients_;
   // F and dF/dt from live_terms_, in the spans' order.
   double sum_live_terms(const BlobField& field) const;
   // The spans whose interval holds where shape_value_at() last looked, and

@@ -18,8 +18,7 @@ namespace {
 void fill_lane(GaugeLanes& lanes, int i, const ShapeParams& s, const Vec3& q) {
   const int z = s.axis, a = (z + 1) % 3, b = (z + 2) % 3;
   lanes.qa[i] = q[a], lanes.qb[i] = q[b], lanes.qz[i] = q[z];
-  lanes.p_equator[i] = 2.0 / double(s.alpha), lanes.inv_p_equator[i] = 0.5 * double(s.alpha);
-  lanes.p_whole[i] = 2.0 / double(s.beta), lanes.inv_p_whole[i] = 0.5 * double(s.beta);
+  lanes.alpha[i] = s.alpha, lanes.beta[i] = s.beta;
 }
 
 // N and ∇N from lane i, in the glyph's axis order; then the signed glyph's
@@ -108,17 +107,47 @@ double shape_g(GlyphShape shape, const ShapeParams& params, const Vec3& q_s) {
   return n * n;
 }
 
-double shape_g_gradient(GlyphShape shape, const ShapeParams& params, const Vec3& q_s, Vec3& gradient) {
+// The gauges of `count` samples, kGaugeLanes at a time: use(i, N, ∇N) for
+// sample i, with N and ∇N at σ q_s (the glyph's own frame).
+template <class Use>
+void gauge_batches(const ShapeSample* samples, int count, Use&& use) {
+  GaugeLanes lanes;
+  for (int first = 0; first < count; first += kGaugeLanes) {
+    const int n = std::min(kGaugeLanes, count - first);
+    for (int i = 0; i < n; ++i) {
+      const ShapeSample& sample = samples[first + i];
+      fill_lane(lanes, i, *sample.params, double(sample.params->bound_scale) * sample.q_s);
+    }
+    superquadric_gauges(lanes, n);
+    for (int i = 0; i < n; ++i) {
+      const ShapeSample& sample = samples[first + i];
+      Vec3 dn;
+      const double gauge = finish_lane(lanes, i, *sample.params, double(sample.params->bound_scale) * sample.q_s, &dn);
+      use(first + i, gauge, dn);
+    }
+  }
+}
+
+void shape_g_gradients(GlyphShape shape, const ShapeSample* samples, int count, double* g, Vec3* gradient) {
   if (shape == GlyphShape::ellipsoid) {
-    gradient = 2.0 * q_s;
-    return q_s.squaredNorm();
+    for (int i = 0; i < count; ++i) {
+      gradient[i] = 2.0 * samples[i].q_s;
+      g[i] = samples[i].q_s.squaredNorm();
+    }
+    return;
   }
   // g = N(σ q_s)², so ∇g = 2 N ∇N · σ.
-  const double sigma = params.bound_scale;
-  Vec3 dn;
-  const double n = superquadric_gauge(params, sigma * q_s, &dn);
-  gradient = (2.0 * sigma * n) * dn;
-  return n * n;
+  gauge_batches(samples, count, [&](int i, double n, const Vec3& dn) {
+    gradient[i] = (2.0 * double(samples[i].params->bound_scale) * n) * dn;
+    g[i] = n * n;
+  });
+}
+
+double shape_g_gradient(GlyphShape shape, const ShapeParams& params, const Vec3& q_s, Vec3& gradient) {
+  const ShapeSample sample{&params, q_s, Vec3::Zero()};
+  double g;
+  shape_g_gradients(shape, &sample, 1, &g, &gradient);
+  return g;
 }
 
 void shape_u_rates(GlyphShape shape, const ShapeSample* samples, int count, double* u, double* du_dt) {
@@ -131,22 +160,10 @@ void shape_u_rates(GlyphShape shape, const ShapeSample* samples, int count, doub
     return;
   }
   // u = N(σ q_s): du/dt = σ ∇N · v_s.
-  GaugeLanes lanes;
-  for (int first = 0; first < count; first += kGaugeLanes) {
-    const int n = std::min(kGaugeLanes, count - first);
-    for (int i = 0; i < n; ++i) {
-      const ShapeSample& sample = samples[first + i];
-      fill_lane(lanes, i, *sample.params, double(sample.params->bound_scale) * sample.q_s);
-    }
-    superquadric_gauges(lanes, n);
-    for (int i = 0; i < n; ++i) {
-      const ShapeSample& sample = samples[first + i];
-      const double sigma = sample.params->bound_scale;
-      Vec3 dn;
-      u[first + i] = finish_lane(lanes, i, *sample.params, sigma * sample.q_s, &dn);
-      du_dt[first + i] = sigma * dn.dot(sample.v_s);
-    }
-  }
+  gauge_batches(samples, count, [&](int i, double n, const Vec3& dn) {
+    u[i] = n;
+    du_dt[i] = double(samples[i].params->bound_scale) * dn.dot(samples[i].v_s);
+  });
 }
 
 double shape_u_rate(GlyphShape shape, const ShapeParams& params, const Vec3& q_s, const Vec3& v_s, double& du_dt) {

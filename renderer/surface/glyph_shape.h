@@ -103,6 +103,8 @@ struct ShapeSample {
   Vec3 q_s, v_s;
 };
 void shape_u_rates(GlyphShape shape, const ShapeSample* samples, int count, double* u, double* du_dt);
+// shape_g_gradient() of many glyphs at once (the shading), v_s unused.
+void shape_g_gradients(GlyphShape shape, const ShapeSample* samples, int count, double* g, Vec3* gradient);
 
 // The ray's first t in [lo, hi] with u(q0 + t v) ≤ u_level, or −1: Newton's
 // method from lo on the convex u − u_level, whose every iterate stays at or

@@ -93,8 +93,8 @@ inline double double_of(std::uint64_t b) {
 
 [[gnu::always_inline]] inline void gauge_lane(GaugeLanes& l, int i) {
   double e, de_da, de_db, n, dn_de, dn_dz;
-  p_norm_core(l.qa[i], l.qb[i], l.p_equator[i], l.inv_p_equator[i], e, de_da, de_db);
-  p_norm_core(e, l.qz[i], l.p_whole[i], l.inv_p_whole[i], n, dn_de, dn_dz);
+  p_norm_core(l.qa[i], l.qb[i], 2.0 / l.alpha[i], 0.5 * l.alpha[i], e, de_da, de_db);
+  p_norm_core(e, l.qz[i], 2.0 / l.beta[i], 0.5 * l.beta[i], n, dn_de, dn_dz);
   l.n[i] = n;
   l.da[i] = dn_de * de_da;
   l.db[i] = dn_de * de_db;
@@ -126,8 +126,7 @@ void superquadric_gauges(GaugeLanes& lanes, int count, InstructionSet isa) {
   // The idle lanes repeat the first glyph: finite, and discarded.
   for (int i = count; i < kGaugeLanes; ++i) {
     lanes.qa[i] = lanes.qa[0], lanes.qb[i] = lanes.qb[0], lanes.qz[i] = lanes.qz[0];
-    lanes.p_equator[i] = lanes.p_equator[0], lanes.inv_p_equator[i] = lanes.inv_p_equator[0];
-    lanes.p_whole[i] = lanes.p_whole[0], lanes.inv_p_whole[i] = lanes.inv_p_whole[0];
+    lanes.alpha[i] = lanes.alpha[0], lanes.beta[i] = lanes.beta[0];
   }
   kGauges[std::size_t(isa)](lanes);
 }

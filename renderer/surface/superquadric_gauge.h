@@ -18,13 +18,13 @@
 namespace hsb {
 
 // Up to kGaugeLanes glyphs, one per lane. In: the point in each glyph's own
-// frame by role (a, b the equatorial axes, z the symmetry axis) and its
-// exponents p = 2/α, 2/β and their reciprocals. Out: N and ∂N/∂q_a, ∂q_b,
-// ∂q_z.
+// frame by role (a, b the equatorial axes, z the symmetry axis) and
+// Kindlmann's α and β (the norms' exponents are 2/α and 2/β). Out: N and
+// ∂N/∂q_a, ∂q_b, ∂q_z.
 constexpr int kGaugeLanes = 8;
 struct alignas(64) GaugeLanes {
   double qa[kGaugeLanes], qb[kGaugeLanes], qz[kGaugeLanes];
-  double p_equator[kGaugeLanes], inv_p_equator[kGaugeLanes], p_whole[kGaugeLanes], inv_p_whole[kGaugeLanes];
+  double alpha[kGaugeLanes], beta[kGaugeLanes];
   double n[kGaugeLanes], da[kGaugeLanes], db[kGaugeLanes], dz[kGaugeLanes];
 };
 

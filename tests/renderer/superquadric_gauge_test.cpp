@@ -63,8 +63,7 @@ Glyph random_glyph(std::mt19937& rng) {
 
 void set_lane(GaugeLanes& lanes, int i, const Glyph& g) {
   lanes.qa[i] = g.qa, lanes.qb[i] = g.qb, lanes.qz[i] = g.qz;
-  lanes.p_equator[i] = 2.0 / g.alpha, lanes.inv_p_equator[i] = 0.5 * g.alpha;
-  lanes.p_whole[i] = 2.0 / g.beta, lanes.inv_p_whole[i] = 0.5 * g.beta;
+  lanes.alpha[i] = g.alpha, lanes.beta[i] = g.beta;
 }
 
 TEST(SuperquadricGauge, IsKindlmannsSuperquadricNorm) {
