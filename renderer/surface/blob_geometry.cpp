@@ -46,6 +46,9 @@ struct SpanQueryContext {
 // front of its first hit, not all it passes behind.
 void prune_beyond_entry(const SpanQueryContext& query, const RaySpan& span, unsigned k, RTCRayN* rays, unsigned n,
                         unsigned lane) {
+  // Most spans pass wide of their source's level surface, and so of the
+  // ball inside it: those are settled before the shape is looked up.
+  if (span.g_min >= query.g_level) return;
   const double t = single_source_entry(span, inner_level_g(*query.field, span.source, query.g_level),
                                        query.rays.tmin[k], query.rays.tmax[k]);
   if (t < 0.0) return;

@@ -99,16 +99,6 @@ double FieldRay::first_crossing(const BlobField& field, const Vec3& origin, cons
     spans.erase(std::remove_if(spans.begin(), spans.end(), [&](const RaySpan& s) { return s.t0 > upper; }),
                 spans.end());
   }
-  if (!quadric_) {
-    prepare_shape_rays(field, origin, direction);
-    // Entering the bounding ellipsoid's level surface g_e = g_level is the
-    // earliest a shape's own (inside that one) can be entered.
-    entries_.clear();
-    for (std::uint32_t i = 0; i < spans.size(); ++i) {
-      const double t = single_source_entry(spans[i], g_level, tmin, upper >= 0.0 ? upper : tmax);
-      if (t >= 0.0) entries_.push_back({t, i});
-    }
-  }
   double at_start = 0.0, peaks = 0.0, last_peak = tmin;
   peaks_.resize(spans.size());
   for (std::uint32_t i = 0; i < spans.size(); ++i) {
@@ -121,6 +111,17 @@ double FieldRay::first_crossing(const BlobField& field, const Vec3& origin, cons
   }
   stats.kernel_evaluations += 2 * spans.size();
   if (!quadric_) {
+    // Blended sources whose peaks (from g_e, upper bounds) sum below C
+    // leave F below it: nothing of the shapes is needed.
+    if (field.blend == Blend::sum && upper < 0.0 && peaks < c) return -1.0;
+    prepare_shape_rays(field, origin, direction);
+    // Entering the bounding ellipsoid's level surface g_e = g_level is the
+    // earliest a shape's own (inside that one) can be entered.
+    entries_.clear();
+    for (std::uint32_t i = 0; i < spans.size(); ++i) {
+      const double t = single_source_entry(spans[i], g_level, tmin, upper >= 0.0 ? upper : tmax);
+      if (t >= 0.0) entries_.push_back({t, i});
+    }
     // The exact entry into a shape's own level surface, at or before the
     // ball's (or at the ball's, should round-off put Newton's a hair past).
     const double exact = first_shape_entry(field, g_level, upper >= 0.0 ? upper : tmax, stats);

@@ -197,9 +197,11 @@ bool clip_to_shape_box(const ShapeParams& params, const Vec3& q0, const Vec3& v,
       if (std::fabs(q0[k]) > half) return false;
       continue;
     }
-    const double a = (-half - q0[k]) / v[k], b = (half - q0[k]) / v[k];
-    t0 = std::max(t0, std::min(a, b));
-    t1 = std::min(t1, std::max(a, b));
+    // The slab |q_k| ≤ half: centred where q_k = 0, half / |v_k| wide on
+    // either side (one division an axis, not two).
+    const double inverse = 1.0 / v[k], centre = -q0[k] * inverse, reach = half * std::fabs(inverse);
+    t0 = std::max(t0, centre - reach);
+    t1 = std::min(t1, centre + reach);
   }
   return t0 <= t1;
 }
