@@ -5,13 +5,14 @@
 
 namespace hsb {
 
-void SpanBoundRows::clear() {
-  for (std::vector<double>* column : {&t1, &u0, &rate, &tau, &t_near, &t_c, &a, &g_min}) column->clear();
-}
-
 void SpanBoundRows::push(const SpanBoundRow& r) {
-  t1.push_back(r.t1), u0.push_back(r.u0), rate.push_back(r.rate), tau.push_back(r.tau);
-  t_near.push_back(r.t_near), t_c.push_back(r.t_c), a.push_back(r.a), g_min.push_back(r.g_min);
+  if (rows_ == t1.size()) {
+    const std::size_t capacity = std::max<std::size_t>(64, 2 * rows_);
+    for (std::vector<double>* column : {&t1, &u0, &rate, &tau, &t_near, &t_c, &a, &g_min}) column->resize(capacity);
+  }
+  const std::size_t k = rows_++;
+  t1[k] = r.t1, u0[k] = r.u0, rate[k] = r.rate, tau[k] = r.tau;
+  t_near[k] = r.t_near, t_c[k] = r.t_c, a[k] = r.a, g_min[k] = r.g_min;
 }
 
 namespace {

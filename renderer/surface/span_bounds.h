@@ -34,13 +34,18 @@ inline double span_bound(const SpanBoundRow& r, double s, KernelKind kernel) {
   return kernel_value(kernel, span_bound_g(r, s));
 }
 
-// Rows side by side, a column each, for the SIMD loop.
+// Rows side by side, a column each, for the SIMD loop. The columns only
+// grow: clear() keeps them for the next proof, and a row is written in
+// place.
 struct SpanBoundRows {
   std::vector<double> t1, u0, rate, tau, t_near, t_c, a, g_min;
-  void clear();
-  std::size_t size() const { return t1.size(); }
+  void clear() { rows_ = 0; }
+  std::size_t size() const { return rows_; }
   void push(const SpanBoundRow& r);
   SpanBoundRow row(std::size_t k) const { return {t1[k], u0[k], rate[k], tau[k], t_near[k], t_c[k], a[k], g_min[k]}; }
+
+ private:
+  std::size_t rows_ = 0;
 };
 
 // out[k] for rows [0, count): the bound of row k's K over [from, s].
