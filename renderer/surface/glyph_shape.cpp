@@ -5,16 +5,14 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <cstring>
 #include <cmath>
 
 namespace hsb {
 
 namespace {
 
-// Lane 0 of `lanes`, or lane i, for the glyph `s` at q (its own frame):
-// the point by role (a, b equatorial, z the symmetry axis) and the
-// exponents.
+// Lane i of `lanes` for the glyph `s` at q (its own frame): the point by
+// role (a, b equatorial, z the symmetry axis) and Kindlmann's α and β.
 void fill_lane(GaugeLanes& lanes, int i, const ShapeParams& s, const Vec3& q) {
   const int z = s.axis, a = (z + 1) % 3, b = (z + 2) % 3;
   lanes.qa[i] = q[a], lanes.qb[i] = q[b], lanes.qz[i] = q[z];
@@ -112,17 +110,18 @@ double shape_g(GlyphShape shape, const ShapeParams& params, const Vec3& q_s) {
 template <class Use>
 void gauge_batches(const ShapeSample* samples, int count, Use&& use) {
   GaugeLanes lanes;
+  Vec3 q[kGaugeLanes];
   for (int first = 0; first < count; first += kGaugeLanes) {
     const int n = std::min(kGaugeLanes, count - first);
     for (int i = 0; i < n; ++i) {
       const ShapeSample& sample = samples[first + i];
-      fill_lane(lanes, i, *sample.params, double(sample.params->bound_scale) * sample.q_s);
+      q[i] = double(sample.params->bound_scale) * sample.q_s;
+      fill_lane(lanes, i, *sample.params, q[i]);
     }
     superquadric_gauges(lanes, n);
     for (int i = 0; i < n; ++i) {
-      const ShapeSample& sample = samples[first + i];
       Vec3 dn;
-      const double gauge = finish_lane(lanes, i, *sample.params, double(sample.params->bound_scale) * sample.q_s, &dn);
+      const double gauge = finish_lane(lanes, i, *samples[first + i].params, q[i], &dn);
       use(first + i, gauge, dn);
     }
   }

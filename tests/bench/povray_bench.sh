@@ -16,6 +16,7 @@
 # Not part of the test suite: it measures, it does not judge.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source tests/bench/measure.sh
 scripts/setup.sh > /dev/null
 if ! command -v povray > /dev/null || [[ ! -x /usr/bin/time ]]; then
   sudo=(); [[ $(id -u) -eq 0 ]] || sudo=(sudo)
@@ -35,18 +36,6 @@ fi
 common=(--set render.width="$size" --set render.height="$size" --set render.samples=1
         --set 'surface.kernel="quartic"' --set output.colorbar=false --set render.box=false
         --set render.shell=false --set 'render.background=[1,0,1]' --set light.shadows=true)
-# Median wall time and the largest peak resident memory (MB) of three
-# runs of a command.
-measure() {
-  local times=() peak=0 t m
-  for _ in 1 2 3; do
-    /usr/bin/time -f '%e %M' -o build/bench/povray/time.txt "$@" > /dev/null 2>&1
-    read -r t m < build/bench/povray/time.txt
-    times+=("$t")
-    ((m > peak)) && peak=$m
-  done
-  echo "$(printf '%s\n' "${times[@]}" | sort -g | sed -n 2p) $((peak / 1024))"
-}
 
 printf '%-42s %8s %9s %9s %7s %7s %7s %10s\n' scene sources hsb_s povray_s ratio hsb_MB pov_MB agreement
 while (($# >= 2)); do
@@ -61,8 +50,8 @@ while (($# >= 2)); do
   ./build/hsb export --format pov "$scene" -o "$out" "${sets[@]}" > /dev/null
 
   line=$(./build/hsb render "$scene" -o "$out" --set output.file=hsb.png "${sets[@]}")
-  read -r hsb_s hsb_mb <<< "$(measure ./build/hsb render "$scene" -o "$out" --set output.file=hsb.png "${sets[@]}")"
-  read -r povray_s povray_mb <<< "$(measure povray +WT2 "$out/$name.ini")"
+  read -r hsb_s hsb_mb <<< "$(measure build/bench/povray/time.txt ./build/hsb render "$scene" -o "$out" --set output.file=hsb.png "${sets[@]}")"
+  read -r povray_s povray_mb <<< "$(measure build/bench/povray/time.txt povray +WT2 "$out/$name.ini")"
 
   sources=$(sed -n 's/.*sources=\([0-9]*\).*/\1/p' <<< "$line")
   agreement=$(./build/tests/bench/mask_agreement "$out/hsb.png" "$out/$name.povray.png" | awk '{print $2}')

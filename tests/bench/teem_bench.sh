@@ -19,6 +19,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 source tests/bench/helix_glyph_field.sh
+source tests/bench/measure.sh
 scripts/setup.sh > /dev/null
 if ! command -v teem-tend > /dev/null || [[ ! -x /usr/bin/time ]]; then
   sudo=(); [[ $(id -u) -eq 0 ]] || sudo=(sudo)
@@ -33,18 +34,6 @@ mkdir -p "$out"
 helix=$out/helix$samples.nrrd
 [[ -f $helix ]] || teem-tend helix -s "$samples" "$samples" "$samples" -o "$helix" 2> /dev/null
 
-# Median wall time and the largest peak memory (MB) of three runs.
-measure() {
-  local times=() peak=0
-  for _ in 1 2 3; do
-    /usr/bin/time -f '%e %M' -o "$out/time.txt" "$@" > /dev/null 2>&1
-    read -r t m < "$out/time.txt"
-    times+=("$t")
-    ((m > peak)) && peak=$m
-  done
-  echo "$(printf '%s\n' "${times[@]}" | sort -g | sed -n 2p) $((peak / 1024))"
-}
-
 printf '%-13s %6s %7s %8s %8s %8s %8s %7s %10s\n' shape size glyphs hsb_s teem_s hsb_MB teem_MB ratio agreement
 for shape in ellipsoid superquadric; do
   teem_shape=(-g sphere); [[ $shape == superquadric ]] && teem_shape=(-g superquad -sh 3)
@@ -54,8 +43,8 @@ for shape in ellipsoid superquadric; do
           -is "$size" "$size" -ns 1 -nt 2 -bg 1 0 1 -o "$out/teem.nrrd")
     helix_glyph_field "$helix" "$out" "$size" "$shape"
     line=$("${hsb[@]}")
-    read -r hsb_s hsb_mb <<< "$(measure "${hsb[@]}")"
-    read -r teem_s teem_mb <<< "$(measure "${teem[@]}")"
+    read -r hsb_s hsb_mb <<< "$(measure "$out/time.txt" "${hsb[@]}")"
+    read -r teem_s teem_mb <<< "$(measure "$out/time.txt" "${teem[@]}")"
     teem-unu crop -i "$out/teem.nrrd" -min 0 0 0 -max 2 M M | teem-unu quantize -b 8 -min 0 -max 1 |
       teem-unu save -f png -o "$out/teem.png"
     agreement=$(./build/tests/bench/mask_agreement "$out/hsb.png" "$out/teem.png" | awk '{print $2}')
