@@ -4,7 +4,9 @@
 #include <filesystem>
 
 #include "base/memory_budget.h"
+#include "base/process_memory.h"
 #include "field/reading/data_formats.h"
+#include "renderer/image/image_io_module.h"
 #include "renderer/image/image_output.h"
 #include <sstream>
 
@@ -481,7 +483,12 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   p.resolve("render.height", p.render.height);
   std::ostringstream picture;
   picture << "the scene with its picture (" << p.render.width << " × " << p.render.height << " pixels)";
-  p.memory_estimate = p.glyphs.memory_estimate + kBytesPerPixel * p.render.width * p.render.height;
+  // The image module loads while the data is read (image_io_module.h),
+  // and counts towards the peak: once it is in, what is resident holds it
+  // and the sources, made by now.
+  finish_image_io_preload();
+  const double held = std::max(p.glyphs.memory_estimate, resident_bytes());
+  p.memory_estimate = held + kBytesPerPixel * p.render.width * p.render.height;
   check_memory(p.memory_estimate, picture.str(),
                "lower render.width and render.height (or output.print_size or output.dpi)");
   p.camera = frame_camera(camera, framed, p.render.width, p.render.height, reserve);

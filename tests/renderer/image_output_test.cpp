@@ -3,9 +3,15 @@
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imageio.h>
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+#include <tbb/task_scheduler_observer.h>
 
+#include <algorithm>
+#include <atomic>
 #include <filesystem>
 
+#include "renderer/image/image_io_module.h"
 #include "renderer/image/image_output.h"
 #include "tests/temp_dir.h"
 
@@ -94,6 +100,27 @@ TEST(ImageOutput, ExrKeepsFloatsBeyondOne) {
   std::vector<float> back(16 * 8 * 5);
   ASSERT_TRUE(in->read_image(0, 0, 0, 5, OIIO::TypeDesc::FLOAT, back.data()));
   EXPECT_FLOAT_EQ(back[0], 7.5f);
+}
+
+// A thread made while the image module loads waits for the loader to
+// end, so a render's first parallel loop stalled behind the load. The
+// preload makes the thread pool's threads first: as soon as it returns,
+// every worker has joined the pool. (ctest runs each test in a process
+// of its own, where nothing has started the pool before.)
+TEST(ImageOutput, PreloadMakesThePoolsThreadsBeforeLoading) {
+  struct Joined : tbb::task_scheduler_observer {
+    std::atomic<int> workers{0};
+    Joined() { observe(true); }
+    ~Joined() override { observe(false); }
+    void on_scheduler_entry(bool is_worker) override { workers += is_worker; }
+  } joined;
+  const int pool = int(std::min<std::size_t>(
+      std::size_t(tbb::this_task_arena::max_concurrency()),
+      tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism)));
+  preload_image_io();
+  const int workers = joined.workers.load();
+  finish_image_io_preload();
+  EXPECT_EQ(workers, pool - 1);
 }
 
 TEST(ImageOutput, FailureLeavesNoFileBehind) {
