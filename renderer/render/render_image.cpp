@@ -42,6 +42,8 @@ class SampleRows {
   }
   CameraSample* pixel(int x, int y) { return &samples_[slot(x, y)]; }
   const FilterTaps* taps(int x, int y) const { return centred_ ? &*centred_ : &taps_[slot(x, y)]; }
+  // Whether each sample has taps of its own (else one set serves all).
+  bool taps_per_sample() const { return !centred_; }
   // Keeps the taps of sample k of pixel (x, y), at (sx, sy) within it.
   void set_taps(int x, int y, int k, float sx, float sy) {
     if (!centred_) taps_[slot(x, y) + std::size_t(k)] = filter_taps(sx, sy);
@@ -112,62 +114,76 @@ void trace_rows(const RayScene& scene, const Camera& camera, const ShadingSpec& 
   });
 }
 
-// One pixel of the film from the samples around it, by each plane's rule.
-void gather_pixel(int x, int y, const RenderSettings& settings, int per_pixel, SampleRows& rows, Film& film) {
-  double color[3] = {0, 0, 0}, alpha = 0.0, weight = 0.0;
-  double normal[3] = {0, 0, 0}, scalar = 0.0, hit_weight = 0.0;
-  const bool surface_planes = film.has(Plane::normal) || film.has(Plane::scalar);
+// One row of the film from the samples around it, by each plane's rule.
+// The rows a pixel gathers from are found once for the whole row.
+void gather_row(int y, const RenderSettings& settings, int per_pixel, SampleRows& rows, Film& film) {
+  constexpr int kRows = 2 * kFilterReach + 1;
+  const CameraSample* sample_rows[kRows];
+  const FilterTaps* tap_rows[kRows];
   for (int dy = -kFilterReach; dy <= kFilterReach; ++dy) {
     const int ny = y + dy;
-    if (ny < 0 || ny >= settings.height) continue;
-    for (int dx = -kFilterReach; dx <= kFilterReach; ++dx) {
-      const int nx = x + dx;
-      if (nx < 0 || nx >= settings.width) continue;
-      const CameraSample* samples = rows.pixel(nx, ny);
-      const FilterTaps* taps = rows.taps(nx, ny);
-      for (int k = 0; k < per_pixel; ++k) {
-        const double w = taps[k].x[dx + kFilterReach] * taps[k].y[dy + kFilterReach];
-        if (w == 0.0) continue;
-        const CameraSample& s = samples[k];
-        for (int c = 0; c < 3; ++c) color[c] += w * s.color[std::size_t(c)];
-        alpha += w * s.alpha;
-        weight += w;
-        if (!surface_planes || s.id < 0) continue;
-        for (int c = 0; c < 3; ++c) normal[c] += w * s.normal[std::size_t(c)];
-        scalar += w * s.scalar;
-        hit_weight += w;
+    const bool inside = ny >= 0 && ny < settings.height;
+    sample_rows[dy + kFilterReach] = inside ? rows.pixel(0, ny) : nullptr;
+    tap_rows[dy + kFilterReach] = inside ? rows.taps(0, ny) : nullptr;
+  }
+  // A pixel's taps are per sample, or one set for all.
+  const std::size_t tap_step = rows.taps_per_sample() ? std::size_t(per_pixel) : 0;
+  const bool surface_planes = film.has(Plane::normal) || film.has(Plane::scalar);
+  float* out_color = film.at(Plane::color, 0, y);
+  float* out_alpha = film.at(Plane::alpha, 0, y);
+  for (int x = 0; x < settings.width; ++x) {
+    double color[3] = {0, 0, 0}, alpha = 0.0, weight = 0.0;
+    double normal[3] = {0, 0, 0}, scalar = 0.0, hit_weight = 0.0;
+    for (int r = 0; r < kRows; ++r) {
+      if (!sample_rows[r]) continue;
+      for (int dx = -kFilterReach; dx <= kFilterReach; ++dx) {
+        const int nx = x + dx;
+        if (nx < 0 || nx >= settings.width) continue;
+        const CameraSample* samples = sample_rows[r] + std::size_t(nx) * std::size_t(per_pixel);
+        const FilterTaps* taps = tap_rows[r] + std::size_t(nx) * tap_step;
+        for (int k = 0; k < per_pixel; ++k) {
+          const double w = taps[k].x[dx + kFilterReach] * taps[k].y[r];
+          if (w == 0.0) continue;
+          const CameraSample& s = samples[k];
+          for (int c = 0; c < 3; ++c) color[c] += w * s.color[std::size_t(c)];
+          alpha += w * s.alpha;
+          weight += w;
+          if (!surface_planes || s.id < 0) continue;
+          for (int c = 0; c < 3; ++c) normal[c] += w * s.normal[std::size_t(c)];
+          scalar += w * s.scalar;
+          hit_weight += w;
+        }
       }
     }
-  }
-  // The filter's side lobes are negative: keep colour and coverage in range.
-  float* out_color = film.at(Plane::color, x, y);
-  for (int c = 0; c < 3; ++c) out_color[c] = float(std::max(0.0, color[c] / weight));
-  *film.at(Plane::alpha, x, y) = float(std::clamp(alpha / weight, 0.0, 1.0));
-  if (film.has(Plane::normal) && hit_weight > 0.0) {
-    const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
-    float* n = film.at(Plane::normal, x, y);
-    for (int c = 0; c < 3; ++c) n[c] = length > 0.0 ? float(normal[c] / length) : 0.0f;
-  }
-  if (film.has(Plane::scalar) && hit_weight > 0.0) *film.at(Plane::scalar, x, y) = float(scalar / hit_weight);
-
-  // Depth and id from the pixel's own samples: the nearest hit, and the
-  // source most of them hit (the first such in sample order on a tie).
-  const CameraSample* own = rows.pixel(x, y);
-  if (film.has(Plane::depth)) {
-    float nearest = INFINITY;
-    for (int k = 0; k < per_pixel; ++k) nearest = std::min(nearest, own[k].depth);
-    *film.at(Plane::depth, x, y) = nearest;
-  }
-  if (film.has(Plane::id)) {
-    std::int32_t best = -1;
-    int best_count = 0;
-    for (int k = 0; k < per_pixel; ++k) {
-      if (own[k].id < 0) continue;
-      int n = 0;
-      for (int j = 0; j < per_pixel; ++j) n += own[j].id == own[k].id;
-      if (n > best_count) best = own[k].id, best_count = n;
+    // The filter's side lobes are negative: keep colour and coverage in range.
+    for (int c = 0; c < 3; ++c) out_color[3 * x + c] = float(std::max(0.0, color[c] / weight));
+    out_alpha[x] = float(std::clamp(alpha / weight, 0.0, 1.0));
+    if (film.has(Plane::normal) && hit_weight > 0.0) {
+      const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+      float* n = film.at(Plane::normal, x, y);
+      for (int c = 0; c < 3; ++c) n[c] = length > 0.0 ? float(normal[c] / length) : 0.0f;
     }
-    *film.at(Plane::id, x, y) = float(best);
+    if (film.has(Plane::scalar) && hit_weight > 0.0) *film.at(Plane::scalar, x, y) = float(scalar / hit_weight);
+
+    // Depth and id from the pixel's own samples: the nearest hit, and the
+    // source most of them hit (the first such in sample order on a tie).
+    const CameraSample* own = sample_rows[kFilterReach] + std::size_t(x) * std::size_t(per_pixel);
+    if (film.has(Plane::depth)) {
+      float nearest = INFINITY;
+      for (int k = 0; k < per_pixel; ++k) nearest = std::min(nearest, own[k].depth);
+      *film.at(Plane::depth, x, y) = nearest;
+    }
+    if (film.has(Plane::id)) {
+      std::int32_t best = -1;
+      int best_count = 0;
+      for (int k = 0; k < per_pixel; ++k) {
+        if (own[k].id < 0) continue;
+        int n = 0;
+        for (int j = 0; j < per_pixel; ++j) n += own[j].id == own[k].id;
+        if (n > best_count) best = own[k].id, best_count = n;
+      }
+      *film.at(Plane::id, x, y) = float(best);
+    }
   }
 }
 
@@ -190,9 +206,7 @@ RenderOutput render_image(const RayScene& scene, const CameraSpec& camera_spec, 
     const int needed = std::min(settings.height, band_end + kFilterReach);
     if (traced < needed) trace_rows(scene, camera, shading, settings, traced, needed, per_pixel, rows, tracers);
     traced = needed;
-    tbb::parallel_for(band, band_end, [&](int y) {
-      for (int x = 0; x < settings.width; ++x) gather_pixel(x, y, settings, per_pixel, rows, out.film);
-    });
+    tbb::parallel_for(band, band_end, [&](int y) { gather_row(y, settings, per_pixel, rows, out.film); });
     if (settings.progress) settings.progress(double(band_end) / settings.height);
   }
 
