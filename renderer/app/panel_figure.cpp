@@ -173,7 +173,7 @@ RenderSummary render_panel_figure(SceneSpec figure, const std::string& image_pat
     settings.progress = [&](double fraction) { report(JobStage::rendering, (double(i) + fraction) / double(n)); };
     RenderOutput out = render_image(scene, p.camera, p.shading, settings);
     render_seconds += out.seconds;
-    const std::vector<float> panel = display_pixels(out.film, color, transparent);
+    const std::vector<float> panel = display_pixels(std::move(out.film), color, transparent);
     for (int y = 0; y < p.render.height; ++y)
       std::copy_n(&panel[std::size_t(y) * std::size_t(p.render.width) * 4], std::size_t(p.render.width) * 4,
                   &rgba[(std::size_t(y0 + y) * std::size_t(width) + std::size_t(x0)) * 4]);

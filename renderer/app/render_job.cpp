@@ -72,8 +72,8 @@ RenderSummary run_render_job(const RenderJob& job) {
   } else {
     const int width = rendered.film.width(), height = rendered.film.height();
     const bool transparent = prepared->shading.background_kind == BackgroundKind::transparent;
-    std::vector<float> rgba = display_pixels(rendered.film, color, transparent);
-    rendered.film = Film(1, 1);  // its memory is no longer needed
+    std::vector<float> rgba = display_pixels(std::move(rendered.film), color, transparent);
+    rendered.film = Film(1, 1);  // the rest of its memory is no longer needed
     Annotations annotations;
     if (output.legend)
       annotations.legends.push_back({*output.legend, prepared->scale, legend_ink(rgba, width, height, *output.legend)});

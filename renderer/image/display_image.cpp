@@ -4,16 +4,18 @@
 
 namespace hsb {
 
-std::vector<float> display_pixels(const Film& film, const ColorManagement& color, bool keep_alpha) {
+std::vector<float> display_pixels(Film&& film, const ColorManagement& color, bool keep_alpha) {
   const std::size_t pixels = std::size_t(film.width()) * std::size_t(film.height());
-  const std::vector<float>& rgb = film.data(Plane::color);
-  const std::vector<float>& alpha = film.data(Plane::alpha);
-  std::vector<float> rgba(pixels * 4);
-  tbb::parallel_for(std::size_t{0}, pixels, [&](std::size_t i) {
+  const std::vector<float> alpha = film.take(Plane::alpha);
+  std::vector<float> rgba = film.take(Plane::color);
+  rgba.resize(pixels * 4);  // within the film's reserve: no copy
+  // Widened from the last pixel back: pixel i's RGB at 3i moves to 4i, at
+  // or after it, so no pixel is overwritten before it has moved.
+  for (std::size_t i = pixels; i-- > 0;) {
     const float a = keep_alpha ? alpha[i] : 1.0f;
-    for (std::size_t c = 0; c < 3; ++c) rgba[i * 4 + c] = a > 0.0f ? rgb[i * 3 + c] / a : 0.0f;
+    for (std::size_t c = 3; c-- > 0;) rgba[i * 4 + c] = a > 0.0f ? rgba[i * 3 + c] / a : 0.0f;
     rgba[i * 4 + 3] = a;
-  });
+  }
   color.apply_display(rgba, film.width(), film.height());
   tbb::parallel_for(std::size_t{0}, pixels, [&](std::size_t i) {
     for (std::size_t c = 0; c < 3; ++c) rgba[i * 4 + c] *= rgba[i * 4 + 3];

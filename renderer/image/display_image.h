@@ -11,8 +11,11 @@
 namespace hsb {
 
 // RGBA, display-referred, premultiplied, top row first. Without
-// `keep_alpha` the picture is opaque (the background is part of it).
-std::vector<float> display_pixels(const Film& film, const ColorManagement& color, bool keep_alpha);
+// `keep_alpha` the picture is opaque (the background is part of it). The
+// film's colour plane becomes the image, widened where it stands (the film
+// reserved its room), so a picture's colour is not held twice: 64 MB less
+// at 2000².
+std::vector<float> display_pixels(Film&& film, const ColorManagement& color, bool keep_alpha);
 
 // The grey of text drawn over `rgba` near (x, y): black over light
 // pixels, white over dark ones, black over transparent ones.

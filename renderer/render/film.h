@@ -54,6 +54,8 @@ class Film {
   }
   // The planes present, in the order above.
   std::vector<Plane> planes() const;
+  // The plane's values, moved out of the film (which no longer has it).
+  std::vector<float> take(Plane p) { return std::move(data_[std::size_t(p)]); }
 
  private:
   int width_, height_;
