@@ -1,12 +1,15 @@
 #include "renderer/render/render_image.h"
 
+#include <emmintrin.h>
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <map>
 #include <optional>
 
@@ -114,8 +117,73 @@ void trace_rows(const RayScene& scene, const Camera& camera, const ShadingSpec& 
   });
 }
 
+// Adds w times a sample's colour and alpha (side by side in CameraSample)
+// to `sum`: two lanes of doubles each, in SSE2, which every x86-64 has.
+// Each lane does what the scalar sum did (a product, then a sum), so the
+// bits are the same; the gather takes a third of the instructions.
+inline void add_weighted(const CameraSample& s, double w, __m128d sum[2]) {
+  static_assert(offsetof(CameraSample, alpha) == offsetof(CameraSample, color) + 3 * sizeof(float));
+  const __m128 v = _mm_loadu_ps(s.color.data());  // R, G, B, then alpha
+  const __m128d weight = _mm_set1_pd(w);
+  sum[0] = _mm_add_pd(sum[0], _mm_mul_pd(weight, _mm_cvtps_pd(v)));
+  sum[1] = _mm_add_pd(sum[1], _mm_mul_pd(weight, _mm_cvtps_pd(_mm_movehl_ps(v, v))));
+}
+
+// A row of colour and alpha from one sample a pixel, at its centre, the
+// film's usual case: the weights are every pixel's, found once, and away
+// from the picture's edges every one applies. The sums run in the order
+// gather_row's do, so the bits are the same.
+void gather_centred_row(int y, const RenderSettings& settings, SampleRows& rows, Film& film) {
+  constexpr int kSide = 2 * kFilterReach + 1;
+  struct Tap {
+    const CameraSample* row;  // the samples of the tap's row, at offset `dx` from the pixel
+    int dx;
+    double w;
+  };
+  const FilterTaps& taps = *rows.taps(0, 0);
+  Tap list[kSide * kSide];
+  int count = 0;
+  bool every_row = true;
+  for (int r = 0; r < kSide; ++r) {
+    const int ny = y + r - kFilterReach;
+    if (ny < 0 || ny >= settings.height) {
+      every_row = false;
+      continue;
+    }
+    for (int d = 0; d < kSide; ++d)
+      if (const double w = taps.x[d] * taps.y[r]; w != 0.0) list[count++] = {rows.pixel(0, ny), d - kFilterReach, w};
+  }
+  float* out_color = film.at(Plane::color, 0, y);
+  float* out_alpha = film.at(Plane::alpha, 0, y);
+  for (int x = 0; x < settings.width; ++x) {
+    __m128d lanes[2] = {_mm_setzero_pd(), _mm_setzero_pd()};  // R G, B alpha
+    double weight = 0.0;
+    if (every_row && x >= kFilterReach && x + kFilterReach < settings.width) {
+      for (int i = 0; i < count; ++i) {
+        add_weighted(list[i].row[x + list[i].dx], list[i].w, lanes);
+        weight += list[i].w;
+      }
+    } else {
+      for (int i = 0; i < count; ++i) {
+        const int nx = x + list[i].dx;
+        if (nx < 0 || nx >= settings.width) continue;
+        add_weighted(list[i].row[nx], list[i].w, lanes);
+        weight += list[i].w;
+      }
+    }
+    double sum[4];
+    _mm_storeu_pd(sum, lanes[0]);
+    _mm_storeu_pd(sum + 2, lanes[1]);
+    for (int c = 0; c < 3; ++c) out_color[3 * x + c] = float(std::max(0.0, sum[c] / weight));
+    out_alpha[x] = float(std::clamp(sum[3] / weight, 0.0, 1.0));
+  }
+}
+
 // One row of the film from the samples around it, by each plane's rule.
-// The rows a pixel gathers from are found once for the whole row.
+// The rows a pixel gathers from are found once for the whole row; the
+// planes of the surface (normal, scalar) are summed only when the film
+// has them.
+template <bool kSurfacePlanes>
 void gather_row(int y, const RenderSettings& settings, int per_pixel, SampleRows& rows, Film& film) {
   constexpr int kRows = 2 * kFilterReach + 1;
   const CameraSample* sample_rows[kRows];
@@ -128,11 +196,11 @@ void gather_row(int y, const RenderSettings& settings, int per_pixel, SampleRows
   }
   // A pixel's taps are per sample, or one set for all.
   const std::size_t tap_step = rows.taps_per_sample() ? std::size_t(per_pixel) : 0;
-  const bool surface_planes = film.has(Plane::normal) || film.has(Plane::scalar);
   float* out_color = film.at(Plane::color, 0, y);
   float* out_alpha = film.at(Plane::alpha, 0, y);
   for (int x = 0; x < settings.width; ++x) {
-    double color[3] = {0, 0, 0}, alpha = 0.0, weight = 0.0;
+    __m128d lanes[2] = {_mm_setzero_pd(), _mm_setzero_pd()};  // R G, B alpha
+    double weight = 0.0;
     double normal[3] = {0, 0, 0}, scalar = 0.0, hit_weight = 0.0;
     for (int r = 0; r < kRows; ++r) {
       if (!sample_rows[r]) continue;
@@ -145,19 +213,21 @@ void gather_row(int y, const RenderSettings& settings, int per_pixel, SampleRows
           const double w = taps[k].x[dx + kFilterReach] * taps[k].y[r];
           if (w == 0.0) continue;
           const CameraSample& s = samples[k];
-          for (int c = 0; c < 3; ++c) color[c] += w * s.color[std::size_t(c)];
-          alpha += w * s.alpha;
+          add_weighted(s, w, lanes);
           weight += w;
-          if (!surface_planes || s.id < 0) continue;
+          if (!kSurfacePlanes || s.id < 0) continue;
           for (int c = 0; c < 3; ++c) normal[c] += w * s.normal[std::size_t(c)];
           scalar += w * s.scalar;
           hit_weight += w;
         }
       }
     }
+    double sum[4];
+    _mm_storeu_pd(sum, lanes[0]);
+    _mm_storeu_pd(sum + 2, lanes[1]);
     // The filter's side lobes are negative: keep colour and coverage in range.
-    for (int c = 0; c < 3; ++c) out_color[3 * x + c] = float(std::max(0.0, color[c] / weight));
-    out_alpha[x] = float(std::clamp(alpha / weight, 0.0, 1.0));
+    for (int c = 0; c < 3; ++c) out_color[3 * x + c] = float(std::max(0.0, sum[c] / weight));
+    out_alpha[x] = float(std::clamp(sum[3] / weight, 0.0, 1.0));
     if (film.has(Plane::normal) && hit_weight > 0.0) {
       const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
       float* n = film.at(Plane::normal, x, y);
@@ -199,14 +269,19 @@ RenderOutput render_image(const RayScene& scene, const CameraSpec& camera_spec, 
   RenderOutput out{Film(settings.width, settings.height, settings.planes)};
   tbb::enumerable_thread_specific<SampleTracer> tracers;
   SampleRows rows(settings.width, per_pixel, kBand + 2 * kFilterReach);
-
   int traced = 0;  // rows [0, traced) have their samples
   for (int band = 0; band < settings.height; band += kBand) {
     const int band_end = std::min(settings.height, band + kBand);
     const int needed = std::min(settings.height, band_end + kFilterReach);
     if (traced < needed) trace_rows(scene, camera, shading, settings, traced, needed, per_pixel, rows, tracers);
     traced = needed;
-    tbb::parallel_for(band, band_end, [&](int y) { gather_row(y, settings, per_pixel, rows, out.film); });
+    const bool surface_planes = out.film.has(Plane::normal) || out.film.has(Plane::scalar);
+    const bool colour_only = !surface_planes && !out.film.has(Plane::depth) && !out.film.has(Plane::id);
+    tbb::parallel_for(band, band_end, [&](int y) {
+      if (colour_only && !rows.taps_per_sample()) gather_centred_row(y, settings, rows, out.film);
+      else if (surface_planes) gather_row<true>(y, settings, per_pixel, rows, out.film);
+      else gather_row<false>(y, settings, per_pixel, rows, out.film);
+    });
     if (settings.progress) settings.progress(double(band_end) / settings.height);
   }
 
