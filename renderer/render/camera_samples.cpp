@@ -171,6 +171,16 @@ bool background_sample(const ShadingSpec& shading, const CameraRayJob& job, Came
 
 }  // namespace
 
+void background_camera_samples(const ShadingSpec& shading, const CameraRayJob* jobs, int count, SampleTracer& tracer,
+                               CameraSample* out) {
+  Vec3 ground;
+  for (int i = 0; i < count; ++i) {
+    out[i] = CameraSample{};
+    background_sample(shading, jobs[i], out[i], ground);
+  }
+  tracer.primary_rays += unsigned(count);
+}
+
 void trace_camera_samples(const RayScene& scene, const ShadingSpec& shading, double shadow_offset,
                           const CameraRayJob* jobs, int count, SampleTracer& tracer, CameraSample* out) {
   FieldRayContext context(tracer.tracers, tracer.stats);

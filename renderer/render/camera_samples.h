@@ -49,4 +49,12 @@ struct CameraRayJob {
 void trace_camera_samples(const RayScene& scene, const ShadingSpec& shading, double shadow_offset,
                           const CameraRayJob* jobs, int count, SampleTracer& tracer, CameraSample* out);
 
+// The samples of `count` camera rays known to meet nothing (their part of
+// the picture cannot see the scene's reach: camera_frustum.h), as
+// trace_camera_samples makes them without tracing: the background, counted
+// as camera rays. Not for a scene with a ground plane, whose shadow needs
+// rays; the jobs' rays are not read.
+void background_camera_samples(const ShadingSpec& shading, const CameraRayJob* jobs, int count, SampleTracer& tracer,
+                               CameraSample* out);
+
 }  // namespace hsb

@@ -78,6 +78,9 @@ class RayScene {
   unsigned tubes_id() const { return tubes_id_; }
   const BlobGeometry& blobs() const { return *blobs_; }
   const ShellGeometry* shell() const { return shell_.get(); }  // nullptr when there is none
+  // The box holding all a camera ray can meet: the geometry and the
+  // shell (empty, lo > hi, when there is nothing).
+  const Box3& reach() const { return reach_; }
 
  private:
   RTCScene scene_ = nullptr;
@@ -88,6 +91,7 @@ class RayScene {
   unsigned field_id_ = RTC_INVALID_GEOMETRY_ID;
   unsigned box_id_ = RTC_INVALID_GEOMETRY_ID;
   unsigned tubes_id_ = RTC_INVALID_GEOMETRY_ID;
+  Box3 reach_;
 };
 
 }  // namespace hsb

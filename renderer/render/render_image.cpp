@@ -12,10 +12,13 @@
 #include <cstddef>
 #include <map>
 #include <optional>
+#include <utility>
 
+#include "renderer/render/camera_frustum.h"
 #include "renderer/render/camera_samples.h"
 #include "renderer/render/pixel_filter.h"
 #include "renderer/render/sampling.h"
+#include "renderer/surface/embree_ray.h"
 
 namespace hsb {
 namespace {
@@ -73,10 +76,12 @@ void sample_position(int x, int y, int width, int k, int per_pixel, double& sx, 
   sy = y + (per_pixel == 1 ? 0.5 : v);
 }
 
-// Traces the camera samples of picture rows [first, last).
+// Traces the camera samples of picture rows [first, last). A tile that
+// cannot see the scene's reach (camera_frustum.h) takes the background
+// without tracing, where `untraced_background` allows.
 void trace_rows(const RayScene& scene, const Camera& camera, const ShadingSpec& shading,
-                const RenderSettings& settings, int first, int last, int per_pixel, SampleRows& rows,
-                tbb::enumerable_thread_specific<SampleTracer>& tracers) {
+                const RenderSettings& settings, int first, int last, int per_pixel, bool untraced_background,
+                SampleRows& rows, tbb::enumerable_thread_specific<SampleTracer>& tracers) {
   const int tiles_x = (settings.width + kTile - 1) / kTile;
   const int tiles_y = (last - first + kTile - 1) / kTile;
   tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y), [&](const tbb::blocked_range<int>& range) {
@@ -91,20 +96,24 @@ void trace_rows(const RayScene& scene, const Camera& camera, const ShadingSpec& 
           px[count] = x;
           py[count++] = y;
         }
+      // Every sample of the tile lies within its pixels' rectangle.
+      const bool traced = !untraced_background ||
+                          rectangle_may_see(camera, px[0], py[0], px[count - 1] + 1, py[count - 1] + 1, scene.reach());
       double position_x, position_y;
       for (int k = 0; k < per_pixel; ++k) {
         CameraRayJob jobs[kMaxPacket];
         for (int i = 0; i < count; ++i) {
           double sx, sy;
           sample_position(px[i], py[i], settings.width, k, per_pixel, sx, sy);
-          jobs[i].ray = camera.ray(sx, sy);
+          if (traced) jobs[i].ray = camera.ray(sx, sy);
           jobs[i].pixel = std::uint64_t(py[i]) * std::uint64_t(settings.width) + std::uint64_t(px[i]);
           jobs[i].sample = std::uint32_t(k);
           jobs[i].samples = std::uint32_t(per_pixel);
           jobs[i].picture_v = sy / settings.height;
         }
         CameraSample results[kMaxPacket];
-        trace_camera_samples(scene, shading, settings.shadow_offset, jobs, count, tracer, results);
+        if (traced) trace_camera_samples(scene, shading, settings.shadow_offset, jobs, count, tracer, results);
+        else background_camera_samples(shading, jobs, count, tracer, results);
         for (int i = 0; i < count; ++i) {
           CameraSample& stored = rows.pixel(px[i], py[i])[k] = results[i];
           sample_position(px[i], py[i], settings.width, k, per_pixel, position_x, position_y);
@@ -269,11 +278,23 @@ RenderOutput render_image(const RayScene& scene, const CameraSpec& camera_spec, 
   RenderOutput out{Film(settings.width, settings.height, settings.planes)};
   tbb::enumerable_thread_specific<SampleTracer> tracers;
   SampleRows rows(settings.width, per_pixel, kBand + 2 * kFilterReach);
+  // Rays that cannot meet anything need no tracing, unless the ground
+  // plane (whose shadow needs rays) or coordinates beyond what Embree
+  // traces (such rays are counted as untraceable) are in the picture. The
+  // picture's corner rays say it for all: the origins of the others lie
+  // between theirs.
+  bool untraced_background = !shading.ground;
+  for (const auto& [x, y] : {std::pair{0, 0}, {settings.width, 0}, {0, settings.height}, {settings.width, settings.height}}) {
+    const CameraRay corner = camera.ray(x, y);
+    untraced_background = untraced_background && embree_can_trace(corner.origin, corner.direction, 0.0, INFINITY);
+  }
+
   int traced = 0;  // rows [0, traced) have their samples
   for (int band = 0; band < settings.height; band += kBand) {
     const int band_end = std::min(settings.height, band + kBand);
     const int needed = std::min(settings.height, band_end + kFilterReach);
-    if (traced < needed) trace_rows(scene, camera, shading, settings, traced, needed, per_pixel, rows, tracers);
+    if (traced < needed)
+      trace_rows(scene, camera, shading, settings, traced, needed, per_pixel, untraced_background, rows, tracers);
     traced = needed;
     const bool surface_planes = out.film.has(Plane::normal) || out.film.has(Plane::scalar);
     const bool colour_only = !surface_planes && !out.film.has(Plane::depth) && !out.film.has(Plane::id);
