@@ -29,16 +29,15 @@ BlobField make_blob_field(const std::vector<GlyphSource>& glyphs,
   field.blend = blend;
   field.isovalue = isovalue;
   field.shape = shape;
+  if (shape != GlyphShape::ellipsoid) {
+    std::vector<Vec3> radii, eigenvalues;
+    for (const GlyphSource& g : glyphs) radii.push_back(g.radii), eigenvalues.push_back(g.eigenvalues);
+    field.shapes = shape_params(shape, radii, eigenvalues, sharpness, sign);
+  }
   field.sources.reserve(glyphs.size());
   for (std::size_t i = 0; i < glyphs.size(); ++i) {
     // W_s = W/σ: the bounding ellipsoid's radii are σ R r_k.
-    double sigma = 1.0;
-    if (shape != GlyphShape::ellipsoid) {
-      field.shapes.push_back(shape == GlyphShape::superquadric
-                                 ? superquadric_params(glyphs[i].radii, sharpness)
-                                 : signed_params(glyphs[i].radii, glyphs[i].eigenvalues, sharpness, sign));
-      sigma = field.shapes.back().bound_scale;
-    }
+    const double sigma = shape == GlyphShape::ellipsoid ? 1.0 : double(field.shapes[i].bound_scale);
     field.sources.push_back(make_blob_source(glyphs[i].centre, glyphs[i].axes, glyphs[i].radii,
                                              sigma * influence_radius, colors[i], glyphs[i].scalar));
   }

@@ -3,7 +3,10 @@
 #include "field/tensor/tensor_measures.h"
 #include "renderer/surface/superquadric_gauge.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cmath>
 
@@ -55,37 +58,110 @@ double superquadric_gauge(const ShapeParams& s, const Vec3& q, Vec3* gradient) {
   return finish_lane(lanes, 0, s, q, gradient);
 }
 
-// σ = max |q|/N(q) = 1/min N over the unit sphere. For fixed |(q_a, q_b)| = ρ
-// the equatorial p-norm (p ≥ 2) is smallest at |q_a| = |q_b|, where it is
-// c ρ with c = 2^{1/p − 1/2}; what is left is the smallest ‖(c cos θ,
-// sin θ)‖_r over θ ∈ [0, π/2]: sampled, then refined between the best
-// sample's neighbours, and σ rounded up by 10⁻⁶ so the bound holds to
-// float precision.
-double superquadric_bound_scale(double alpha, double beta) {
-  const double p = 2.0 / alpha, c = std::pow(2.0, 1.0 / p - 0.5);
-  // ‖(c cos θ, sin θ)‖_{2/β}: the gauge of a glyph round about z at
-  // (c cos θ, 0, sin θ), whose equatorial norm is |c cos θ|.
-  ShapeParams round;
-  round.alpha = float(alpha), round.beta = float(beta), round.axis = 2;
-  const auto gauge = [&](double theta) {
-    return superquadric_gauge(round, Vec3(c * std::cos(theta), 0.0, std::sin(theta)), nullptr);
-  };
-  constexpr int kSamples = 64;
-  const double step = 0.5 * M_PI / kSamples;
-  int best = 0;
-  double least = gauge(0.0);
-  for (int i = 1; i <= kSamples; ++i)
-    if (const double n = gauge(i * step); n < least) least = n, best = i;
-  double lo = std::max(0, best - 1) * step, hi = std::min(kSamples, best + 1) * step;
-  const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
-  for (int i = 0; i < 40; ++i) {
-    const double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
-    const double na = gauge(a), nb = gauge(b);
-    least = std::min({least, na, nb});
-    if (na < nb) hi = b;
-    else lo = a;
+// The gauges N of `count` glyphs (`round[i]` at q[i]), kGaugeLanes at a time.
+void gauge_list(const ShapeParams* const* round, const Vec3* q, int count, double* n) {
+  for (int first = 0; first < count; first += kGaugeLanes) {
+    const int used = std::min(kGaugeLanes, count - first);
+    GaugeLanes lanes;
+    for (int i = 0; i < used; ++i) fill_lane(lanes, i, *round[first + i], q[first + i]);
+    superquadric_gauges(lanes, used);
+    for (int i = 0; i < used; ++i) n[first + i] = lanes.n[i];
   }
-  return (1.0 + 1e-6) / least;
+}
+
+// σ = max |q|/N(q) = 1/min N over the unit sphere, for each of `count`
+// shapes. For fixed |(q_a, q_b)| = ρ the equatorial p-norm (p ≥ 2) is
+// smallest at |q_a| = |q_b|, where it is c ρ with c = 2^{1/p − 1/2}; what
+// is left is the smallest ‖(c cos θ, sin θ)‖_r over θ ∈ [0, π/2], the
+// gauge of a glyph round about z at (c cos θ, 0, sin θ): sampled, then
+// refined between the best sample's neighbours, and σ rounded up by 10⁻⁶
+// so the bound holds to float precision. Glyphs are searched side by side
+// (each search is the same as alone), so the gauge's lanes are full: a
+// glyph alone would fill one of eight.
+void find_bound_scales(ShapeParams* shapes, int count) {
+  constexpr int kSamples = 64, kGroup = kGaugeLanes / 2, kRefinements = 40;
+  const double step = 0.5 * M_PI / kSamples;
+  static const auto unit = [step] {  // cos θ and sin θ of the samples, for every glyph
+    std::array<Vec3, kSamples + 1> u;
+    for (int i = 0; i <= kSamples; ++i) u[std::size_t(i)] = Vec3(std::cos(i * step), 0.0, std::sin(i * step));
+    return u;
+  }();
+  const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
+  for (int first = 0; first < count; first += kGroup) {
+    const int m = std::min(kGroup, count - first);
+    ShapeParams round[kGroup];
+    const ShapeParams* pointers[kGroup * (kSamples + 1)];
+    double c[kGroup];
+    Vec3 q[kGroup * (kSamples + 1)];
+    double n[kGroup * (kSamples + 1)];
+    for (int g = 0; g < m; ++g) {
+      const ShapeParams& s = shapes[first + g];
+      const double p = 2.0 / s.alpha;
+      c[g] = std::pow(2.0, 1.0 / p - 0.5);
+      round[g].alpha = s.alpha, round[g].beta = s.beta, round[g].axis = 2;
+      for (int i = 0; i <= kSamples; ++i) {
+        const int k = g * (kSamples + 1) + i;
+        pointers[k] = &round[g];
+        q[k] = Vec3(c[g] * unit[std::size_t(i)].x(), 0.0, unit[std::size_t(i)].z());
+      }
+    }
+    gauge_list(pointers, q, m * (kSamples + 1), n);
+    double least[kGroup], lo[kGroup], hi[kGroup];
+    for (int g = 0; g < m; ++g) {
+      const double* ng = n + g * (kSamples + 1);
+      int best = 0;
+      least[g] = ng[0];
+      for (int i = 1; i <= kSamples; ++i)
+        if (ng[i] < least[g]) least[g] = ng[i], best = i;
+      lo[g] = std::max(0, best - 1) * step, hi[g] = std::min(kSamples, best + 1) * step;
+    }
+    for (int r = 0; r < kRefinements; ++r) {
+      double ab[2 * kGroup];
+      for (int g = 0; g < m; ++g) {
+        ab[2 * g] = hi[g] - golden * (hi[g] - lo[g]), ab[2 * g + 1] = lo[g] + golden * (hi[g] - lo[g]);
+        for (int j = 0; j < 2; ++j) {
+          pointers[2 * g + j] = &round[g];
+          q[2 * g + j] = Vec3(c[g] * std::cos(ab[2 * g + j]), 0.0, std::sin(ab[2 * g + j]));
+        }
+      }
+      gauge_list(pointers, q, 2 * m, n);
+      for (int g = 0; g < m; ++g) {
+        least[g] = std::min({least[g], n[2 * g], n[2 * g + 1]});
+        if (n[2 * g] < n[2 * g + 1]) hi[g] = ab[2 * g + 1];
+        else lo[g] = ab[2 * g];
+      }
+    }
+    for (int g = 0; g < m; ++g) shapes[first + g].bound_scale = float((1.0 + 1e-6) / least[g]);
+  }
+}
+
+// Kindlmann's exponents and axis for the radii (superquadric_params without σ).
+ShapeParams superquadric_exponents(const Vec3& radii, double sharpness) {
+  std::array<int, 3> order{0, 1, 2};  // radii from largest to smallest
+  std::sort(order.begin(), order.end(), [&](int i, int j) { return radii[i] > radii[j]; });
+  ShapeParams s;
+  const WestinMeasures w = westin_measures(radii);
+  const double cl = std::min(0.99, w.linear), cp = std::min(0.99, w.planar);
+  const double linear = std::pow(1.0 - cl, sharpness), planar = std::pow(1.0 - cp, sharpness);
+  if (cl > cp) {
+    s.axis = std::uint8_t(order[0]);
+    s.alpha = float(planar);
+    s.beta = float(linear);
+  } else {
+    s.axis = std::uint8_t(order[2]);
+    s.alpha = float(linear);
+    s.beta = float(planar);
+  }
+  return s;
+}
+
+// The signed glyph's points, on `s`.
+void add_points(ShapeParams& s, const Vec3& eigenvalues, SignConvention sign) {
+  const double largest = eigenvalues.cwiseAbs().maxCoeff();
+  for (int k = 0; k < 3; ++k)
+    if (is_compressive(eigenvalues[k], sign) && std::fabs(eigenvalues[k]) > 1e-3 * largest)
+      s.pointed |= std::uint8_t(1u << k);
+  if (s.pointed) s.lipschitz = float(std::sqrt(1.0 + 1.0 / (kConeBase * kConeBase)) * (1.0 + 1e-6));
 }
 
 }  // namespace
@@ -207,33 +283,36 @@ bool clip_to_shape_box(const ShapeParams& params, const Vec3& q0, const Vec3& v,
 
 ShapeParams signed_params(const Vec3& radii, const Vec3& eigenvalues, double sharpness, SignConvention sign) {
   ShapeParams s = superquadric_params(radii, sharpness);
-  const double largest = eigenvalues.cwiseAbs().maxCoeff();
-  for (int k = 0; k < 3; ++k)
-    if (is_compressive(eigenvalues[k], sign) && std::fabs(eigenvalues[k]) > 1e-3 * largest)
-      s.pointed |= std::uint8_t(1u << k);
-  if (s.pointed) s.lipschitz = float(std::sqrt(1.0 + 1.0 / (kConeBase * kConeBase)) * (1.0 + 1e-6));
+  add_points(s, eigenvalues, sign);
   return s;
 }
 
 ShapeParams superquadric_params(const Vec3& radii, double sharpness) {
-  std::array<int, 3> order{0, 1, 2};  // radii from largest to smallest
-  std::sort(order.begin(), order.end(), [&](int i, int j) { return radii[i] > radii[j]; });
-  ShapeParams s;
-  if (!(radii.sum() > 0.0)) return s;
-  const WestinMeasures w = westin_measures(radii);
-  const double cl = std::min(0.99, w.linear), cp = std::min(0.99, w.planar);
-  const double linear = std::pow(1.0 - cl, sharpness), planar = std::pow(1.0 - cp, sharpness);
-  if (cl > cp) {
-    s.axis = std::uint8_t(order[0]);
-    s.alpha = float(planar);
-    s.beta = float(linear);
-  } else {
-    s.axis = std::uint8_t(order[2]);
-    s.alpha = float(linear);
-    s.beta = float(planar);
-  }
-  s.bound_scale = float(superquadric_bound_scale(s.alpha, s.beta));
+  if (!(radii.sum() > 0.0)) return ShapeParams{};
+  ShapeParams s = superquadric_exponents(radii, sharpness);
+  find_bound_scales(&s, 1);
   return s;
+}
+
+std::vector<ShapeParams> shape_params(GlyphShape shape, const std::vector<Vec3>& radii,
+                                      const std::vector<Vec3>& eigenvalues, double sharpness, SignConvention sign) {
+  std::vector<ShapeParams> shapes(radii.size());
+  constexpr std::size_t kChunk = 64;
+  tbb::parallel_for(std::size_t{0}, (radii.size() + kChunk - 1) / kChunk, [&](std::size_t chunk) {
+    const std::size_t first = chunk * kChunk, end = std::min(radii.size(), first + kChunk);
+    std::vector<ShapeParams*> searched;  // those with a size, whose σ is sought
+    for (std::size_t i = first; i < end; ++i) {
+      const bool sized = radii[i].sum() > 0.0;
+      if (sized) shapes[i] = superquadric_exponents(radii[i], sharpness);
+      if (shape == GlyphShape::signed_superquadric) add_points(shapes[i], eigenvalues[i], sign);
+      if (sized) searched.push_back(&shapes[i]);
+    }
+    std::vector<ShapeParams> batch;
+    for (ShapeParams* s : searched) batch.push_back(*s);
+    find_bound_scales(batch.data(), int(batch.size()));
+    for (std::size_t k = 0; k < searched.size(); ++k) searched[k]->bound_scale = batch[k].bound_scale;
+  });
+  return shapes;
 }
 
 }  // namespace hsb

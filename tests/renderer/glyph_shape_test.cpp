@@ -114,6 +114,36 @@ TEST(GlyphShapes, AreConvexAlongEveryRay) {
 // A signed glyph points the axes that compress, under either convention,
 // keeps every radius (u = 1 at each axis' end) and is sharper than the
 // superquadric near a point, the same elsewhere.
+// Many glyphs' shapes at once (their σ searches side by side in the
+// gauge's lanes, spread over the cores) are each glyph's shape alone, to
+// the bit: flat, long, round and sizeless glyphs, either sign.
+TEST(GlyphShapes, ManyAtOnceAreEachAlone) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> size(0.01, 2.0), value(-3.0, 3.0);
+  std::vector<Vec3> radii, eigenvalues;
+  for (int i = 0; i < 203; ++i) {  // not a whole number of lane groups or chunks
+    Vec3 r(size(rng), size(rng), size(rng));
+    if (i % 17 == 0) r = Vec3::Zero();
+    if (i % 13 == 1) r = Vec3(1.0, 1.0, 1.0);
+    if (i % 11 == 2) r = Vec3(3.0, 0.1, 0.1);
+    radii.push_back(r);
+    eigenvalues.emplace_back(value(rng), value(rng), value(rng));
+  }
+  for (const GlyphShape shape : {GlyphShape::superquadric, GlyphShape::signed_superquadric}) {
+    const std::vector<ShapeParams> many = shape_params(shape, radii, eigenvalues, 3.0, SignConvention::tension_positive);
+    ASSERT_EQ(many.size(), radii.size());
+    for (std::size_t i = 0; i < radii.size(); ++i) {
+      const ShapeParams alone = shape == GlyphShape::superquadric
+                                    ? superquadric_params(radii[i], 3.0)
+                                    : signed_params(radii[i], eigenvalues[i], 3.0, SignConvention::tension_positive);
+      const ShapeParams& a = many[i];
+      EXPECT_TRUE(a.alpha == alone.alpha && a.beta == alone.beta && a.bound_scale == alone.bound_scale &&
+                  a.axis == alone.axis && a.pointed == alone.pointed && a.lipschitz == alone.lipschitz)
+          << glyph_shape_name(shape) << " glyph " << i << ": σ " << a.bound_scale << " against " << alone.bound_scale;
+    }
+  }
+}
+
 TEST(GlyphShapes, SignedGlyphPointsTheAxesThatCompress) {
   const Vec3 radii(1.0, 0.5, 0.25), eigenvalues(1.0, 0.5, -0.25);
   const ShapeParams mechanics = signed_params(radii, eigenvalues, 3.0, SignConvention::tension_positive);
