@@ -20,6 +20,7 @@ packages=(
   libtomlplusplus-dev libeigen3-dev libcli11-dev
   libvtk9-dev
   libpango1.0-dev libcairo2-dev poppler-utils
+  libssl-dev
   googletest libgtest-dev
   fonts-dejavu-core
   python3

@@ -1,13 +1,12 @@
 #include "renderer/app/picture_output.h"
 
-#include <OpenImageIO/hash.h>
-
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "base/sha1.h"
 #include "field/reading/vtk_data.h"
 #include "renderer/image/display_image.h"
 #include "renderer/image/image_output.h"
@@ -20,22 +19,17 @@
 namespace hsb {
 namespace {
 
-std::string sha1_hex(const std::string& text) {
-  OIIO::SHA1 hash(text.data(), text.size());
-  return hash.digest();
-}
-
 // The SHA-1 of a file's bytes; "" when there is no file.
 std::string file_sha1(const std::string& path) {
   if (path.empty()) return "";
   std::ifstream in(path, std::ios::binary);
-  OIIO::SHA1 hash;
+  Sha1 hash;
   std::vector<char> buffer(1 << 20);
   while (in) {
     in.read(buffer.data(), std::streamsize(buffer.size()));
     hash.append(buffer.data(), std::size_t(in.gcount()));
   }
-  return hash.digest();
+  return hash.hex();
 }
 
 // The scene's text and overrides.
