@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <tbb/global_control.h>
 
+#include <malloc.h>
 #include <signal.h>
 #include <unistd.h>
 
@@ -132,6 +133,13 @@ std::string version_text() {
 
 int main(int argc, char** argv) {
   install_signal_handlers();
+  // Arrays of a megabyte or more (a volume's values, the film, the
+  // display image) get mappings of their own, returned whole when freed.
+  // glibc's default raises this threshold with every such array freed (to
+  // 32 MB), after which a volume's arrays, read and freed before the
+  // render, stayed in the heap: Teem's helix at 2000² peaked at 279 MB
+  // instead of 238 MB, at the same speed.
+  mallopt(M_MMAP_THRESHOLD, 1 << 20);
   CLI::App app{"Hyperstreamball " HSB_VERSION
                ": ray-traced hyperstreamballs (anisotropic metaballs along stress\n"
                "trajectories) for symmetric tensor fields."};
