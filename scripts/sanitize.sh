@@ -12,7 +12,7 @@ install_missing clang-14 libclang-rt-14-dev
 if [[ ! -f build-sanitize/build.ninja ]]; then
   CC=clang-14 CXX=clang++-14 cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHSB_SANITIZE=ON
 fi
-cmake --build build-sanitize -j "${JOBS:-2}" --target hsb field_tests renderer_tests golden_tests scene_fuzzer data_fuzzer
+cmake --build build-sanitize -j "${JOBS:-2}" --target hsb base_tests field_tests renderer_tests golden_tests scene_fuzzer data_fuzzer
 # The unit, golden and fuzz tests, and each instruction set's packet and
 # golden tests (hsb is built for them to ask which sets the processor has);
 # the other command-line and smoke tests run in the main build. Leaks in
