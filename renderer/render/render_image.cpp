@@ -6,7 +6,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
@@ -128,14 +127,25 @@ void trace_rows(const RayScene& scene, const Camera& camera, const ShadingSpec& 
 
 // Adds w times a sample's colour and alpha (side by side in CameraSample)
 // to `sum`: two lanes of doubles each, in SSE2, which every x86-64 has.
-// Each lane does what the scalar sum did (a product, then a sum), so the
-// bits are the same; the gather takes a third of the instructions.
+// Each lane does what a scalar sum does (a product, then a sum), so the
+// bits are those of summing the four one by one.
 inline void add_weighted(const CameraSample& s, double w, __m128d sum[2]) {
   static_assert(offsetof(CameraSample, alpha) == offsetof(CameraSample, color) + 3 * sizeof(float));
   const __m128 v = _mm_loadu_ps(s.color.data());  // R, G, B, then alpha
   const __m128d weight = _mm_set1_pd(w);
   sum[0] = _mm_add_pd(sum[0], _mm_mul_pd(weight, _mm_cvtps_pd(v)));
   sum[1] = _mm_add_pd(sum[1], _mm_mul_pd(weight, _mm_cvtps_pd(_mm_movehl_ps(v, v))));
+}
+
+// A pixel's colour and alpha from the weighted sums of its samples and
+// the sum of the weights. The filter's side lobes are negative: colour
+// and coverage are kept in range.
+inline void store_colour(const __m128d sum[2], double weight, float* color, float* alpha) {
+  double rgba[4];
+  _mm_storeu_pd(rgba, sum[0]);
+  _mm_storeu_pd(rgba + 2, sum[1]);
+  for (int c = 0; c < 3; ++c) color[c] = float(std::max(0.0, rgba[c] / weight));
+  *alpha = float(std::clamp(rgba[3] / weight, 0.0, 1.0));
 }
 
 // A row of colour and alpha from one sample a pixel, at its centre, the
@@ -180,11 +190,7 @@ void gather_centred_row(int y, const RenderSettings& settings, SampleRows& rows,
         weight += list[i].w;
       }
     }
-    double sum[4];
-    _mm_storeu_pd(sum, lanes[0]);
-    _mm_storeu_pd(sum + 2, lanes[1]);
-    for (int c = 0; c < 3; ++c) out_color[3 * x + c] = float(std::max(0.0, sum[c] / weight));
-    out_alpha[x] = float(std::clamp(sum[3] / weight, 0.0, 1.0));
+    store_colour(lanes, weight, out_color + 3 * x, out_alpha + x);
   }
 }
 
@@ -231,12 +237,7 @@ void gather_row(int y, const RenderSettings& settings, int per_pixel, SampleRows
         }
       }
     }
-    double sum[4];
-    _mm_storeu_pd(sum, lanes[0]);
-    _mm_storeu_pd(sum + 2, lanes[1]);
-    // The filter's side lobes are negative: keep colour and coverage in range.
-    for (int c = 0; c < 3; ++c) out_color[3 * x + c] = float(std::max(0.0, sum[c] / weight));
-    out_alpha[x] = float(std::clamp(sum[3] / weight, 0.0, 1.0));
+    store_colour(lanes, weight, out_color + 3 * x, out_alpha + x);
     if (film.has(Plane::normal) && hit_weight > 0.0) {
       const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
       float* n = film.at(Plane::normal, x, y);
