@@ -58,14 +58,25 @@ double superquadric_gauge(const ShapeParams& s, const Vec3& q, Vec3* gradient) {
   return finish_lane(lanes, 0, s, q, gradient);
 }
 
-// The gauges N of `count` glyphs (`round[i]` at q[i]), kGaugeLanes at a time.
-void gauge_list(const ShapeParams* const* round, const Vec3* q, int count, double* n) {
+// The gauges of `count` samples, kGaugeLanes at a time: use(i, N, ∇N) for
+// sample i, with N and ∇N at σ q_s (the glyph's own frame).
+template <class Use>
+void gauge_batches(const ShapeSample* samples, int count, Use&& use) {
+  GaugeLanes lanes;
+  Vec3 q[kGaugeLanes];
   for (int first = 0; first < count; first += kGaugeLanes) {
-    const int used = std::min(kGaugeLanes, count - first);
-    GaugeLanes lanes;
-    for (int i = 0; i < used; ++i) fill_lane(lanes, i, *round[first + i], q[first + i]);
-    superquadric_gauges(lanes, used);
-    for (int i = 0; i < used; ++i) n[first + i] = lanes.n[i];
+    const int n = std::min(kGaugeLanes, count - first);
+    for (int i = 0; i < n; ++i) {
+      const ShapeSample& sample = samples[first + i];
+      q[i] = double(sample.params->bound_scale) * sample.q_s;
+      fill_lane(lanes, i, *sample.params, q[i]);
+    }
+    superquadric_gauges(lanes, n);
+    for (int i = 0; i < n; ++i) {
+      Vec3 dn;
+      const double gauge = finish_lane(lanes, i, *samples[first + i].params, q[i], &dn);
+      use(first + i, gauge, dn);
+    }
   }
 }
 
@@ -78,7 +89,7 @@ void gauge_list(const ShapeParams* const* round, const Vec3* q, int count, doubl
 // so the bound holds to float precision. Glyphs are searched side by side
 // (each search is the same as alone), so the gauge's lanes are full: a
 // glyph alone would fill one of eight.
-void find_bound_scales(ShapeParams* shapes, int count) {
+void find_bound_scales(ShapeParams* const* shapes, int count) {
   constexpr int kSamples = 64, kGroup = kGaugeLanes / 2, kRefinements = 40;
   const double step = 0.5 * M_PI / kSamples;
   static const auto unit = [step] {  // cos θ and sin θ of the samples, for every glyph
@@ -89,23 +100,22 @@ void find_bound_scales(ShapeParams* shapes, int count) {
   const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
   for (int first = 0; first < count; first += kGroup) {
     const int m = std::min(kGroup, count - first);
+    // The glyphs round about z, σ = 1: their points are in their own frame.
     ShapeParams round[kGroup];
-    const ShapeParams* pointers[kGroup * (kSamples + 1)];
     double c[kGroup];
-    Vec3 q[kGroup * (kSamples + 1)];
+    ShapeSample samples[kGroup * (kSamples + 1)];
     double n[kGroup * (kSamples + 1)];
+    const auto gauges = [&](int used) { gauge_batches(samples, used, [&](int i, double gauge, const Vec3&) { n[i] = gauge; }); };
     for (int g = 0; g < m; ++g) {
-      const ShapeParams& s = shapes[first + g];
+      const ShapeParams& s = *shapes[first + g];
       const double p = 2.0 / s.alpha;
       c[g] = std::pow(2.0, 1.0 / p - 0.5);
       round[g].alpha = s.alpha, round[g].beta = s.beta, round[g].axis = 2;
-      for (int i = 0; i <= kSamples; ++i) {
-        const int k = g * (kSamples + 1) + i;
-        pointers[k] = &round[g];
-        q[k] = Vec3(c[g] * unit[std::size_t(i)].x(), 0.0, unit[std::size_t(i)].z());
-      }
+      for (int i = 0; i <= kSamples; ++i)
+        samples[g * (kSamples + 1) + i] = {&round[g], Vec3(c[g] * unit[std::size_t(i)].x(), 0.0, unit[std::size_t(i)].z()),
+                                           Vec3::Zero()};
     }
-    gauge_list(pointers, q, m * (kSamples + 1), n);
+    gauges(m * (kSamples + 1));
     double least[kGroup], lo[kGroup], hi[kGroup];
     for (int g = 0; g < m; ++g) {
       const double* ng = n + g * (kSamples + 1);
@@ -119,19 +129,17 @@ void find_bound_scales(ShapeParams* shapes, int count) {
       double ab[2 * kGroup];
       for (int g = 0; g < m; ++g) {
         ab[2 * g] = hi[g] - golden * (hi[g] - lo[g]), ab[2 * g + 1] = lo[g] + golden * (hi[g] - lo[g]);
-        for (int j = 0; j < 2; ++j) {
-          pointers[2 * g + j] = &round[g];
-          q[2 * g + j] = Vec3(c[g] * std::cos(ab[2 * g + j]), 0.0, std::sin(ab[2 * g + j]));
-        }
+        for (int j = 0; j < 2; ++j)
+          samples[2 * g + j] = {&round[g], Vec3(c[g] * std::cos(ab[2 * g + j]), 0.0, std::sin(ab[2 * g + j])), Vec3::Zero()};
       }
-      gauge_list(pointers, q, 2 * m, n);
+      gauges(2 * m);
       for (int g = 0; g < m; ++g) {
         least[g] = std::min({least[g], n[2 * g], n[2 * g + 1]});
         if (n[2 * g] < n[2 * g + 1]) hi[g] = ab[2 * g + 1];
         else lo[g] = ab[2 * g];
       }
     }
-    for (int g = 0; g < m; ++g) shapes[first + g].bound_scale = float((1.0 + 1e-6) / least[g]);
+    for (int g = 0; g < m; ++g) shapes[first + g]->bound_scale = float((1.0 + 1e-6) / least[g]);
   }
 }
 
@@ -179,28 +187,6 @@ double shape_g(GlyphShape shape, const ShapeParams& params, const Vec3& q_s) {
   if (shape == GlyphShape::ellipsoid) return q_s.squaredNorm();
   const double n = superquadric_gauge(params, double(params.bound_scale) * q_s, nullptr);
   return n * n;
-}
-
-// The gauges of `count` samples, kGaugeLanes at a time: use(i, N, ∇N) for
-// sample i, with N and ∇N at σ q_s (the glyph's own frame).
-template <class Use>
-void gauge_batches(const ShapeSample* samples, int count, Use&& use) {
-  GaugeLanes lanes;
-  Vec3 q[kGaugeLanes];
-  for (int first = 0; first < count; first += kGaugeLanes) {
-    const int n = std::min(kGaugeLanes, count - first);
-    for (int i = 0; i < n; ++i) {
-      const ShapeSample& sample = samples[first + i];
-      q[i] = double(sample.params->bound_scale) * sample.q_s;
-      fill_lane(lanes, i, *sample.params, q[i]);
-    }
-    superquadric_gauges(lanes, n);
-    for (int i = 0; i < n; ++i) {
-      Vec3 dn;
-      const double gauge = finish_lane(lanes, i, *samples[first + i].params, q[i], &dn);
-      use(first + i, gauge, dn);
-    }
-  }
 }
 
 void shape_g_gradients(GlyphShape shape, const ShapeSample* samples, int count, double* g, Vec3* gradient) {
@@ -290,7 +276,8 @@ ShapeParams signed_params(const Vec3& radii, const Vec3& eigenvalues, double sha
 ShapeParams superquadric_params(const Vec3& radii, double sharpness) {
   if (!(radii.sum() > 0.0)) return ShapeParams{};
   ShapeParams s = superquadric_exponents(radii, sharpness);
-  find_bound_scales(&s, 1);
+  ShapeParams* const one = &s;
+  find_bound_scales(&one, 1);
   return s;
 }
 
@@ -307,10 +294,7 @@ std::vector<ShapeParams> shape_params(GlyphShape shape, const std::vector<Vec3>&
       if (shape == GlyphShape::signed_superquadric) add_points(shapes[i], eigenvalues[i], sign);
       if (sized) searched.push_back(&shapes[i]);
     }
-    std::vector<ShapeParams> batch;
-    for (ShapeParams* s : searched) batch.push_back(*s);
-    find_bound_scales(batch.data(), int(batch.size()));
-    for (std::size_t k = 0; k < searched.size(); ++k) searched[k]->bound_scale = batch[k].bound_scale;
+    find_bound_scales(searched.data(), int(searched.size()));
   });
   return shapes;
 }
