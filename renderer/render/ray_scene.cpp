@@ -67,12 +67,7 @@ RayScene::RayScene(const EmbreeDevice& device, const BlobField& field, const Tra
   RTCBounds bounds;
   rtcGetSceneBounds(scene_, &bounds);
   reach_ = {Vec3(bounds.lower_x, bounds.lower_y, bounds.lower_z), Vec3(bounds.upper_x, bounds.upper_y, bounds.upper_z)};
-  if (shell_) {
-    for (const Vec3& v : context.shell->vertices) {
-      reach_.lo = reach_.lo.cwiseMin(v);
-      reach_.hi = reach_.hi.cwiseMax(v);
-    }
-  }
+  if (shell_) reach_.extend(bounding_box(context.shell->vertices));
   if (rtcGetDeviceError(device.get()) != RTC_ERROR_NONE)
     throw std::runtime_error("Embree failed to build the scene");
 }
