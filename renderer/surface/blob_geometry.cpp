@@ -182,13 +182,14 @@ void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
   const unsigned n = args->N;
   RTCRayN* embree_rays = RTCRayHitN_RayN(args->rayhit, n);
   const BlobSource& source = query->field->sources[args->primID];
+  const double box = source_box(*query->field, args->primID);
   const RayLanes& r = query->rays;
   if (n == 1) {  // a lone ray (rtcIntersect1): no lanes to gather
     ++query->candidates;
     const unsigned k = checked_ray_index(embree_rays, 1, 0);
     RaySpan span;
     if (ray_span(source, args->primID, query->rank[args->primID], r.origin(int(k)), r.direction(int(k)), r.tmin[k],
-                 r.tmax[k], span)) {
+                 r.tmax[k], span, box)) {
       query->tracers[k].spans.push_back(span);
       prune_beyond_entry(*query, span, k, embree_rays, 1, 0);
     }
@@ -216,7 +217,7 @@ void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
   }
   SpanLanes spans;
   if (in_place) {
-    const unsigned entered = (ray_spans(source, r, first, int(n), spans) >> first) & valid;
+    const unsigned entered = (ray_spans(source, box, r, first, int(n), spans) >> first) & valid;
     for (unsigned rest = entered; rest; rest &= rest - 1) {
       const unsigned i = unsigned(__builtin_ctz(rest)), k = unsigned(first) + i;
       query->tracers[k].spans.push_back(spans.span(int(k), args->primID, query->rank[args->primID]));
@@ -229,7 +230,7 @@ void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
     const unsigned k = valid & (1u << i) ? index[i] : index[lowest];  // idle lanes repeat a real ray
     gathered.set(int(i), r.origin(int(k)), r.direction(int(k)), r.tmin[k], r.tmax[k]);
   }
-  const unsigned entered = ray_spans(source, gathered, 0, int(n), spans) & valid;
+  const unsigned entered = ray_spans(source, box, gathered, 0, int(n), spans) & valid;
   for (unsigned rest = entered; rest; rest &= rest - 1) {
     const unsigned i = unsigned(__builtin_ctz(rest));
     query->tracers[index[i]].spans.push_back(spans.span(int(i), args->primID, query->rank[args->primID]));

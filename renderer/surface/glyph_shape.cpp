@@ -251,22 +251,6 @@ double shape_entry(GlyphShape shape, const ShapeParams& params, const Vec3& q0, 
   return -1.0;  // not settled: no bound from this source, which is always safe
 }
 
-bool clip_to_shape_box(const ShapeParams& params, const Vec3& q0, const Vec3& v, double& t0, double& t1) {
-  const double half = 1.0 / double(params.bound_scale);
-  for (int k = 0; k < 3; ++k) {
-    if (v[k] == 0.0) {
-      if (std::fabs(q0[k]) > half) return false;
-      continue;
-    }
-    // The slab |q_k| ≤ half: centred where q_k = 0, half / |v_k| wide on
-    // either side (one division an axis, not two).
-    const double inverse = 1.0 / v[k], centre = -q0[k] * inverse, reach = half * std::fabs(inverse);
-    t0 = std::max(t0, centre - reach);
-    t1 = std::min(t1, centre + reach);
-  }
-  return t0 <= t1;
-}
-
 ShapeParams signed_params(const Vec3& radii, const Vec3& eigenvalues, double sharpness, SignConvention sign) {
   ShapeParams s = superquadric_params(radii, sharpness);
   add_points(s, eigenvalues, sign);

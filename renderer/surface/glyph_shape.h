@@ -8,8 +8,11 @@
 // each shape guarantees g_e ≤ g, so K(g) ≤ K(g_e). The spans, the span BVH's
 // boxes, the peaks and the running polynomial bound of F (field_bound.h)
 // are all computed from g_e: they are upper bounds of the influence for
-// every shape, and exact for the ellipsoid. What must be exact (F itself,
-// its gradient, the slope bound of sphere tracing) asks the shape here.
+// every shape, and exact for the ellipsoid; a shape's spans are then
+// narrowed to the box |q_s,k| ≤ 1/σ that holds its support (ray_span.h),
+// and its boxes are that box's where tighter (influence_bounds). What must
+// be exact (F itself, its gradient, the slope bound of sphere tracing)
+// asks the shape here.
 //
 //  - ellipsoid: u = |q| with q = W (x − c), W = diag(1/(R r_k)) Vᵀ (paper
 //    eq. 11). W_s = W, g = g_e: quadratic along a ray, so F is a polynomial
@@ -114,12 +117,6 @@ void shape_g_gradients(GlyphShape shape, const ShapeSample* samples, int count, 
 // still outside, the ray has passed its closest approach and never enters.
 double shape_entry(GlyphShape shape, const ShapeParams& params, const Vec3& q0, const Vec3& v, double u_level,
                    double lo, double hi);
-
-// Narrows [t0, t1] to where the ray q0 + t v (stored frame) is inside the
-// box that holds the shape's support u ≤ 1: for the superquadric the cube
-// |q_k| ≤ 1 of its own frame, |q_s,k| ≤ 1/σ, much tighter than the bounding
-// ellipsoid for sharp glyphs. False when nothing is left.
-bool clip_to_shape_box(const ShapeParams& params, const Vec3& q0, const Vec3& v, double& t0, double& t1);
 
 // Kindlmann's superquadric for a glyph of radii r (in W's row order):
 // Westin's measures of the radii sorted by size (westin_measures), c_l = (ρ1 − ρ2)/Σρ and

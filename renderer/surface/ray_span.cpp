@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 namespace hsb {
 
@@ -15,6 +16,7 @@ namespace {
 // ellipsoids. Branch-free, so that the loops below vectorise, over rays or
 // over sources.
 struct ScaledRay {
+  double wp[3], wd[3];  // W (o − c) and W d: the ray q(t) = wp + t wd in the stored frame
   double a;        // |W d|²
   double half_b;   // (W d)·(W (o − c))
   double a_g_min;  // a · g at the closest approach
@@ -36,7 +38,11 @@ inline ScaledRay scaled_ray(const double (&w)[9], double cx, double cy, double c
   // cross product keeps it accurate when the camera is far from a small
   // glyph, where |Wp|² − half_b²/a would cancel catastrophically.
   const double x0 = wp1 * wd2 - wp2 * wd1, x1 = wp2 * wd0 - wp0 * wd2, x2 = wp0 * wd1 - wp1 * wd0;
-  return {wd0 * wd0 + wd1 * wd1 + wd2 * wd2, wd0 * wp0 + wd1 * wp1 + wd2 * wp2, x0 * x0 + x1 * x1 + x2 * x2};
+  return {{wp0, wp1, wp2},
+          {wd0, wd1, wd2},
+          wd0 * wd0 + wd1 * wd1 + wd2 * wd2,
+          wd0 * wp0 + wd1 * wp1 + wd2 * wp2,
+          x0 * x0 + x1 * x1 + x2 * x2};
 }
 
 struct LaneSpan {
@@ -57,9 +63,32 @@ inline LaneSpan finish_span(const ScaledRay& r, double tmin, double tmax) {
   return {t0, t1, r.a, tc, g_min, bool(r.line_enters() & (g_min < 1.0) & (t0 < t1))};
 }
 
-inline LaneSpan span_on_lane(const double (&w)[9], double cx, double cy, double cz, double ox, double oy,
+// A third stage for shapes with a box (ray_span.h): the span narrowed to
+// where q(t) is inside |q_k| ≤ box on every axis k. Each slab is centred
+// where q_k = 0 and box/|wd_k| wide on either side (one division an axis,
+// not two); a ray parallel to a slab is inside it everywhere or nowhere.
+// Branch-free, as the stages before.
+inline void clip_to_box(const ScaledRay& r, double box, LaneSpan& span) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  bool outside = false;
+  for (int k = 0; k < 3; ++k) {
+    const double inverse = 1.0 / r.wd[k], centre = -r.wp[k] * inverse, reach = box * std::fabs(inverse);
+    const bool parallel = r.wd[k] == 0.0;
+    const double lo = parallel ? -inf : centre - reach, hi = parallel ? inf : centre + reach;
+    outside |= parallel & (std::fabs(r.wp[k]) > box);
+    span.t0 = span.t0 < lo ? lo : span.t0;
+    span.t1 = hi < span.t1 ? hi : span.t1;
+  }
+  span.enters = span.enters & !outside & (span.t0 <= span.t1);
+}
+
+template <bool Boxed>
+inline LaneSpan span_on_lane(const double (&w)[9], double box, double cx, double cy, double cz, double ox, double oy,
                              double oz, double dx, double dy, double dz, double tmin, double tmax) {
-  return finish_span(scaled_ray(w, cx, cy, cz, ox, oy, oz, dx, dy, dz), tmin, tmax);
+  const ScaledRay r = scaled_ray(w, cx, cy, cz, ox, oy, oz, dx, dy, dz);
+  LaneSpan span = finish_span(r, tmin, tmax);
+  if (Boxed) clip_to_box(r, box, span);
+  return span;
 }
 
 inline void store(const LaneSpan& span, SpanLanes& spans, int i) {
@@ -74,15 +103,17 @@ inline void store(const LaneSpan& span, SpanLanes& spans, int i) {
 // SIMD at whatever width the instruction set of the function they are
 // inlined into allows (below): the same operations in the same order on
 // every lane, so every variant gives the same bits.
-__attribute__((always_inline)) inline unsigned ray_spans_lanes(const BlobSource& s, const RayLanes& __restrict rays,
-                                                               int first, int count, SpanLanes& __restrict spans) {
+template <bool Boxed>
+__attribute__((always_inline)) inline unsigned ray_spans_lanes(const BlobSource& s, double box,
+                                                               const RayLanes& __restrict rays, int first, int count,
+                                                               SpanLanes& __restrict spans) {
   const double w[9] = {s.w[0], s.w[1], s.w[2], s.w[3], s.w[4], s.w[5], s.w[6], s.w[7], s.w[8]};
   const double cx = s.centre[0], cy = s.centre[1], cz = s.centre[2];
   std::int64_t inside[kMaxPacket];  // as wide as a double, so the loop keeps one vector width
   const int end = first + count;
   for (int i = first; i < end; ++i) {
-    const LaneSpan span = span_on_lane(w, cx, cy, cz, rays.ox[i], rays.oy[i], rays.oz[i], rays.dx[i], rays.dy[i],
-                                       rays.dz[i], rays.tmin[i], rays.tmax[i]);
+    const LaneSpan span = span_on_lane<Boxed>(w, box, cx, cy, cz, rays.ox[i], rays.oy[i], rays.oz[i], rays.dx[i],
+                                              rays.dy[i], rays.dz[i], rays.tmin[i], rays.tmax[i]);
     store(span, spans, i);
     inside[i] = span.enters;
   }
@@ -93,6 +124,7 @@ __attribute__((always_inline)) inline unsigned ray_spans_lanes(const BlobSource&
 
 // The same formula the other way round: one ray against a packet of
 // sources (a bundle of short rays tested against the sources near them).
+template <bool Boxed>
 __attribute__((always_inline)) inline unsigned source_spans_lanes(const SourceLanes& __restrict sources, const Vec3& o,
                                                                   const Vec3& d, double tmin, double tmax,
                                                                   SpanLanes& __restrict spans) {
@@ -101,8 +133,8 @@ __attribute__((always_inline)) inline unsigned source_spans_lanes(const SourceLa
   for (int i = 0; i < kMaxPacket; ++i) {  // all lanes: unused ones hold a source that never matches
     const double w[9] = {sources.w[0][i], sources.w[1][i], sources.w[2][i], sources.w[3][i], sources.w[4][i],
                          sources.w[5][i], sources.w[6][i], sources.w[7][i], sources.w[8][i]};
-    const LaneSpan span = span_on_lane(w, sources.c[0][i], sources.c[1][i], sources.c[2][i], ox, oy, oz, dx, dy, dz,
-                                       tmin, tmax);
+    const LaneSpan span = span_on_lane<Boxed>(w, sources.box[i], sources.c[0][i], sources.c[1][i], sources.c[2][i],
+                                              ox, oy, oz, dx, dy, dz, tmin, tmax);
     store(span, spans, i);
     inside[i] = span.enters;
   }
@@ -111,26 +143,31 @@ __attribute__((always_inline)) inline unsigned source_spans_lanes(const SourceLa
   return mask & ((1u << sources.count) - 1u);
 }
 
-// One variant of both loops per instruction set (isa_variants.h).
-#define HSB_SPAN_KERNELS(suffix, target_isa)                                                                  \
-  __attribute__((target(target_isa))) unsigned ray_spans_##suffix(                                            \
-      const BlobSource& s, const RayLanes& __restrict rays, int first, int count, SpanLanes& __restrict spans) { \
-    return ray_spans_lanes(s, rays, first, count, spans);                                                     \
-  }                                                                                                           \
-  __attribute__((target(target_isa))) unsigned source_spans_##suffix(const SourceLanes& __restrict sources,   \
-                                                                     const Vec3& o, const Vec3& d, double tmin, \
-                                                                     double tmax, SpanLanes& __restrict spans) { \
-    return source_spans_lanes(sources, o, d, tmin, tmax, spans);                                              \
+// One variant of each loop, with and without the box, per instruction set
+// (isa_variants.h).
+#define HSB_SPAN_KERNELS(suffix, target_isa)                                                                      \
+  template <bool Boxed>                                                                                           \
+  __attribute__((target(target_isa))) unsigned ray_spans_##suffix(const BlobSource& s, double box,               \
+                                                                  const RayLanes& __restrict rays, int first,    \
+                                                                  int count, SpanLanes& __restrict spans) {      \
+    return ray_spans_lanes<Boxed>(s, box, rays, first, count, spans);                                             \
+  }                                                                                                               \
+  template <bool Boxed>                                                                                           \
+  __attribute__((target(target_isa))) unsigned source_spans_##suffix(const SourceLanes& __restrict sources,       \
+                                                                     const Vec3& o, const Vec3& d, double tmin,   \
+                                                                     double tmax, SpanLanes& __restrict spans) {  \
+    return source_spans_lanes<Boxed>(sources, o, d, tmin, tmax, spans);                                           \
   }
 
 HSB_FOR_EACH_ISA(HSB_SPAN_KERNELS)
 #undef HSB_SPAN_KERNELS
 
+#define HSB_KERNEL_SET(suffix) \
+  {ray_spans_##suffix<false>, ray_spans_##suffix<true>, source_spans_##suffix<false>, source_spans_##suffix<true>}
 // In InstructionSet order.
-constexpr SpanKernels kKernels[] = {
-    {ray_spans_sse2, source_spans_sse2}, {ray_spans_sse42, source_spans_sse42}, {ray_spans_avx, source_spans_avx},
-    {ray_spans_avx2, source_spans_avx2}, {ray_spans_avx512, source_spans_avx512},
-};
+constexpr SpanKernels kKernels[] = {HSB_KERNEL_SET(sse2), HSB_KERNEL_SET(sse42), HSB_KERNEL_SET(avx),
+                                    HSB_KERNEL_SET(avx2), HSB_KERNEL_SET(avx512)};
+#undef HSB_KERNEL_SET
 
 }  // namespace
 
@@ -138,23 +175,26 @@ const SpanKernels& span_kernels(InstructionSet isa) { return kKernels[std::size_
 
 // The span BVH's callback spends most of a render here, one source against
 // a packet of rays.
-unsigned ray_spans(const BlobSource& s, const RayLanes& rays, int first, int count, SpanLanes& spans) {
-  return span_kernels(active_isa()).ray_spans(s, rays, first, count, spans);
+unsigned ray_spans(const BlobSource& s, double box, const RayLanes& rays, int first, int count, SpanLanes& spans) {
+  const SpanKernels& kernels = span_kernels(active_isa());
+  return (box == kNoBox ? kernels.ray_spans : kernels.ray_spans_boxed)(s, box, rays, first, count, spans);
 }
 
 unsigned source_spans(const SourceLanes& sources, const Vec3& o, const Vec3& d, double tmin, double tmax,
                       SpanLanes& spans) {
-  return span_kernels(active_isa()).source_spans(sources, o, d, tmin, tmax, spans);
+  const SpanKernels& kernels = span_kernels(active_isa());
+  return (sources.boxed ? kernels.source_spans_boxed : kernels.source_spans)(sources, o, d, tmin, tmax, spans);
 }
 
 bool ray_span(const BlobSource& s, std::uint32_t index, std::uint32_t rank, const Vec3& o, const Vec3& d, double tmin,
-              double tmax, RaySpan& span) {
+              double tmax, RaySpan& span, double box) {
   // Scalar: a lone ray would pay more for the packet version's dispatch and
   // lane set-up than it saves.
   const double w[9] = {s.w[0], s.w[1], s.w[2], s.w[3], s.w[4], s.w[5], s.w[6], s.w[7], s.w[8]};
   const ScaledRay r = scaled_ray(w, s.centre[0], s.centre[1], s.centre[2], o.x(), o.y(), o.z(), d.x(), d.y(), d.z());
   if (!r.line_enters()) return false;
-  const LaneSpan lane = finish_span(r, tmin, tmax);
+  LaneSpan lane = finish_span(r, tmin, tmax);
+  if (lane.enters && box != kNoBox) clip_to_box(r, box, lane);
   if (!lane.enters) return false;
   span = RaySpan{lane.t0, lane.t1, lane.a, lane.t_c, lane.g_min, index, rank};
   return true;

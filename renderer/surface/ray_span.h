@@ -4,6 +4,7 @@
 // rays at once, because that is how the span BVH asks.
 
 #include <cstdint>
+#include <limits>
 
 #include "base/vec3.h"
 #include "renderer/surface/blob_field.h"
@@ -47,6 +48,20 @@ struct RayLanes {
   Vec3 direction(int lane) const { return {dx[lane], dy[lane], dz[lane]}; }
 };
 
+// A shape other than the ellipsoid has its support inside the box
+// |q_k| ≤ box (each k) of the stored frame, box = 1/σ (glyph_shape.h), much
+// tighter than the bounding ellipsoid for a sharp glyph. The span
+// functions below narrow each span to that box when given one: a ray
+// through the ellipsoid's corners past the box collects nothing, which
+// for sharp glyphs is a third to a half of what the ellipsoids gather.
+// kNoBox: the support is the ellipsoid's own.
+constexpr double kNoBox = std::numeric_limits<double>::infinity();
+
+// Source i's box: 1/σ for a shape other than the ellipsoid, else kNoBox.
+inline double source_box(const BlobField& field, std::size_t i) {
+  return shape_is_quadric(field.shape) ? kNoBox : 1.0 / double(field.shapes[i].bound_scale);
+}
+
 // The spans of one source on lanes [first, first + count) of `rays`, in the
 // same lanes of `spans` (fields t0, t1, a, t_c, g_min; `source` is left to
 // the caller). Returns a bit mask of the lanes whose ray enters the
@@ -59,16 +74,20 @@ struct SpanLanes {
     return RaySpan{t0[i], t1[i], a[i], t_c[i], g_min[i], source, rank};
   }
 };
-unsigned ray_spans(const BlobSource& s, const RayLanes& rays, int first, int count, SpanLanes& spans);
+// `box`: the source's, or kNoBox.
+unsigned ray_spans(const BlobSource& s, double box, const RayLanes& rays, int first, int count, SpanLanes& spans);
 
-// Up to kMaxPacket sources as structure of arrays, W's rows and the centres
-// in double: one ray is tested against all of them in SIMD lanes.
+// Up to kMaxPacket sources as structure of arrays, W's rows, the centres
+// and the boxes in double: one ray is tested against all of them in SIMD
+// lanes.
 struct SourceLanes {
   alignas(64) double w[9][kMaxPacket];
   alignas(64) double c[3][kMaxPacket];
+  alignas(64) double box[kMaxPacket];  // read when `boxed`
   std::uint32_t index[kMaxPacket];
   std::uint32_t rank[kMaxPacket];
   int count = 0;  // lanes [0, count) hold sources
+  bool boxed = false;  // whether the sources' spans are narrowed to their boxes
 };
 
 // The spans of the ray o + t d, t ∈ [tmin, tmax], on the sources of
@@ -77,19 +96,23 @@ struct SourceLanes {
 unsigned source_spans(const SourceLanes& sources, const Vec3& o, const Vec3& d, double tmin, double tmax,
                       SpanLanes& spans);
 
-// The two lane loops above compiled for one instruction set; ray_spans()
-// and source_spans() call those of active_isa(). Every variant gives the
-// same bits (the tests hold them to it).
+// The two lane loops above compiled for one instruction set, without and
+// with boxes; ray_spans() and source_spans() call those of active_isa().
+// Every variant gives the same bits (the tests hold them to it).
 struct SpanKernels {
-  unsigned (*ray_spans)(const BlobSource& s, const RayLanes& rays, int first, int count, SpanLanes& spans);
-  unsigned (*source_spans)(const SourceLanes& sources, const Vec3& o, const Vec3& d, double tmin, double tmax,
-                           SpanLanes& spans);
+  using RaySpans = unsigned (*)(const BlobSource& s, double box, const RayLanes& rays, int first, int count,
+                                SpanLanes& spans);
+  using SourceSpans = unsigned (*)(const SourceLanes& sources, const Vec3& o, const Vec3& d, double tmin,
+                                   double tmax, SpanLanes& spans);
+  RaySpans ray_spans, ray_spans_boxed;
+  SourceSpans source_spans, source_spans_boxed;
 };
 const SpanKernels& span_kernels(InstructionSet isa);
 
 // The same for one ray: fills `span` and returns true when the ray enters
-// the support of `s` (source number `index`, spatial rank `rank`).
+// the support of `s` (source number `index`, spatial rank `rank`, its box
+// `box`).
 bool ray_span(const BlobSource& s, std::uint32_t index, std::uint32_t rank, const Vec3& o, const Vec3& d, double tmin,
-              double tmax, RaySpan& span);
+              double tmax, RaySpan& span, double box = kNoBox);
 
 }  // namespace hsb

@@ -31,20 +31,16 @@ constexpr double kSliver = 1.0 / 32.0;
 }  // namespace
 
 void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, const Vec3& direction) {
+  // (The spans come narrowed to the shapes' boxes, ray_span.h.)
+  const std::size_t kept = spans.size();
   shape_rays_.clear();
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < spans.size(); ++i) {
-    RaySpan s = spans[i];
+  for (const RaySpan& s : spans) {
     const BlobSource& source = field.sources[s.source];
     const Mat3 w = shape_matrix(source);
     const ShapeParams& shape = shape_params(field, s.source);
-    const ShapeRay r{scaled_offset(source, w, origin), w * direction,
-                     std::sqrt(s.a) * double(shape.bound_scale) * double(shape.lipschitz)};
-    if (!clip_to_shape_box(shape, r.q0, r.v, s.t0, s.t1)) continue;
-    spans[kept++] = s;
-    shape_rays_.push_back(r);
+    shape_rays_.push_back({scaled_offset(source, w, origin), w * direction,
+                           std::sqrt(s.a) * double(shape.bound_scale) * double(shape.lipschitz)});
   }
-  spans.resize(kept);
   // In the order the ray enters them, ties in spatial rank order: every
   // sum over the spans is then the same to the bit whatever order the BVH
   // handed them over in, and a sum up to some t stops at the first span

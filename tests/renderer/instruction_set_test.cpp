@@ -60,13 +60,17 @@ TEST(SpanKernels, EveryInstructionSetGivesTheScalarBits) {
       rays.set(i, o, d, i % 3 == 0 ? 0.0 : distance * 0.9, i % 4 == 0 ? INFINITY : distance * 1.1);
     }
     const int first = trial % 2 ? 0 : 8, count = trial % 2 ? kMaxPacket : 8;
+    // Without a box, and with one that cuts the ellipsoid's support.
+    const double box = trial % 3 ? kNoBox : 1.0 / 1.5;
     for (InstructionSet isa : supported_isas()) {
       SpanLanes spans;
-      const unsigned mask = span_kernels(isa).ray_spans(source, rays, first, count, spans);
+      const SpanKernels& kernels = span_kernels(isa);
+      const unsigned mask =
+          (box == kNoBox ? kernels.ray_spans : kernels.ray_spans_boxed)(source, box, rays, first, count, spans);
       for (int i = first; i < first + count; ++i) {
         RaySpan alone;
         const bool enters = ray_span(source, 7, 0, Vec3(rays.ox[i], rays.oy[i], rays.oz[i]),
-                                     Vec3(rays.dx[i], rays.dy[i], rays.dz[i]), rays.tmin[i], rays.tmax[i], alone);
+                                     Vec3(rays.dx[i], rays.dy[i], rays.dz[i]), rays.tmin[i], rays.tmax[i], alone, box);
         ASSERT_EQ(bool(mask & (1u << i)), enters) << isa_name(isa) << " lane " << i;
         if (!enters) continue;
         ++entered;
@@ -91,6 +95,8 @@ TEST(SpanKernels, EveryInstructionSetGivesTheScalarBits) {
       listed.push_back(s);
     }
     lanes.count = int(listed.size());
+    lanes.boxed = box != kNoBox;
+    for (int k = 0; k < kMaxPacket; ++k) lanes.box[k] = box;
     for (int k = lanes.count; k < kMaxPacket; ++k) {  // unused lanes: a source no ray meets
       for (int r = 0; r < 9; ++r) lanes.w[r][k] = 0.0;
       for (int c = 0; c < 3; ++c) lanes.c[c][k] = 0.0;
@@ -98,10 +104,12 @@ TEST(SpanKernels, EveryInstructionSetGivesTheScalarBits) {
     const Vec3 o(rays.ox[0], rays.oy[0], rays.oz[0]), d = (Vec3(unit(rng), unit(rng), unit(rng)) * 0.3 - o).normalized();
     for (InstructionSet isa : supported_isas()) {
       SpanLanes spans;
-      const unsigned mask = span_kernels(isa).source_spans(lanes, o, d, 0.0, INFINITY, spans);
+      const SpanKernels& kernels = span_kernels(isa);
+      const unsigned mask =
+          (lanes.boxed ? kernels.source_spans_boxed : kernels.source_spans)(lanes, o, d, 0.0, INFINITY, spans);
       for (int k = 0; k < lanes.count; ++k) {
         RaySpan alone;
-        const bool enters = ray_span(listed[std::size_t(k)], 0, 0, o, d, 0.0, INFINITY, alone);
+        const bool enters = ray_span(listed[std::size_t(k)], 0, 0, o, d, 0.0, INFINITY, alone, box);
         ASSERT_EQ(bool(mask & (1u << k)), enters) << isa_name(isa) << " source " << k;
         if (!enters) continue;
         ++entered;
@@ -112,6 +120,51 @@ TEST(SpanKernels, EveryInstructionSetGivesTheScalarBits) {
     }
   }
   EXPECT_GT(entered, 2000);  // the rays did meet the sources
+}
+
+// A span narrowed to its source's box holds exactly the ray's points inside
+// both the ellipsoid's support and the box: its ends are on their surfaces,
+// and points of the ellipsoid's span beyond them are outside the box. Rays
+// parallel to the box's faces (the sources' axes along the world's) are
+// inside a slab everywhere or nowhere.
+TEST(SpanKernels, ABoxNarrowsTheSpanToTheBox) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::normal_distribution<double> normal;
+  const double box = 1.0 / std::sqrt(3.0);  // the corners of the box touch the ellipsoid
+  int narrowed = 0, dropped = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const bool aligned = trial % 4 == 0;
+    const Eigen::Quaterniond q(normal(rng), normal(rng), normal(rng), normal(rng));
+    const Mat3 axes = aligned ? Mat3::Identity() : Mat3(q.normalized().toRotationMatrix());
+    const BlobSource source = make_blob_source(Vec3::Zero(), axes, Vec3(0.5, 0.3, 0.2), 1.0, {1, 1, 1});
+    const Vec3 o = 3.0 * Vec3(normal(rng), normal(rng), normal(rng)).normalized();
+    Vec3 d = (0.4 * Vec3(unit(rng), unit(rng), unit(rng)) - o).normalized();
+    if (aligned) d = Vec3(0.0, 0.0, 0.0), d[trial % 3] = o[trial % 3] > 0.0 ? -1.0 : 1.0;  // along a world axis
+    RaySpan plain, boxed;
+    if (!ray_span(source, 0, 0, o, d, 0.0, 10.0, plain)) continue;
+    const Mat3 w = shape_matrix(source);
+    const auto in_box = [&](double t, double slack) {
+      return (w * (o + t * d - Vec3::Zero())).cwiseAbs().maxCoeff() <= box * (1.0 + slack);
+    };
+    if (!ray_span(source, 0, 0, o, d, 0.0, 10.0, boxed, box)) {
+      // Nowhere inside the box: no sample of the ellipsoid's span is.
+      ++dropped;
+      for (int k = 0; k <= 64; ++k) EXPECT_FALSE(in_box(plain.t0 + (plain.t1 - plain.t0) * k / 64.0, -1e-9));
+      continue;
+    }
+    ++narrowed;
+    EXPECT_GE(boxed.t0, plain.t0);
+    EXPECT_LE(boxed.t1, plain.t1);
+    EXPECT_TRUE(in_box(boxed.t0, 1e-9) && in_box(boxed.t1, 1e-9)) << "trial " << trial;
+    for (int k = 1; k < 64; ++k) {
+      const double before = plain.t0 + (boxed.t0 - plain.t0) * k / 64.0, after = boxed.t1 + (plain.t1 - boxed.t1) * k / 64.0;
+      EXPECT_FALSE(boxed.t0 > plain.t0 && in_box(before, -1e-9)) << "trial " << trial;
+      EXPECT_FALSE(boxed.t1 < plain.t1 && in_box(after, -1e-9)) << "trial " << trial;
+    }
+  }
+  EXPECT_GT(narrowed, 500);
+  EXPECT_GT(dropped, 50);
 }
 
 }  // namespace
