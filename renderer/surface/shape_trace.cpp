@@ -190,7 +190,9 @@ double FieldRay::refine_shape(const BlobField& field, double lo, double hi, doub
   return hi;
 }
 
-SpanBoundRow FieldRay::bound_row(std::size_t i, double from) const {
+// Inlined: the proofs build tens of rows each, and the call cost as much
+// as the row.
+[[gnu::always_inline]] inline SpanBoundRow FieldRay::bound_row(std::size_t i, double from) const {
   const RaySpan& span = spans[i];
   // Not yet evaluated, u ≥ 1 at the support's edge t0 and changes at most
   // Lσ√a per unit (glyph_shape.h); convex, so above its tangent where it

@@ -5,14 +5,13 @@
 
 namespace hsb {
 
-void SpanBoundRows::push(const SpanBoundRow& r) {
-  if (rows_ == t1.size()) {
-    const std::size_t capacity = std::max<std::size_t>(64, 2 * rows_);
-    for (std::vector<double>* column : {&t1, &u0, &rate, &tau, &t_near, &t_c, &a, &g_min}) column->resize(capacity);
-  }
-  const std::size_t k = rows_++;
-  t1[k] = r.t1, u0[k] = r.u0, rate[k] = r.rate, tau[k] = r.tau;
-  t_near[k] = r.t_near, t_c[k] = r.t_c, a[k] = r.a, g_min[k] = r.g_min;
+void SpanBoundRows::grow() {
+  const std::size_t capacity = std::max<std::size_t>(64, 2 * capacity_);
+  std::vector<double> data(kColumns * capacity);
+  for (std::size_t j = 0; j < kColumns; ++j)
+    std::copy_n(data_.data() + j * capacity_, rows_, data.data() + j * capacity);
+  data_.swap(data);
+  capacity_ = capacity;
 }
 
 namespace {

@@ -34,17 +34,31 @@ inline double span_bound(const SpanBoundRow& r, double s, KernelKind kernel) {
   return kernel_value(kernel, span_bound_g(r, s));
 }
 
-// Rows side by side, a column each, for the SIMD loop. The columns only
-// grow: clear() keeps them for the next proof, and a row is written in
-// place.
-struct SpanBoundRows {
-  std::vector<double> t1, u0, rate, tau, t_near, t_c, a, g_min;
+// Rows side by side, a column each, for the SIMD loop: one buffer, column
+// j at j × capacity, so a row is written with one pointer. It only grows:
+// clear() keeps it for the next proof, and a row is written in place.
+class SpanBoundRows {
+ public:
+  static constexpr std::size_t kColumns = 8;
   void clear() { rows_ = 0; }
   std::size_t size() const { return rows_; }
-  void push(const SpanBoundRow& r);
-  SpanBoundRow row(std::size_t k) const { return {t1[k], u0[k], rate[k], tau[k], t_near[k], t_c[k], a[k], g_min[k]}; }
+  void push(const SpanBoundRow& r) {
+    if (rows_ == capacity_) grow();
+    double* p = data_.data() + rows_++;
+    const std::size_t c = capacity_;
+    p[0] = r.t1, p[c] = r.u0, p[2 * c] = r.rate, p[3 * c] = r.tau;
+    p[4 * c] = r.t_near, p[5 * c] = r.t_c, p[6 * c] = r.a, p[7 * c] = r.g_min;
+  }
+  SpanBoundRow row(std::size_t k) const {
+    const double* p = data_.data() + k;
+    const std::size_t c = capacity_;
+    return {p[0], p[c], p[2 * c], p[3 * c], p[4 * c], p[5 * c], p[6 * c], p[7 * c]};
+  }
 
  private:
+  void grow();
+  std::vector<double> data_;
+  std::size_t capacity_ = 0;
   std::size_t rows_ = 0;
 };
 

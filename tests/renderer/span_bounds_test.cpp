@@ -18,11 +18,21 @@ TEST(SpanBounds, RowsInLanesGiveEachSpanAlonesBits) {
   std::mt19937 rng(17);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   SpanBoundRows rows;
-  for (int k = 0; k < 203; ++k) {  // not a multiple of any vector width
+  std::vector<SpanBoundRow> pushed;
+  for (int k = 0; k < 203; ++k) {  // not a multiple of any vector width, and past two growths
     // Bounds from `from` ≤ 0.5, the smallest s asked.
     const double t_c = 4.0 * unit(rng), from = 0.5 * unit(rng);
-    rows.push({from + 4.0 * unit(rng), 1.5 * unit(rng), unit(rng) < 0.2 ? 0.0 : -3.0 * unit(rng), 4.0 * unit(rng),
-               std::max(t_c, from), t_c, 5.0 * unit(rng), 1.2 * unit(rng)});
+    pushed.push_back({from + 4.0 * unit(rng), 1.5 * unit(rng), unit(rng) < 0.2 ? 0.0 : -3.0 * unit(rng),
+                      4.0 * unit(rng), std::max(t_c, from), t_c, 5.0 * unit(rng), 1.2 * unit(rng)});
+    rows.push(pushed.back());
+  }
+  // Each row reads back as it was written, the columns kept apart.
+  ASSERT_EQ(rows.size(), pushed.size());
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const SpanBoundRow a = rows.row(k), b = pushed[k];
+    ASSERT_TRUE(a.t1 == b.t1 && a.u0 == b.u0 && a.rate == b.rate && a.tau == b.tau && a.t_near == b.t_near &&
+                a.t_c == b.t_c && a.a == b.a && a.g_min == b.g_min)
+        << "row " << k;
   }
   std::vector<double> out(rows.size());
   int nonzero = 0;
