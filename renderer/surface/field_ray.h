@@ -158,7 +158,11 @@ class FieldRay {
   mutable double probed_at_ = 0.0, probed_value_ = 0.0, probed_slope_ = 0.0;
   // The last probe's term of each live span (K, and dK/dt where evaluated)
   // and which of them it skipped (indices into live_ and live_terms_).
+  // (Built in place by its constructor: a braced temporary copied in was
+  // stored as two halves and read back whole, a store-forwarding stall that
+  // cost a tenth of a superquadric render.)
   struct Term {
+    Term(double k, double dk_dt) : value(k), slope(dk_dt) {}
     double value, slope;
   };
   mutable std::vector<Term> live_terms_;

@@ -102,12 +102,12 @@ double FieldRay::shape_value_at(const BlobField& field, double t, TraceStats& st
       const double k = term_bound(field, i, t, t);
       if ((has_tangent(i) && du_dt_[i] >= 0.0) || k <= kSliver * field.isovalue) {
         skipped_.push_back(std::uint32_t(live_terms_.size()));
-        live_terms_.push_back({k, 0.0});
+        live_terms_.emplace_back(k, 0.0);
         continue;
       }
     }
     evaluated_.push_back(std::uint32_t(live_terms_.size()));
-    live_terms_.push_back({0.0, 0.0});
+    live_terms_.emplace_back(0.0, 0.0);
   }
   first_unbegun_ = i;
   evaluate_terms(field, evaluated_, t, stats);
@@ -207,7 +207,8 @@ double FieldRay::refine_shape(const BlobField& field, double lo, double hi, doub
   return r;
 }
 
-double FieldRay::term_bound(const BlobField& field, std::size_t i, double from, double s) const {
+[[gnu::always_inline]] inline double FieldRay::term_bound(const BlobField& field, std::size_t i, double from,
+                                                           double s) const {
   return span_bound(bound_row(i, from), s, field.kernel);
 }
 
