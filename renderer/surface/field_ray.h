@@ -95,9 +95,9 @@ class FieldRay {
 
   // Shapes other than the ellipsoid (shape_trace.cpp). Their g is not
   // quadratic along the ray; u = √g is convex along it.
-  //  - Each span's ray in its source's stored frame (shape_rays_), the
-  //    spans narrowed to the box that holds the shape's support, dropped
-  //    where the ray misses it, and put in the order the ray enters them.
+  //  - Each span's ray in its source's stored frame (shape_rays_), and
+  //    the spans (already narrowed to the boxes that hold the shapes'
+  //    supports, ray_span.h) put in the order the ray enters them.
   void prepare_shape_rays(const BlobField& field, const Vec3& origin, const Vec3& direction);
   //  - The earliest exact entry into one source's own level surface u =
   //    √g_level among entries_ (each span's outer bound), or −1.

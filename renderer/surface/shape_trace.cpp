@@ -31,8 +31,7 @@ constexpr double kSliver = 1.0 / 32.0;
 }  // namespace
 
 void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, const Vec3& direction) {
-  // (The spans come narrowed to the shapes' boxes, ray_span.h.)
-  const std::size_t kept = spans.size();
+  const std::size_t count = spans.size();
   shape_rays_.clear();
   for (const RaySpan& s : spans) {
     const BlobSource& source = field.sources[s.source];
@@ -45,21 +44,21 @@ void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, co
   // sum over the spans is then the same to the bit whatever order the BVH
   // handed them over in, and a sum up to some t stops at the first span
   // that starts beyond it. The keys are sorted, then both lists gathered.
-  keys_.resize(kept);
-  for (std::size_t i = 0; i < kept; ++i) keys_[i] = {spans[i].t0, spans[i].rank, std::uint32_t(i)};
+  keys_.resize(count);
+  for (std::size_t i = 0; i < count; ++i) keys_[i] = {spans[i].t0, spans[i].rank, std::uint32_t(i)};
   std::sort(keys_.begin(), keys_.end(),
             [](const SpanKey& a, const SpanKey& b) { return a.t0 < b.t0 || (a.t0 == b.t0 && a.rank < b.rank); });
-  sorted_spans_.resize(kept);
-  sorted_rays_.resize(kept);
-  for (std::size_t i = 0; i < kept; ++i) {
+  sorted_spans_.resize(count);
+  sorted_rays_.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
     sorted_spans_[i] = spans[keys_[i].index];
     sorted_rays_[i] = shape_rays_[keys_[i].index];
   }
   spans.swap(sorted_spans_);
   shape_rays_.swap(sorted_rays_);
-  u_.assign(kept, 1.0);
-  du_dt_.assign(kept, 0.0);
-  tangent_at_.assign(kept, -std::numeric_limits<double>::infinity());
+  u_.assign(count, 1.0);
+  du_dt_.assign(count, 0.0);
+  tangent_at_.assign(count, -std::numeric_limits<double>::infinity());
   proof_step_ = 0.0;
 }
 
