@@ -122,7 +122,10 @@ std::string version_text() {
                                : std::string(" (this processor's best)")) +
             "\n";
     text += "  " + device.describe() + "\n";
-    text += std::string("  renderer: ") + hsb::isa_name(isa) + " span kernels";
+    text += std::string("  renderer: ") + hsb::isa_name(isa) + " span kernels\n";
+    // Without deep binding (an allocator preloaded, a sanitizer) the image
+    // module takes a tenth of a second or more longer to load.
+    text += std::string("  image module: ") + (hsb::image_io_binds_deep() ? "deep-bound" : "ordinary") + " load";
   } catch (const std::runtime_error& e) {
     text += std::string("instruction set: ") + e.what();
   }

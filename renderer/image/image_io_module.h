@@ -42,6 +42,12 @@ void preload_image_io();
 // main() calls it on its way out.
 void finish_image_io_preload();
 
+// Whether the module is (or will be) loaded with RTLD_DEEPBIND, which
+// takes a third off the load (image_io_module.cpp): where the process
+// has no second copy of the allocator, the standard streams or libc's
+// single-threaded flag.
+bool image_io_binds_deep();
+
 }  // namespace hsb
 
 // What the module exports: its functions.

@@ -48,7 +48,9 @@ TEST(CameraFrustum, ARectangleSaidToSeeNothingSeesNothing) {
       bool meets = false;
       for (int i = 0; i <= 16 && !meets; ++i)
         for (int j = 0; j <= 16 && !meets; ++j) meets = ray_meets(camera.ray(x0 + i / 4.0, y0 + j / 4.0), box);
-      if (meets) EXPECT_TRUE(may_see) << "trial " << trial << " tile at " << x0 << ", " << y0;
+      if (meets) {
+        EXPECT_TRUE(may_see) << "trial " << trial << " tile at " << x0 << ", " << y0;
+      }
       skipped += !may_see;
       seen += meets;
     }
