@@ -213,7 +213,7 @@ for size in "$@"; do
 done
 commit=$(git rev-parse --short HEAD 2> /dev/null || echo unknown)
 echo "(tend helix at ${samples}³; superquadrics, hsb's at sharpness 3, ParaView's at ${pv_line#glyphs=* };"
-echo " 1 sample per pixel, no shadows; median whole-process times of $runs run(s) on $(nproc) cores, ParaView's"
+echo " 1 sample per pixel, no shadows or ambient occlusion; median whole-process times of $runs run(s) on $(nproc) cores, ParaView's"
 echo " with xvfb-run, pvbatch_s without; ratio: ParaView's time over hsb's, mem_ratio: hsb's peak resident"
 echo " memory over ParaView's; ParaView $pv_version from $root; hsb at $commit, $(./build/hsb --version | sed -n 2p))"
 echo "($(sed -n 's/^model name[^:]*: //p' /proc/cpuinfo | head -1))"

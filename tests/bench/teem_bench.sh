@@ -7,9 +7,9 @@
 # is rendered as a glyph field, one glyph per voxel with FA ≥ 0.3, by
 # `tend glyph -rt` and by hsb, with the same tensors, glyph scale (a
 # glyph's semi-axes are 150 λ in both), camera, image size and one sample
-# per pixel, without shadows, on both cores: ellipsoids (Teem's `-g
-# sphere`, a union of hsb's ellipsoids, blend = "max") and Kindlmann's
-# superquadrics at sharpness 3. hsb's glyph surface is made the
+# per pixel, without shadows or ambient occlusion, on both cores:
+# ellipsoids (Teem's `-g sphere`, a union of hsb's ellipsoids, blend =
+# "max") and Kindlmann's superquadrics at sharpness 3. hsb's glyph surface is made the
 # ellipsoid's own size (quartic kernel, influence radius 1/√(1 − 1/√2),
 # whose level radius at C = ½ is 1). Prints, per shape and size, both
 # whole-process times (the median of three runs), both peak resident
@@ -54,6 +54,6 @@ for shape in ellipsoid superquadric; do
   done
 done
 commit=$(git rev-parse --short HEAD 2> /dev/null || echo unknown)
-echo "(tend helix at ${samples}³; 1 sample per pixel, no shadows; median whole-process times of 3 runs on $(nproc) cores;"
+echo "(tend helix at ${samples}³; 1 sample per pixel, no shadows or ambient occlusion; median whole-process times of 3 runs on $(nproc) cores;"
 echo " ratio: Teem's time over hsb's; peak resident memory; hsb at $commit, $(./build/hsb --version | sed -n 2p))"
 echo "($(sed -n 's/^model name[^:]*: //p' /proc/cpuinfo | head -1))"
