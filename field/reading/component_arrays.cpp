@@ -37,6 +37,7 @@ constexpr Suffix vector_suffixes[] = {{"x", {0, -1}}, {"y", {1, -1}}, {"z", {2, 
 
 const std::string record_prefix = "hsb component order: ";
 const std::string default_prefix = "hsb default component order: ";
+const std::string note_prefix = "hsb reading note: ";
 const std::string frame_prefix = "hsb tensor frame: ";
 
 // Whether `name` ends in `suffix`, case aside.
@@ -146,7 +147,10 @@ std::vector<Place> tensor_places(ComponentSet& set) {
 int tensor_name_rank(const std::string& name) {
   std::string n = name;
   std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if (n.find("stress") != std::string::npos || n.find("sigma") != std::string::npos || n == "s") return 0;
+  // Code_Aster's fields: SIEF_NOEU, SIGM_ELNO (stress), EPSI_NOEU (strain).
+  if (n.find("stress") != std::string::npos || n.find("sigm") != std::string::npos ||
+      n.find("sief") != std::string::npos || n == "s")
+    return 0;
   if (n.find("strain") != std::string::npos || n.find("eps") != std::string::npos || n == "e") return 1;
   return 2;
 }
@@ -172,6 +176,15 @@ void record_component_order(vtkFieldData* records, const std::string& name, cons
 
 std::string recorded_component_order(vtkDataSet* data, const std::string& name) {
   const std::vector<std::string> record = record_of(data, record_prefix + name);
+  return record.empty() ? std::string() : record.front();
+}
+
+void record_reading_note(vtkFieldData* records, const std::string& name, const std::string& note) {
+  add_record(records, note_prefix + name, {note});
+}
+
+std::string recorded_reading_note(vtkDataSet* data, const std::string& name) {
+  const std::vector<std::string> record = record_of(data, note_prefix + name);
   return record.empty() ? std::string() : record.front();
 }
 

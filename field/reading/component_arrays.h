@@ -34,7 +34,8 @@ namespace hsb {
 void join_component_arrays(vtkDataSetAttributes* attributes, vtkFieldData* records);
 
 // How much an array's name says it is what a stress picture wants: 0 for
-// stress (stress, sigma, S), 1 for strain (strain, eps, E), 2 for neither.
+// stress (stress, sigma, S; Code_Aster's SIEF_*, SIGM_*), 1 for strain
+// (strain, eps, E; Code_Aster's EPSI_*), 2 for neither.
 // The rule that picks among several arrays of tensors.
 int tensor_name_rank(const std::string& name);
 
@@ -45,6 +46,13 @@ void record_component_order(vtkFieldData* records, const std::string& name, cons
 
 // What record_component_order() said of `name`, "" if nothing.
 std::string recorded_component_order(vtkDataSet* data, const std::string& name);
+
+// Records how `name` of `data` was read where the file leaves the reading
+// open (`note` completes "array NAME ..."): said as a warning with every
+// picture of it.
+void record_reading_note(vtkFieldData* records, const std::string& name, const std::string& note);
+// What record_reading_note() said of `name`, "" if nothing.
+std::string recorded_reading_note(vtkDataSet* data, const std::string& name);
 
 // For a 6-component array whose order the file does not record but its
 // format implies (FSL's for a NIfTI of six volumes): the data.components

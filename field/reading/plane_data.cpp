@@ -39,16 +39,61 @@ Mat3 from_components(const double* c, int count) {
   return tensor_in_order(c, *component_order("vtk")).matrix();
 }
 
-// Every tensor array of `attributes` made planar; in the z plane, a
-// 3-component array named as stress or strain read as (xx, yy, xy).
+// How a plane tensor's components are laid out, in the z plane: three
+// are XX YY XY; four a 2×2 matrix row by row, XX XY YX YY (numpy's (n, 2, 2)
+// as meshio writes it), or XX YY ZZ XY (Code_Aster's SIXX SIYY SIZZ SIXY,
+// Abaqus's S11 S22 S33 S12 for plane strain and axisymmetry). A symmetric
+// matrix has its second and third alike; XX YY ZZ XY has them differ (σyy
+// and σzz) wherever the stress is not the same in y and z.
+enum class PlaneLayout { none, three, rows, with_zz };
+
+PlaneLayout plane_layout(vtkDataArray* array, int axis) {
+  const int count = array->GetNumberOfComponents();
+  if (axis != 2 || (count != 3 && count != 4) || tensor_name_rank(array->GetName()) >= 2) return PlaneLayout::none;
+  if (count == 3) return PlaneLayout::three;
+  double c[4];
+  for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t) {
+    array->GetTuple(t, c);
+    const double size = std::fabs(c[0]) + std::fabs(c[1]) + std::fabs(c[2]) + std::fabs(c[3]);
+    if (std::fabs(c[1] - c[2]) > 1e-9 * size) return PlaneLayout::with_zz;
+  }
+  return PlaneLayout::rows;
+}
+
+// A plane tensor's components in `layout` as VTK's six (XX YY ZZ XY YZ XZ),
+// in place; a row-by-row matrix's off-diagonal is the mean of its two.
+void plane_to_six(PlaneLayout layout, double* c) {
+  double xx = c[0], yy = 0.0, zz = 0.0, xy = 0.0;
+  switch (layout) {
+    case PlaneLayout::three: yy = c[1], xy = c[2]; break;
+    case PlaneLayout::rows: yy = c[3], xy = 0.5 * (c[1] + c[2]); break;
+    case PlaneLayout::with_zz: yy = c[1], zz = c[2], xy = c[3]; break;
+    case PlaneLayout::none: return;
+  }
+  c[0] = xx, c[1] = yy, c[2] = zz, c[3] = xy, c[4] = 0.0, c[5] = 0.0;
+}
+
+const char* layout_words(PlaneLayout layout) {
+  switch (layout) {
+    case PlaneLayout::three: return "three components of a plane tensor: XX YY XY";
+    case PlaneLayout::rows: return "four components of a plane tensor: XX XY YX YY, a 2×2 matrix row by row";
+    case PlaneLayout::with_zz: return "four components of a plane tensor: XX YY ZZ XY";
+    case PlaneLayout::none: break;
+  }
+  return "";
+}
+
+// Every tensor array of `attributes` made planar; in the z plane, an array
+// of 3 or 4 components named as stress or strain read as a plane tensor
+// (plane_layout).
 void make_planar(vtkDataSetAttributes* attributes, vtkFieldData* records, int axis) {
   std::vector<vtkSmartPointer<vtkDataArray>> arrays;  // before any is replaced
   for (int i = 0; i < attributes->GetNumberOfArrays(); ++i)
     if (vtkDataArray* array = attributes->GetArray(i); array && array->GetName()) arrays.emplace_back(array);
   for (vtkDataArray* array : arrays) {
     const int count = array->GetNumberOfComponents();
-    const bool plane_tensor = count == 3 && axis == 2 && tensor_name_rank(array->GetName()) < 2;
-    if (count != 6 && count != 9 && !plane_tensor) continue;
+    const PlaneLayout layout = plane_layout(array, axis);
+    if (count != 6 && count != 9 && layout == PlaneLayout::none) continue;
     auto out = vtkSmartPointer<vtkDoubleArray>::New();
     out->SetName(array->GetName());
     out->SetNumberOfComponents(count == 9 ? 9 : 6);
@@ -56,11 +101,8 @@ void make_planar(vtkDataSetAttributes* attributes, vtkFieldData* records, int ax
     double c[9];
     for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t) {
       array->GetTuple(t, c);
-      if (plane_tensor) {  // xx, yy, xy → VTK's six
-        const double xy = c[2];
-        c[2] = 0.0, c[3] = xy, c[4] = 0.0, c[5] = 0.0;
-      }
-      const Mat3 m = planar(from_components(c, plane_tensor ? 6 : count), axis);
+      plane_to_six(layout, c);
+      const Mat3 m = planar(from_components(c, layout != PlaneLayout::none ? 6 : count), axis);
       if (count == 9) {
         for (int k = 0; k < 9; ++k) out->SetComponent(t, k, m(k / 3, k % 3));
       } else {
@@ -71,7 +113,13 @@ void make_planar(vtkDataSetAttributes* attributes, vtkFieldData* records, int ax
     attributes->RemoveArray(array->GetName());
     attributes->AddArray(out);
     if (active) attributes->SetTensors(out);
-    if (plane_tensor) record_component_order(records, out->GetName(), "three components of a plane tensor: XX YY XY");
+    if (layout != PlaneLayout::none) record_component_order(records, out->GetName(), layout_words(layout));
+    // The one reading the file leaves open: said with every picture.
+    if (layout == PlaneLayout::with_zz)
+      record_reading_note(records, out->GetName(),
+                          "has four components whose second and third differ: read as XX YY ZZ XY, as Code_Aster "
+                          "(SIXX SIYY SIZZ SIXY) and Abaqus (S11 S22 S33 S12) write plane strain; a 2×2 matrix "
+                          "row by row (XX XY YX YY) that is not symmetric would need its symmetric part written");
   }
 }
 

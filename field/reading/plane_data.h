@@ -1,7 +1,7 @@
 #pragma once
 // 2-D results: a mesh of triangles, quads or polygons in a plane x, y or
 // z = const (plane stress, plane strain, a membrane), with tensors of 3
-// components (xx, yy, xy, in the z plane) or 6 or 9. Such a mesh has no
+// or 4 components (in the z plane) or 6 or 9. Such a mesh has no
 // volume to trace in, so it is made one: extruded into a thin slab of
 // wedges and hexahedra about its plane, its values the same through the
 // thickness. Trajectories seeded in the mid-plane stay in it.
@@ -38,9 +38,10 @@ std::optional<PlaneOfData> find_plane(vtkDataSet* data);
 // `data` (2-D cells in `plane`) as a slab of `plane.thickness`: triangles
 // become wedges, quads hexahedra, other 2-D cells wedges of their
 // triangles; 0-D and 1-D cells are left out. Point data is the same on
-// both faces, cell data on every cell made from a cell. Its 3-component
-// arrays named as stress or strain become 6-component tensors (z plane
-// only), and every tensor array is made planar (above). The plane is
+// both faces, cell data on every cell made from a cell. Its arrays of 3
+// or 4 components named as stress or strain become 6-component tensors (z
+// plane only: XX YY XY; XX XY YX YY; XX YY ZZ XY), and every tensor array
+// is made planar (above). The plane is
 // recorded with the data, for plane_of(). Data without 2-D cells (a
 // planar point cloud) has nothing to extrude: it keeps its points and
 // cells, its arrays made planar the same way.

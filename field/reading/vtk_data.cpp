@@ -330,6 +330,8 @@ std::vector<Sym3> tensors_of(const ChosenArray& chosen, const VtkFileSpec& spec,
       chosen.components == 6 && spec.components.empty() && !implied.why.empty())
     warnings.push_back(spec.path + ": array \"" + chosen.name + "\" read in the order " + order.layout + " (\"" +
                        order.name + "\"): " + implied.why + "; data.components names another");
+  if (const std::string note = recorded_reading_note(data, chosen.name); !note.empty())
+    warnings.push_back(spec.path + ": array \"" + chosen.name + "\" " + note);
   if (const std::optional<Mat3> frame = recorded_tensor_frame(data, chosen.name))
     for (Sym3& t : tensors)
       if (t.is_finite()) t = Sym3::symmetric_part(*frame * t.matrix() * frame->transpose());

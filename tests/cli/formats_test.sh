@@ -39,6 +39,9 @@ grep -q 'data.components = "fsl"' <<<"$out" && grep -q 'frame     tensors turned
   fail "FSL's layout and frame not taken: $out"
 out=$(info plane_stress_quads.vtu)
 grep -q 'plane     a 2-D result in z = 0' <<<"$out" || fail "the 2-D result not seen as one: $out"
+out=$(info aster_plane_strain.vtu)
+grep -q 'tensors   "SIEF_NOEU"' <<<"$out" && grep -q 'four components of a plane tensor: XX YY ZZ XY' <<<"$out" ||
+  fail "Code_Aster's plane strain stress not read as XX YY ZZ XY: $out"
 
 # A series, of files or of an Exodus file's steps: one image per step.
 for series in kirsch_plate_series.pvd moose_style.e; do

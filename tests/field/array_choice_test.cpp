@@ -67,6 +67,16 @@ TEST(ArrayChoice, TensorsNamedStressWinOverStrainAndNeverAFlow) {
       << notes;
 }
 
+// Code_Aster's field names (through meshio or ParaView's MED reader).
+TEST(ArrayChoice, CodeAsterStressFieldsAreStress) {
+  auto img = image();
+  add(img, "EPSI_NOEU", 6, 0.001);
+  add(img, "SIEF_NOEU", 6, 80.0);
+  const auto [xx, notes] = drawn(write(img, "aster.vti"));
+  EXPECT_DOUBLE_EQ(xx, 80.0);
+  EXPECT_NE(notes.find("\"SIEF_NOEU\" (point data) is drawn, its name says stress"), std::string::npos) << notes;
+}
+
 TEST(ArrayChoice, ActiveTensorsWinAndAnUnnamedChoiceIsTheFirst) {
   auto img = image();
   add(img, "a", 6, 1.0);

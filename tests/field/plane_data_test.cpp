@@ -1,7 +1,9 @@
 // 2-D results: triangles or quads in an axis plane, with plane tensors of
-// 3 components or full ones of 6, read as a thin slab whose tensors are
+// 3 or 4 components or full ones of 6, read as a thin slab whose tensors are
 // planar; anything else 2-D is refused with a reason.
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 #include <vtkCellArray.h>
 #include <vtkCellType.h>
@@ -28,7 +30,7 @@ namespace {
 
 // An n × n grid of quads (or of triangles, two per quad) spanning [0, 2]
 // along the in-plane axes u, v of the plane `axis` = 0.5, with point
-// tensors from `tensor(u, v)`: 3 components (xx, yy, xy) or 6.
+// tensors from `tensor(u, v)`: 3 components (xx, yy, xy), 4 or 6.
 std::string plane_mesh(const std::string& name, int axis, bool triangles, int components,
                        const std::function<std::vector<double>(double, double)>& tensor, double lift_last = 0.0) {
   const int n = 6, u = (axis + 1) % 3, v = (axis + 2) % 3;
@@ -82,6 +84,39 @@ TEST(PlaneData, PlaneStressOnTrianglesIsReadInItsPlane) {
     EXPECT_LT((s->matrix() - expected.matrix()).norm(), 1e-6) << p.transpose();
   }
   EXPECT_FALSE(data.field->sample(Vec3(1, 1, 3)));  // far off the plane: outside
+}
+
+// Four components: a 2×2 matrix row by row (numpy's (n, 2, 2) through
+// meshio), or XX YY ZZ XY (Code_Aster, Abaqus), told apart by whether the
+// middle two agree; only the second is a guess worth a warning.
+TEST(PlaneData, FourComponentsAreAMatrixRowByRowOrXxYyZzXy) {
+  const auto read = [](const std::string& file, const std::function<std::vector<double>(double, double)>& tensor) {
+    return load_vtk_data({plane_mesh(file, 2, true, 4, tensor)});
+  };
+  const auto rows = [](double u, double v) {
+    const std::vector<double> t = plane_stress(u, v);
+    return std::vector<double>{t[0], t[2], t[2], t[1]};
+  };
+  const auto with_zz = [](double u, double v) {
+    const std::vector<double> t = plane_stress(u, v);
+    return std::vector<double>{t[0], t[1], 0.3 * (t[0] + t[1]), t[2]};
+  };
+  for (const bool zz : {false, true}) {
+    const VtkData data = zz ? read("with_zz.vtu", with_zz) : read("rows.vtu", rows);
+    ASSERT_TRUE(data.field);
+    for (const Vec3& p : {Vec3(0.3, 0.4, 0.5), Vec3(1.7, 1.1, 0.5)}) {
+      const std::optional<Sym3> s = data.field->sample(p);
+      ASSERT_TRUE(s) << p.transpose();
+      const std::vector<double> t = plane_stress(p.x(), p.y());
+      const Sym3 expected{t[0], t[1], 0.5 * (t[0] + t[1]), t[2], 0.0, 0.0};
+      EXPECT_LT((s->matrix() - expected.matrix()).norm(), 1e-6) << (zz ? "XX YY ZZ XY at " : "rows at ") << p.transpose();
+    }
+    const bool warned = std::any_of(data.warnings.begin(), data.warnings.end(), [](const std::string& w) {
+      return w.find("array \"stress\" has four components whose second and third differ: read as XX YY ZZ XY") !=
+             std::string::npos;
+    });
+    EXPECT_EQ(warned, zz);
+  }
 }
 
 TEST(PlaneData, FullTensorsOnQuadsInAYPlaneLoseTheirOutOfPlaneShear) {

@@ -22,7 +22,7 @@ export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1   # same sums every run
 for script in lame_cylinder kirsch_plate_blocks kirsch_plate_series \
               teem_helix teem_helix_detached dti_fsl_dtifit \
               dti_fsl_left_hemisphere dti_symmatrix_intent sierra_style moose_style sfepy_bracket \
-              plane_stress_quads kirsch_plate_cloud lame_cylinder_shell; do
+              plane_stress_quads aster_plane_strain kirsch_plate_cloud lame_cylinder_shell; do
   echo "run_all: $script"
   (cd "$here" && "$PY" "$script.py" "$out")
 done
