@@ -83,15 +83,34 @@ const char* layout_words(PlaneLayout layout) {
   return "";
 }
 
+// In the z plane, an array of 2 components as a vector (X Y 0): a 2-D
+// solver's velocity or displacement, as meshio writes it to XML (its
+// legacy writer adds the zero itself).
+void make_plane_vector(vtkDataSetAttributes* attributes, vtkDataArray* array, vtkFieldData* records) {
+  auto out = vtkSmartPointer<vtkDoubleArray>::New();
+  out->SetName(array->GetName());
+  out->SetNumberOfComponents(3);
+  out->SetNumberOfTuples(array->GetNumberOfTuples());
+  for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
+    out->SetTuple3(t, array->GetComponent(t, 0), array->GetComponent(t, 1), 0.0);
+  attributes->RemoveArray(array->GetName());
+  attributes->AddArray(out);
+  record_component_order(records, out->GetName(), "two components of a plane vector: X Y");
+}
+
 // Every tensor array of `attributes` made planar; in the z plane, an array
 // of 3 or 4 components named as stress or strain read as a plane tensor
-// (plane_layout).
+// (plane_layout), and one of 2 as a vector.
 void make_planar(vtkDataSetAttributes* attributes, vtkFieldData* records, int axis) {
   std::vector<vtkSmartPointer<vtkDataArray>> arrays;  // before any is replaced
   for (int i = 0; i < attributes->GetNumberOfArrays(); ++i)
     if (vtkDataArray* array = attributes->GetArray(i); array && array->GetName()) arrays.emplace_back(array);
   for (vtkDataArray* array : arrays) {
     const int count = array->GetNumberOfComponents();
+    if (count == 2 && axis == 2) {
+      make_plane_vector(attributes, array, records);
+      continue;
+    }
     const PlaneLayout layout = plane_layout(array, axis);
     if (count != 6 && count != 9 && layout == PlaneLayout::none) continue;
     auto out = vtkSmartPointer<vtkDoubleArray>::New();

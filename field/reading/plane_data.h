@@ -40,8 +40,8 @@ std::optional<PlaneOfData> find_plane(vtkDataSet* data);
 // triangles; 0-D and 1-D cells are left out. Point data is the same on
 // both faces, cell data on every cell made from a cell. Its arrays of 3
 // or 4 components named as stress or strain become 6-component tensors (z
-// plane only: XX YY XY; XX XY YX YY; XX YY ZZ XY), and every tensor array
-// is made planar (above). The plane is
+// plane only: XX YY XY; XX XY YX YY; XX YY ZZ XY), those of 2 components
+// vectors (X Y 0), and every tensor array is made planar (above). The plane is
 // recorded with the data, for plane_of(). Data without 2-D cells (a
 // planar point cloud) has nothing to extrude: it keeps its points and
 // cells, its arrays made planar the same way.

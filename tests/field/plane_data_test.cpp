@@ -30,14 +30,16 @@ namespace {
 
 // An n × n grid of quads (or of triangles, two per quad) spanning [0, 2]
 // along the in-plane axes u, v of the plane `axis` = 0.5, with point
-// tensors from `tensor(u, v)`: 3 components (xx, yy, xy), 4 or 6.
+// values `array` from `tensor(u, v)`: 3 components (xx, yy, xy), 4 or 6
+// (or 2, a vector).
 std::string plane_mesh(const std::string& name, int axis, bool triangles, int components,
-                       const std::function<std::vector<double>(double, double)>& tensor, double lift_last = 0.0) {
+                       const std::function<std::vector<double>(double, double)>& tensor, double lift_last = 0.0,
+                       const char* array = "stress") {
   const int n = 6, u = (axis + 1) % 3, v = (axis + 2) % 3;
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   auto points = vtkSmartPointer<vtkPoints>::New();
   auto values = vtkSmartPointer<vtkDoubleArray>::New();
-  values->SetName("stress");
+  values->SetName(array);
   values->SetNumberOfComponents(components);
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) {
@@ -117,6 +119,17 @@ TEST(PlaneData, FourComponentsAreAMatrixRowByRowOrXxYyZzXy) {
     });
     EXPECT_EQ(warned, zz);
   }
+}
+
+// Two components in a z plane: an in-plane vector (a 2-D flow), drawn as one.
+TEST(PlaneData, TwoComponentsAreAPlaneVector) {
+  const auto swirl = [](double u, double v) { return std::vector<double>{1.0 - v, u - 1.0}; };
+  const VtkData data = load_vtk_data({plane_mesh("velocity.vtu", 2, false, 2, swirl, 0.0, "velocity")});
+  ASSERT_TRUE(data.vectors);
+  EXPECT_FALSE(data.field);
+  const std::optional<Vec3> v = data.vectors->sample(Vec3(0.3, 1.6, 0.5));
+  ASSERT_TRUE(v);
+  EXPECT_LT((*v - Vec3(1.0 - 1.6, 0.3 - 1.0, 0.0)).norm(), 1e-6);
 }
 
 TEST(PlaneData, FullTensorsOnQuadsInAYPlaneLoseTheirOutOfPlaneShear) {
