@@ -199,18 +199,36 @@ DefaultOrder recorded_default_order(vtkDataSet* data, const std::string& name) {
   return {record[0], record[1]};
 }
 
+namespace {
+
+// Whether `name` is one of Code_Aster's tensor fields (SIEF_NOEU,
+// SIGM_ELNO, EPSI_ELGA, ...; a result's name may come before it, as meshio
+// reads a MED file: RESU____SIEF_NOEU).
+bool code_aster_field(std::string name) {
+  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return char(std::toupper(c)); });
+  for (const char* field : {"SIEF_", "SIGM_", "EPSI_"})
+    for (std::size_t at = name.find(field); at != std::string::npos; at = name.find(field, at + 1))
+      if (at == 0 || name[at - 1] == '_') return true;
+  return false;
+}
+
+}  // namespace
+
 void record_writer_orders(vtkDataSet* data) {
   const bool sfepy = data->GetPointData()->GetAbstractArray("node_groups") && data->GetCellData()->GetAbstractArray("mat_id");
-  if (!sfepy) return;
   for (vtkDataSetAttributes* attributes : {static_cast<vtkDataSetAttributes*>(data->GetPointData()),
                                            static_cast<vtkDataSetAttributes*>(data->GetCellData())})
     for (int i = 0; i < attributes->GetNumberOfArrays(); ++i) {
       vtkDataArray* array = attributes->GetArray(i);
       if (!array || !array->GetName() || array->GetNumberOfComponents() != 6) continue;
       const std::string name = array->GetName();
-      if (recorded_component_order(data, name).empty() && recorded_default_order(data, name).order.empty())
+      if (!recorded_component_order(data, name).empty() || !recorded_default_order(data, name).order.empty()) continue;
+      if (sfepy)
         record_default_order(data->GetFieldData(), name, "sfepy",
                              "written by SfePy (its node_groups and mat_id arrays say so), which stores 11 22 33 12 13 23");
+      else if (code_aster_field(name))
+        record_default_order(data->GetFieldData(), name, "code_aster",
+                             "its name is a Code_Aster field's, which stores SIXX SIYY SIZZ SIXY SIXZ SIYZ");
     }
 }
 

@@ -67,7 +67,9 @@ DefaultOrder recorded_default_order(vtkDataSet* data, const std::string& name);
 // Records the order a file's writer implies for its 6-component arrays
 // where the file records none: SfePy's output (it leaves its arrays
 // node_groups and mat_id in every file it writes) stores 11 22 33 12 13 23,
-// read as VTK's it would swap σyz and σxz without a sign.
+// read as VTK's it would swap σyz and σxz without a sign; so does
+// Code_Aster in its fields SIEF_*, SIGM_* and EPSI_* (SIXX SIYY SIZZ SIXY
+// SIXZ SIYZ), whose names meshio and ParaView keep.
 void record_writer_orders(vtkDataSet* data);
 
 // The rotation (or reflection) that takes `name`'s tensors from the axes

@@ -21,25 +21,43 @@ namespace {
 
 const Sym3 distinct{1.0, 2.0, 3.0, 4.0, 5.0, 6.0};  // xx, yy, zz, xy, yz, xz
 
-// A 3×3×3 image whose array "t" holds `distinct` laid out as `order` says.
-std::string written_in(const ComponentOrder& order) {
+// A 3×3×3 image whose array `name` holds `distinct` laid out as `order`
+// says, the active tensors or not.
+vtkSmartPointer<vtkImageData> image_in(const ComponentOrder& order, const char* name, bool active) {
   auto img = vtkSmartPointer<vtkImageData>::New();
   img->SetDimensions(3, 3, 3);
   auto a = vtkSmartPointer<vtkDoubleArray>::New();
-  a->SetName("t");
+  a->SetName(name);
   a->SetNumberOfComponents(6);
   a->SetNumberOfTuples(img->GetNumberOfPoints());
   const Mat3 m = distinct.matrix();
   for (vtkIdType p = 0; p < img->GetNumberOfPoints(); ++p)
     for (int k = 0; k < 6; ++k) a->SetComponent(p, k, m(order.entries[std::size_t(k)][0], order.entries[std::size_t(k)][1]));
-  img->GetPointData()->SetTensors(a);
-  return written_by<vtkXMLImageDataWriter>(img, test_temp_dir("component_order") / (order.name + ".vti"));
+  if (active) img->GetPointData()->SetTensors(a);
+  else img->GetPointData()->AddArray(a);
+  return img;
 }
+
+std::string written(vtkImageData* img, const std::string& file) {
+  return written_by<vtkXMLImageDataWriter>(img, test_temp_dir("component_order") / file);
+}
+
+std::string written_in(const ComponentOrder& order) { return written(image_in(order, "t", true), order.name + ".vti"); }
 
 Sym3 read(const std::string& path, const std::string& components) {
   VtkFileSpec spec{path};
   spec.components = components;
   return *load_vtk_data(spec).field->sample(Vec3(1, 1, 1));
+}
+
+// A file whose writer implies its order: read whole in it, said once in a
+// warning (`said` in it), and a scene's other order still wins.
+void expect_default_order(const std::string& path, const std::string& said) {
+  const VtkData data = load_vtk_data({path});
+  EXPECT_EQ((data.field->sample(Vec3(1, 1, 1))->matrix() - distinct.matrix()).norm(), 0.0) << path;
+  ASSERT_EQ(data.warnings.size(), 1u) << path;
+  EXPECT_NE(data.warnings[0].find(said), std::string::npos) << data.warnings[0];
+  EXPECT_GT((read(path, "vtk").matrix() - distinct.matrix()).norm(), 1.0) << path;  // the scene's word wins
 }
 
 TEST(ComponentOrder, EachPresetReadsItsOwnLayoutAndNoOther) {
@@ -59,17 +77,7 @@ TEST(ComponentOrder, EachPresetReadsItsOwnLayoutAndNoOther) {
 // mat_id arrays in every file: its order is then the default, said in a
 // warning; a scene may still name another.
 TEST(ComponentOrder, SfepyOutputIsReadInSfepyOrderAndSaidSo) {
-  auto img = vtkSmartPointer<vtkImageData>::New();
-  img->SetDimensions(3, 3, 3);
-  const ComponentOrder& sfepy = *component_order("sfepy");
-  auto a = vtkSmartPointer<vtkDoubleArray>::New();
-  a->SetName("cauchy_stress");
-  a->SetNumberOfComponents(6);
-  a->SetNumberOfTuples(img->GetNumberOfPoints());
-  const Mat3 m = distinct.matrix();
-  for (vtkIdType p = 0; p < img->GetNumberOfPoints(); ++p)
-    for (int k = 0; k < 6; ++k) a->SetComponent(p, k, m(sfepy.entries[std::size_t(k)][0], sfepy.entries[std::size_t(k)][1]));
-  img->GetPointData()->AddArray(a);
+  auto img = image_in(*component_order("sfepy"), "cauchy_stress", false);
   for (auto [name, on_points] : {std::pair{"node_groups", true}, std::pair{"mat_id", false}}) {
     auto marker = vtkSmartPointer<vtkDoubleArray>::New();
     marker->SetName(name);
@@ -78,13 +86,18 @@ TEST(ComponentOrder, SfepyOutputIsReadInSfepyOrderAndSaidSo) {
     if (on_points) img->GetPointData()->AddArray(marker);
     else img->GetCellData()->AddArray(marker);
   }
-  const std::string path =
-      written_by<vtkXMLImageDataWriter>(img, test_temp_dir("component_order") / "sfepy_output.vti");
-  const VtkData data = load_vtk_data({path});
-  EXPECT_EQ((data.field->sample(Vec3(1, 1, 1))->matrix() - distinct.matrix()).norm(), 0.0);
-  ASSERT_EQ(data.warnings.size(), 1u);
-  EXPECT_NE(data.warnings[0].find("written by SfePy"), std::string::npos) << data.warnings[0];
-  EXPECT_GT((read(path, "vtk").matrix() - distinct.matrix()).norm(), 1.0);  // the scene's word wins
+  expect_default_order(written(img, "sfepy_output.vti"), "written by SfePy");
+}
+
+// Code_Aster's fields keep their names through meshio's MED reader (after
+// the result's, RESU____SIEF_NOEU): its order is then the default too.
+TEST(ComponentOrder, CodeAsterFieldsAreReadInCodeAsterOrderAndSaidSo) {
+  const ComponentOrder& aster = *component_order("code_aster");
+  expect_default_order(written(image_in(aster, "RESU____SIEF_NOEU", false), "aster.vti"), "a Code_Aster field's");
+  expect_default_order(written(image_in(aster, "EPSI_ELNO", false), "aster_strain.vti"), "a Code_Aster field's");
+  // A name that only contains the letters is not one.
+  const VtkData other = load_vtk_data({written(image_in(aster, "BASIEF_X", false), "not_aster.vti")});
+  EXPECT_GT((other.field->sample(Vec3(1, 1, 1))->matrix() - distinct.matrix()).norm(), 1.0);
 }
 
 TEST(ComponentOrder, TheLayoutsSayWhatTheEntriesAre) {
