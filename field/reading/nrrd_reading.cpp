@@ -209,16 +209,17 @@ std::vector<char> rest_of(std::ifstream& in) {
   return bytes;
 }
 
-// `count` numbers of type T from `bytes`, in the file's byte order.
+// `count` numbers of type T from `bytes`, in the file's byte order, into
+// `values` (which holds that many).
 template <typename T>
-void append_as_doubles(const unsigned char* bytes, std::uint64_t count, bool swap, std::vector<double>& values) {
+void as_doubles(const unsigned char* bytes, std::uint64_t count, bool swap, double* values) {
   for (std::uint64_t i = 0; i < count; ++i) {
     unsigned char b[sizeof(T)];
     std::memcpy(b, bytes + i * sizeof(T), sizeof(T));
     if (swap) std::reverse(b, b + sizeof(T));
     T t;
     std::memcpy(&t, b, sizeof t);
-    values.push_back(double(t));
+    values[i] = double(t);
   }
 }
 
@@ -288,16 +289,16 @@ std::vector<double> read_values(const Header& h, const std::string& path, std::u
     h.fail(h.find("encoding"), "NRRD encoding \"" + encoding + "\" is not read (raw, gzip and ascii are)");
   }
   const bool swap = type.bytes > 1 && h.value("endian", "little") == "big";
-  values.reserve(std::size_t(count));
+  values.resize(std::size_t(count));  // the decoded data holds them all, checked above
   switch (type.bytes * 4 + int(type.kind)) {
 #define HSB_AS(bytes_, kind_, T) \
-  case bytes_ * 4 + int(NumberType::kind_): append_as_doubles<T>(decoded, count, swap, values); break;
+  case bytes_ * 4 + int(NumberType::kind_): as_doubles<T>(decoded, count, swap, values.data()); break;
     HSB_AS(1, integer, std::int8_t) HSB_AS(1, unsigned_integer, std::uint8_t)
     HSB_AS(2, integer, std::int16_t) HSB_AS(2, unsigned_integer, std::uint16_t)
     HSB_AS(4, integer, std::int32_t) HSB_AS(4, unsigned_integer, std::uint32_t) HSB_AS(4, floating, float)
     HSB_AS(8, integer, std::int64_t) HSB_AS(8, unsigned_integer, std::uint64_t) HSB_AS(8, floating, double)
 #undef HSB_AS
-    default: break;
+    default: values.clear(); break;
   }
   return values;
 }
@@ -447,15 +448,18 @@ vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path, bool scalar) {
   const ComponentOrder& teem_order = *component_order("teem");
   const ComponentOrder& vtk_order = *component_order("vtk");
   const bool in_space_frame = frame == Mat3::Identity();
+  // Written in place: VTK's per-tuple setters cost a third of the read.
+  double* out = array->GetPointer(0);
   for (vtkIdType i = 0; i < voxels; ++i) {
     const double* v = values.data() + std::size_t(i) * std::size_t(layout.values);
+    double* o = out + std::size_t(i) * std::size_t(out_components);
     if (layout.kind == VoxelLayout::scalar) {
-      array->SetValue(i, v[0]);
+      o[0] = v[0];
       continue;
     }
     if (layout.kind == VoxelLayout::vector) {
       const Vec3 w = frame * Vec3(v[0], v[1], v[2]);
-      array->SetTuple3(i, w.x(), w.y(), w.z());
+      o[0] = w.x(), o[1] = w.y(), o[2] = w.z();
       continue;
     }
     const double* t = v + (layout.masked ? 1 : 0);
@@ -464,9 +468,10 @@ vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path, bool scalar) {
     if (!in_space_frame) m = frame * m * frame.transpose();
     if (layout.masked && !(v[0] >= 0.5)) m.setConstant(std::nan(""));  // Teem: below 0.5 is outside the mask
     if (out_components == 9) {
-      for (int c = 0; c < 9; ++c) array->SetComponent(i, c, m(c / 3, c % 3));
+      for (int c = 0; c < 9; ++c) o[c] = m(c / 3, c % 3);
     } else {
-      array->SetTuple(i, components_in_order(Sym3::symmetric_part(m), vtk_order).data());
+      const std::array<double, 6> six = components_in_order(Sym3::symmetric_part(m), vtk_order);
+      std::copy(six.begin(), six.end(), o);
     }
   }
 
