@@ -48,7 +48,11 @@ constexpr const char* kModuleName = "libhsb_image_io.so";
 bool deep_binding_is_safe() {
   void* libc = dlopen("libc.so.6", RTLD_NOW | RTLD_NOLOAD);
   void* libstdcxx = dlopen("libstdc++.so.6", RTLD_NOW | RTLD_NOLOAD);
-  if (!libc || !libstdcxx) return false;
+  if (!libc || !libstdcxx) {
+    for (void* opened : {libc, libstdcxx})
+      if (opened) dlclose(opened);
+    return false;
+  }
   using New = void* (*)(std::size_t);
   using Delete = void (*)(void*);
   const auto at = [](auto function) { return reinterpret_cast<const void*>(function); };
