@@ -212,6 +212,16 @@ bool code_aster_field(std::string name) {
   return false;
 }
 
+// Whether `name` is one of Abaqus's tensor output variables as its
+// exporters keep them: S (stress), E, LE, EE, PE, NE, THE (strains), ER
+// (strain rate). Upper case, as Abaqus names them: a lower-case "s" or "e"
+// says nothing of a writer.
+bool abaqus_field(const std::string& name) {
+  for (const char* field : {"S", "E", "LE", "EE", "PE", "NE", "THE", "ER"})
+    if (name == field) return true;
+  return false;
+}
+
 }  // namespace
 
 void record_writer_orders(vtkDataSet* data) {
@@ -229,6 +239,9 @@ void record_writer_orders(vtkDataSet* data) {
       else if (code_aster_field(name))
         record_default_order(data->GetFieldData(), name, "code_aster",
                              "its name is a Code_Aster field's, which stores SIXX SIYY SIZZ SIXY SIXZ SIYZ");
+      else if (abaqus_field(name))
+        record_default_order(data->GetFieldData(), name, "abaqus",
+                             "its name is an Abaqus output variable's, which stores S11 S22 S33 S12 S13 S23");
     }
 }
 

@@ -126,7 +126,7 @@ ChosenArray pick_tensors(vtkDataSet* data, TensorAssociation association) {
                    : tensor_name_rank(chosen.name) == 0 ? std::string("its name says stress")
                    : tensor_name_rank(chosen.name) == 1 ? std::string("its name says strain (none says stress)")
                                                         : std::string("the first (no name says stress or strain)")) +
-                  "; also in the file: " + others + ". data.array names another";
+                  "; also in the file: " + others + ". Set data.array for another";
   }
   return chosen;
 }
@@ -329,7 +329,7 @@ std::vector<Sym3> tensors_of(const ChosenArray& chosen, const VtkFileSpec& spec,
   if (const DefaultOrder implied = recorded_default_order(data, chosen.name);
       chosen.components == 6 && spec.components.empty() && !implied.why.empty())
     warnings.push_back(spec.path + ": array \"" + chosen.name + "\" read in the order " + order.layout + " (\"" +
-                       order.name + "\"): " + implied.why + "; data.components names another");
+                       order.name + "\"): " + implied.why + "; set data.components for another");
   if (const std::string note = recorded_reading_note(data, chosen.name); !note.empty())
     warnings.push_back(spec.path + ": array \"" + chosen.name + "\" " + note);
   if (const std::optional<Mat3> frame = recorded_tensor_frame(data, chosen.name))

@@ -62,7 +62,7 @@ TEST(ArrayChoice, TensorsNamedStressWinOverStrainAndNeverAFlow) {
   const auto [xx, notes] = drawn(write(img, "stress_strain.vti"));
   EXPECT_DOUBLE_EQ(xx, 50.0);
   EXPECT_NE(notes.find("of 2 arrays of tensors, \"stress\" (cell data) is drawn, its name says stress; also in the "
-                       "file: \"strain\" (6 components, point data). data.array names another"),
+                       "file: \"strain\" (6 components, point data). Set data.array for another"),
             std::string::npos)
       << notes;
   // Code_Aster's field names (through meshio or ParaView's MED reader).

@@ -100,6 +100,19 @@ TEST(ComponentOrder, CodeAsterFieldsAreReadInCodeAsterOrderAndSaidSo) {
   EXPECT_GT((other.field->sample(Vec3(1, 1, 1))->matrix() - distinct.matrix()).norm(), 1.0);
 }
 
+// Abaqus's output variables keep their names through its exporters (S,
+// E, LE, ...): its order is then the default; other names, or the same
+// letters in lower case, say nothing of the writer.
+TEST(ComponentOrder, AbaqusVariablesAreReadInAbaqusOrderAndSaidSo) {
+  const ComponentOrder& abaqus = *component_order("abaqus");
+  expect_default_order(written(image_in(abaqus, "S", false), "abaqus.vti"), "an Abaqus output variable's");
+  expect_default_order(written(image_in(abaqus, "LE", false), "abaqus_strain.vti"), "an Abaqus output variable's");
+  for (const char* name : {"s", "SE", "Stress"}) {
+    const VtkData other = load_vtk_data({written(image_in(abaqus, name, false), std::string("not_abaqus_") + name + ".vti")});
+    EXPECT_GT((other.field->sample(Vec3(1, 1, 1))->matrix() - distinct.matrix()).norm(), 1.0) << name;
+  }
+}
+
 TEST(ComponentOrder, TheLayoutsSayWhatTheEntriesAre) {
   // The words agree with the entries: "XY" is (0, 1), and so on.
   const char* axis = "XYZ";
