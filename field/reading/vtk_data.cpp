@@ -38,6 +38,7 @@
 #include "field/reading/component_arrays.h"
 #include "field/reading/component_order.h"
 #include "field/reading/data_error.h"
+#include "field/reading/data_region.h"
 #include "field/reading/dataset_reading.h"
 #include "field/reading/plane_data.h"
 #include "field/reading/vtk_session.h"
@@ -383,14 +384,19 @@ std::unique_ptr<Field<T>> sampled_field(vtkDataSet* data, std::vector<T> values,
                                           std::array<int, 3>{dims[0], dims[1], dims[2]}, std::move(values), direction);
 }
 
-// The data set's outer surface as triangles with vertex normals. Edges
-// sharper than 40° split the normals, so a cylinder's faceted wall shades
-// smoothly while its rim stays a rim.
-TriangleMesh boundary_surface(vtkDataSet* data, const std::string& path) {
-  auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
-  surface->SetInputData(data);
+// The data set's outer surface as triangles with vertex normals, or
+// `region`'s where given (the surface of the part of a grid that holds
+// data, data_region.h). Edges sharper than 40° split the normals, so a
+// cylinder's faceted wall shades smoothly while its rim stays a rim.
+TriangleMesh boundary_surface(vtkDataSet* data, const std::string& path, vtkPolyData* region) {
   auto triangles = vtkSmartPointer<vtkTriangleFilter>::New();
-  triangles->SetInputConnection(surface->GetOutputPort());
+  if (region) {
+    triangles->SetInputData(region);
+  } else {
+    auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
+    surface->SetInputData(data);
+    triangles->SetInputConnection(surface->GetOutputPort());
+  }
   triangles->PassVertsOff();
   triangles->PassLinesOff();
   auto normals = vtkSmartPointer<vtkPolyDataNormals>::New();
@@ -509,6 +515,7 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
   double b[6];
   data->GetBounds(b);
   const Box3 bounds{Vec3(b[0], b[2], b[4]), Vec3(b[1], b[3], b[5])};
+  vtkSmartPointer<vtkPolyData> region;  // the part of a grid that holds data, where not all of it does
   if (chosen.components == 3) {
     std::vector<Vec3> vectors = read_values<Vec3>(chosen, spec.path);
     if (sites) out.sites.vectors = vectors;
@@ -535,6 +542,14 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
       holder->RemoveArray(chosen.name.c_str());
     }
     if (sites) out.sites.tensors = tensors;
+    // A grid whose tensors are zero over a background: its outline is the
+    // surface of the rest.
+    if (auto* image = vtkImageData::SafeDownCast(data); image && spec.boundary && chosen.on_points) {
+      std::vector<std::uint8_t> has_data(tensors.size());
+      for (std::size_t i = 0; i < tensors.size(); ++i)
+        has_data[i] = tensors[i].is_finite() && tensors[i].matrix().cwiseAbs().maxCoeff() > 0.0;
+      region = data_region_surface(image, has_data);
+    }
     if (!volume) {
       out.field = std::make_unique<PointsOnlyField<Sym3>>(bounds);
     } else {
@@ -552,7 +567,8 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
     if (volume) out.color = sampled_field(data, values, where, mesh_locator);
     if (sites) out.sites.colors = site_colors(out.sites.positions, chosen.on_points, values, where, out.color.get());
   }
-  if (spec.boundary && data->GetNumberOfCells() > 0) out.boundary = boundary_surface(data, spec.path);  // a shell's own surface too
+  if (spec.boundary && data->GetNumberOfCells() > 0)
+    out.boundary = boundary_surface(data, spec.path, region);  // a shell's own surface too
   if (const std::optional<PlaneOfData> plane = plane_of(data)) out.plane_axis = plane->axis;
   if (const std::vector<std::string> frame = record_of(data, kAnatomicalFrame); !frame.empty())
     out.anatomical_frame = frame.front();

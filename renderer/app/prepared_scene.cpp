@@ -151,7 +151,13 @@ std::vector<Vec3> framed_points(FrameTarget target, const PreparedScene& p, doub
     return points;
   }
   add_glyph_points(p, extent, points);
-  if (target == FrameTarget::drawn && (p.context.box || p.context.shell)) add_corners(domain, points);
+  // The outline drawn: the box's corners, or the shell's vertices, all of
+  // them (the framing takes extremes: a few passes over them): a round
+  // body fills the picture as its box would not, and a brain's surface
+  // inside a grid of empty voxels is smaller than the grid.
+  if (target == FrameTarget::drawn && p.context.box) add_corners(domain, points);
+  if (target == FrameTarget::drawn && p.context.shell)
+    points.insert(points.end(), p.context.shell->vertices.begin(), p.context.shell->vertices.end());
   return points;
 }
 
