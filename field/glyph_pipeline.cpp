@@ -650,7 +650,7 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   const ScalarField* color_array = scene.color == ColorScalar::array ? loaded.color.get() : nullptr;
   const auto maker = [&](EigenFamily family) -> SourceMaker {
     const ColorScalar color = scene.color == ColorScalar::family_eigenvalue ? family_eigenvalue(family) : scene.color;
-    return [&, color](const Vec3& p) -> std::optional<GlyphSource> {
+    return [&, color, family](const Vec3& p) -> std::optional<GlyphSource> {
       std::optional<GlyphSource> source;
       if (flow) {
         if (const std::optional<Vec3> v = flow->sample(p)) source = make_flow_source(p, *v, color);
@@ -662,6 +662,7 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
         if (!value) return std::nullopt;
         source->scalar = *value;
       }
+      if (source) source->group = std::uint8_t(family);
       return source;
     };
   };

@@ -1,6 +1,7 @@
 #pragma once
 // Metaball sources placed along trajectories: the field library's output.
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -20,6 +21,11 @@ struct GlyphSource {
   Vec3 radii = Vec3::Ones();
   Vec3 eigenvalues = Vec3::Zero();
   double scalar = 0.0;
+  // The surface it blends into: sources of one group blend, and the
+  // groups' surfaces stand side by side (a union). A line family's
+  // sources are a group of their own (the family's axis), so tension
+  // lines cross compression lines instead of melting into them.
+  std::uint8_t group = 0;
 };
 
 // How many sources place_sources() puts along `trajectory` at `spacing`

@@ -1,5 +1,6 @@
 #include "renderer/app/povray_export.h"
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
@@ -64,22 +65,32 @@ void write_povray_scene(const BlobField& field, const CameraSpec& camera, const 
               float(shading.light_intensity * shading.light_color[2])})
       << " parallel point_at " << vec(bounds.centre()) << (shading.shadows ? "" : " shadowless") << " }\n"
       << "#declare Finish = finish { ambient " << shading.ambient << " diffuse 1 specular " << shading.specular
-      << " roughness " << 1.0 / shading.shininess << " }\n"
-      << "blob {\n  threshold " << field.isovalue << "\n";
-  for (const BlobSource& s : field.sources) {
-    // The unit sphere mapped onto the influence ellipsoid: POV's matrix rows
-    // are the images of x, y and z, here the ellipsoid's semi-axis vectors
-    // (row k of W over its squared length).
-    pov << "  sphere { <0, 0, 0>, 1, 1 matrix <";
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 row(s.w[3 * k], s.w[3 * k + 1], s.w[3 * k + 2]);
-      const Vec3 axis = row / row.squaredNorm();
-      pov << axis.x() << ", " << axis.y() << ", " << axis.z() << ", ";
+      << " roughness " << 1.0 / shading.shininess << " }\n";
+  // One blob per group of sources (BlobField::groups): each blends within
+  // itself, and POV-Ray draws the blobs side by side, a union.
+  std::array<bool, 256> present{};
+  for (std::uint8_t g : field.groups) present[g] = true;
+  if (field.groups.empty()) present[0] = true;
+  for (std::size_t group = 0; group < present.size(); ++group) {
+    if (!present[group]) continue;
+    pov << "blob {\n  threshold " << field.isovalue << "\n";
+    for (std::size_t i = 0; i < field.sources.size(); ++i) {
+      if (!field.groups.empty() && field.groups[i] != group) continue;
+      const BlobSource& s = field.sources[i];
+      // The unit sphere mapped onto the influence ellipsoid: POV's matrix
+      // rows are the images of x, y and z, here the ellipsoid's semi-axis
+      // vectors (row k of W over its squared length).
+      pov << "  sphere { <0, 0, 0>, 1, 1 matrix <";
+      for (int k = 0; k < 3; ++k) {
+        const Vec3 row(s.w[3 * k], s.w[3 * k + 1], s.w[3 * k + 2]);
+        const Vec3 axis = row / row.squaredNorm();
+        pov << axis.x() << ", " << axis.y() << ", " << axis.z() << ", ";
+      }
+      pov << s.centre[0] << ", " << s.centre[1] << ", " << s.centre[2] << "> texture { pigment { rgb "
+          << rgb(s.color) << " } finish { Finish } } }\n";
     }
-    pov << s.centre[0] << ", " << s.centre[1] << ", " << s.centre[2] << "> texture { pigment { rgb "
-        << rgb(s.color) << " } finish { Finish } } }\n";
+    pov << "}\n";
   }
-  pov << "}\n";
   if (!pov) throw std::runtime_error(pov_path + ": write failed");
 
   std::ofstream ini(ini_path);

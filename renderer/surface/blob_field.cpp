@@ -41,6 +41,9 @@ BlobField make_blob_field(const std::vector<GlyphSource>& glyphs,
     field.sources.push_back(make_blob_source(glyphs[i].centre, glyphs[i].axes, glyphs[i].radii,
                                              sigma * influence_radius, colors[i], glyphs[i].scalar));
   }
+  const auto differs = [&](const GlyphSource& g) { return g.group != glyphs.front().group; };
+  if (std::any_of(glyphs.begin(), glyphs.end(), differs))
+    for (const GlyphSource& g : glyphs) field.groups.push_back(g.group);
   return field;
 }
 
@@ -86,12 +89,15 @@ double source_g(const BlobField& field, std::size_t i, const Vec3& x) {
 }
 
 double field_value(const BlobField& field, const Vec3& x) {
-  double f = 0.0;
+  // Each group's own F; the union's is the largest (its level set is the
+  // union of theirs).
+  std::array<double, 256> f{};
   for (std::size_t i = 0; i < field.sources.size(); ++i) {
     const double k = kernel_value(field.kernel, source_g(field, i, x));
-    f = blended(field.blend, f, k);
+    double& group = f[field.groups.empty() ? 0 : field.groups[i]];
+    group = blended(field.blend, group, k);
   }
-  return f;
+  return *std::max_element(f.begin(), f.end());
 }
 
 }  // namespace hsb

@@ -36,6 +36,11 @@ static_assert(sizeof(BlobSource) == 64, "one source per cache line");
 
 struct BlobField {
   std::vector<BlobSource> sources;
+  // Each source's group (GlyphSource::group), where there are several:
+  // F is summed within a group, and the surface is the union of the
+  // groups' own level sets (FieldRay::first_crossing). Empty: one group,
+  // every source blends with every other.
+  std::vector<std::uint8_t> groups;
   // The sources' shape (glyph_shape.h): their W is the bounding ellipsoid's,
   // and `shapes` holds each one's parameters (empty for ellipsoids).
   GlyphShape shape = GlyphShape::ellipsoid;
@@ -83,8 +88,9 @@ Box3 influence_bounds(const BlobField& field, std::size_t i);
 // Union of all sources' influence bounds.
 Box3 influence_bounds(const BlobField& field);
 
-// F(x) and the influence-weighted colour at a point, straight from the
-// definition (tests and shading of a single point; rays use ray_spans.h).
+// F(x) straight from the definition (tests, and whether the camera
+// stands inside the surface; rays use ray_spans.h); with groups, the
+// largest group's F.
 double field_value(const BlobField& field, const Vec3& x);
 
 }  // namespace hsb

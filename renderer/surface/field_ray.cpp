@@ -4,6 +4,7 @@
 #include "renderer/surface/single_source.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -67,6 +68,48 @@ double FieldRay::crowd_peak(double tmin, double last_peak) const {
 }
 
 double FieldRay::first_crossing(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin,
+                                double tmax, const TraceSettings& settings, TraceStats& stats,
+                                CrossingQuery query) {
+  if (field.groups.empty()) return group_crossing(field, origin, direction, tmin, tmax, settings, stats, query);
+  // Each group's surface on its own, the nearest first crossing of any
+  // (an `any` query: the first group that has one). A single source's
+  // entry bounds the union's first crossing as it bounds its own group's,
+  // so the spans beyond the earliest go first, as group_crossing() would
+  // drop them: which of them the span query gathered depends on the
+  // order it met them in, and the answer must not.
+  const double g_level = level_g(field.kernel, field.isovalue);
+  double upper = -1.0;
+  for (const RaySpan& s : spans) {
+    const double t = single_source_entry(s, inner_level_g(field, s.source, g_level), tmin, tmax);
+    if (t >= 0.0 && (upper < 0.0 || t < upper)) upper = t;
+  }
+  if (upper >= 0.0)
+    spans.erase(std::remove_if(spans.begin(), spans.end(), [&](const RaySpan& s) { return s.t0 > upper; }),
+                spans.end());
+  grouped_spans_.swap(spans);
+  group_of_.clear();
+  for (const RaySpan& s : grouped_spans_) group_of_.push_back(field.groups[s.source]);
+  std::array<bool, 256> present{};
+  for (std::uint8_t g : group_of_) present[g] = true;
+  double best = -1.0;
+  int best_group = -1;
+  for (int g = 0; g < 256; ++g) {
+    if (!present[std::size_t(g)]) continue;
+    spans.clear();
+    for (std::size_t i = 0; i < grouped_spans_.size(); ++i)
+      if (group_of_[i] == g) spans.push_back(grouped_spans_[i]);
+    const double t = group_crossing(field, origin, direction, tmin, best >= 0.0 ? best : tmax, settings, stats, query);
+    if (t >= 0.0 && (best < 0.0 || t < best)) best = t, best_group = g;
+    if (best >= 0.0 && query == CrossingQuery::any) break;
+  }
+  // surface_at() shades the group that was hit, from all of its spans.
+  spans.clear();
+  for (std::size_t i = 0; i < grouped_spans_.size(); ++i)
+    if (group_of_[i] == best_group) spans.push_back(grouped_spans_[i]);
+  return best;
+}
+
+double FieldRay::group_crossing(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin,
                                 double tmax, const TraceSettings& settings, TraceStats& stats,
                                 CrossingQuery query) {
   quadric_ = shape_is_quadric(field.shape);

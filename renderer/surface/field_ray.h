@@ -72,12 +72,25 @@ class FieldRay {
                         double tmax, const TraceSettings& settings, TraceStats& stats,
                         CrossingQuery query = CrossingQuery::first);
 
+  //
+  // With groups (BlobField::groups) each group's sum is a surface of its
+  // own and the answer is the nearest of their first crossings; the spans
+  // left are the group's that was hit.
+
   // Normal and colour at ray parameter t; uses the spans of the last
   // first_crossing() call, which cover every source that is non-zero there.
   SurfaceSample surface_at(const BlobField& field, const Vec3& origin, const Vec3& direction,
                            double t) const;
 
  private:
+  // first_crossing() of one group's sources, the spans.
+  double group_crossing(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin, double tmax,
+                        const TraceSettings& settings, TraceStats& stats, CrossingQuery query);
+  // Every group's spans, and each one's group, while first_crossing()
+  // takes the groups one at a time.
+  std::vector<RaySpan> grouped_spans_;
+  std::vector<std::uint8_t> group_of_;
+
   // For an `any` query, the first step at or above C is the answer.
   double sphere_trace(const BlobField& field, double tmin, double tmax, const TraceSettings& settings,
                       TraceStats& stats, CrossingQuery query);

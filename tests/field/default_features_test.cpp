@@ -178,6 +178,17 @@ TEST(DefaultFeatures, ABentBeamGetsLinesInBothHalves) {
   }
   EXPECT_GE(tension, 2u);
   EXPECT_GE(compression, 2u) << "no compression line along the compressed half";
+  // Each family's glyphs are a group of their own (GlyphSource::group:
+  // tension lines do not blend into compression lines), the family's axis:
+  // a source shows its own family's eigenvalue.
+  std::size_t in_group[3] = {0, 0, 0};
+  for (const GlyphSource& s : scene.sources) {
+    ASSERT_TRUE(s.group == 0 || s.group == 2) << int(s.group);
+    ++in_group[s.group];
+    EXPECT_EQ(s.scalar, s.eigenvalues[s.group]);
+  }
+  EXPECT_GT(in_group[0], 0u);
+  EXPECT_GT(in_group[2], 0u);
   double most_compressive = 0.0, most_tensile = 0.0;
   for (const GlyphSource& s : scene.sources) {
     if (s.centre.y() > 0.3) most_compressive = std::min(most_compressive, s.scalar);

@@ -125,6 +125,48 @@ TEST(Blending, TwoNearbySourcesBlendWhereEachAloneWouldMiss) {
   EXPECT_LT(trace(unioned, o, d), 0.0);
 }
 
+// Sources of two groups (two line families) are two surfaces: the pair's
+// blend between them is gone, each source still stands as it does alone,
+// and what a ray hits is shaded by its own group alone. For both
+// intersectors and for a shape other than the ellipsoid.
+TEST(Blending, GroupsAreSurfacesOfTheirOwn) {
+  const EmbreeDevice device;
+  for (const GlyphShape shape : {GlyphShape::ellipsoid, GlyphShape::superquadric}) {
+    for (const Intersector intersector : {Intersector::exact, Intersector::sphere}) {
+      BlobField pair = blob_pair();
+      pair.shape = shape;
+      if (shape != GlyphShape::ellipsoid) pair.shapes.assign(2, ShapeParams{});  // round: the ellipsoid's exponents
+      pair.groups = {0, 2};
+      TraceSettings settings;
+      settings.intersector = intersector;
+      const RayScene grouped(device, pair, settings);
+      const std::string what = std::string(glyph_shape_name(shape)) + (intersector == Intersector::exact ? ", exact" : ", sphere");
+      EXPECT_LT(trace(grouped, Vec3(0, -5, 0), Vec3(0, 1, 0)), 0.0) << what;  // through the blend: nothing
+      // Along x, from the blue side: the blue source's own sphere of
+      // radius ½ about x = 0.55, entered at x = 1.05; the red one's
+      // influence does not reach the blue surface.
+      EXPECT_NEAR(trace(grouped, Vec3(5, 0, 0), Vec3(-1, 0, 0)), 5.0 - (double(0.55f) + 0.5), 1e-9) << what;
+      // A ray near the red source, inside the blue one's support: its
+      // colour is pure red.
+      const Vec3 o(-0.3, -5, 0), d(0, 1, 0);
+      FieldRay tracer;
+      TraceStats stats;
+      for (std::uint32_t i = 0; i < 2; ++i) {
+        RaySpan span;
+        ASSERT_TRUE(ray_span(pair.sources[i], i, 0, o, d, 0.0, 100.0, span));
+        tracer.spans.push_back(span);
+      }
+      const double t = tracer.first_crossing(pair, o, d, 0.0, 100.0, settings, stats);
+      ASSERT_GT(t, 0.0) << what;
+      const SurfaceSample sample = tracer.surface_at(pair, o, d, t);
+      EXPECT_FLOAT_EQ(sample.color[0], 1.0f) << what;
+      EXPECT_FLOAT_EQ(sample.color[2], 0.0f) << what;
+      // F of the union is the larger group's: C on the red surface.
+      EXPECT_NEAR(field_value(pair, o + t * d), 0.5, 1e-9) << what;
+    }
+  }
+}
+
 TEST(Blending, ColourIsTheInfluenceWeightedMixAndNormalIsTheGradient) {
   const BlobField pair = blob_pair();
   const Vec3 o(-0.1, -5, 0), d(0, 1, 0);
