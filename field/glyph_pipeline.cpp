@@ -12,6 +12,7 @@
 #include "base/process_memory.h"
 #include "field/automatic_values.h"
 #include "field/glyphs/source_list.h"
+#include "field/glyphs/data_extremes.h"
 #include "field/reading/data_error.h"
 #include "field/sampling/mesh_field.h"
 #include "field/sampling/uniform_grid.h"
@@ -621,6 +622,7 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   else if (!flow && even && scene.placement == SourcePlacement::along_trajectories && !spec.trajectory.tensorlines)
     families = automatic_families(body_eigenvalues);
   scene.color = resolve_color(spec, loaded, families, scene.placement, scene.quantity);
+  if (tensors) scene.color_extremes = data_color_extremes(*tensors, scene.color);
   scene.values = resolve_lengths(spec, scene.domain, loaded, separation, families, scene.quantity);
   scene.values.region = region;
   if (region.above || spec.trajectory.stop_below) {

@@ -216,6 +216,10 @@ struct GlyphScene {
   std::vector<GlyphSource> sources;
   std::optional<TriangleMesh> boundary;  // a mesh's outer surface (none for analytic data)
   std::optional<int> plane_axis;         // a 2-D result: its plane's normal axis (seen along it)
+  // The colour scalar's extremes over the data's own values, which the
+  // glyphs may not reach (field/glyphs/data_extremes.h); none where the
+  // data has no values of its own or the colour is not the tensor's.
+  std::optional<std::array<double, 2>> color_extremes;
   std::string anatomical_frame;          // where the axes point ("RAS"), where the file says; else ""
   GlyphValues values;
   std::vector<std::string> warnings;     // about the data, for the user

@@ -33,6 +33,8 @@ class UniformGrid final : public Field<T> {
 
   const T& node(int i, int j, int k) const;
   const std::array<int, 3>& dims() const { return dims_; }
+  // The values at the nodes, x varying fastest.
+  const std::vector<T>& values() const { return values_; }
 
  private:
   Vec3 origin_, spacing_;

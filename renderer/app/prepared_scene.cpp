@@ -94,7 +94,8 @@ bool carries_stress_sign(ColorScalar scalar) {
 // tension (warm) whichever sign the data calls positive, so that a
 // geomechanics figure and a mechanics one of the same state look alike:
 // with compression positive it is reversed.
-ColorScale color_scale(const SceneSpec& scene, ColorScalar scalar, const std::vector<GlyphSource>& sources) {
+ColorScale color_scale(const SceneSpec& scene, ColorScalar scalar, const std::vector<GlyphSource>& sources,
+                       const std::optional<std::array<double, 2>>& data_extremes) {
   const ColorSpec& spec = scene.color;
   std::vector<double> values;
   values.reserve(sources.size());
@@ -107,10 +108,21 @@ ColorScale color_scale(const SceneSpec& scene, ColorScalar scalar, const std::ve
       carries_stress_sign(scalar))
     automatic = &colormap_named(automatic->name + "_r");
   const Colormap& map = *automatic;
-  if (!spec.range && !natural) return auto_scale(map, values, spec.symmetric.value_or(map.diverging), spec.log);
-  const std::array<double, 2> range = spec.range ? *spec.range : *natural;
-  ColorScale scale{&map, range[0], range[1], spec.log};
-  record_extremes(scale, values);
+  ColorScale scale{&map, 0.0, 1.0, spec.log};
+  if (!spec.range && !natural) {
+    scale = auto_scale(map, values, spec.symmetric.value_or(map.diverging), spec.log);
+  } else {
+    const std::array<double, 2> range = spec.range ? *spec.range : *natural;
+    scale.lo = range[0], scale.hi = range[1];
+    record_extremes(scale, values);
+  }
+  // The data's own extremes where the glyphs do not reach them: the bar
+  // marks them (a log scale's only where positive).
+  if (data_extremes) {
+    const auto [lo, hi] = *data_extremes;
+    if (!spec.log || lo > 0.0) scale.data_lo = std::isnan(scale.data_lo) ? lo : std::min(scale.data_lo, lo);
+    if (!spec.log || hi > 0.0) scale.data_hi = std::isnan(scale.data_hi) ? hi : std::max(scale.data_hi, hi);
+  }
   return scale;
 }
 
@@ -404,7 +416,7 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   const Box3& domain = p.glyphs.domain;
   const double diagonal = domain.diagonal();
 
-  p.scale = color_scale(s, p.glyphs.color, p.glyphs.sources);
+  p.scale = color_scale(s, p.glyphs.color, p.glyphs.sources, p.glyphs.color_extremes);
   p.resolve("color.map", p.scale.map->name);
   p.resolve("color.range", toml::array{p.scale.lo, p.scale.hi});
   std::vector<std::array<float, 3>> colors;
