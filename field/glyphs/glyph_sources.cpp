@@ -108,11 +108,18 @@ std::vector<GlyphSource> place_sources(const Trajectory& trajectory, double spac
   if (trajectory.points.empty()) return sources;
 
   // As many sources as fit at `spacing`, the run centred on the curve so
-  // both ends look alike.
+  // both ends look alike; round a loop, the whole number nearest its
+  // length over `spacing`, evenly (a source at each end of the seam would
+  // swell the blend there).
   const double total = trajectory.length();
   // The caller has checked the count against memory, so it fits.
-  const std::size_t count = static_cast<std::size_t>(source_count(trajectory, spacing));
-  const double first = 0.5 * (total - static_cast<double>(count - 1) * spacing);
+  std::size_t count = static_cast<std::size_t>(source_count(trajectory, spacing));
+  double first = 0.5 * (total - static_cast<double>(count - 1) * spacing);
+  if (trajectory.closed()) {
+    count = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(total / spacing)));
+    spacing = total / static_cast<double>(count);
+    first = 0.0;
+  }
   sources.reserve(count);
   const ArcLength curve(trajectory.points);
   for (std::size_t i = 0; i < count; ++i)

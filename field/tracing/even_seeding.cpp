@@ -67,6 +67,9 @@ struct TakenLater {
 // Cuts each half of `t` where it comes back within `radius` of its own
 // earlier part (more than four radii of arc away, so a curve's own
 // neighbouring points never count): a closed tensor line becomes one ring.
+// A forward half that comes back to its seed is that ring whole, closed
+// at the seed (its backward half would go round again); cut there as
+// anywhere else, it stopped a radius short and left a gap in the ring.
 void stop_at_own_approach(Trajectory& t, double radius) {
   NearbyPoints own(std::max(radius, 1e-300));
   const std::size_t seed = t.seed_index;
@@ -88,6 +91,15 @@ void stop_at_own_approach(Trajectory& t, double radius) {
   };
   const std::size_t last = walk(+1);
   if (last + 1 < t.points.size()) {
+    const Vec3 seed_point = t.points[seed];
+    if ((t.points[last + 1] - seed_point).norm() < radius) {
+      t.points.resize(last + 1);
+      t.points.push_back(seed_point);
+      t.points.erase(t.points.begin(), t.points.begin() + std::ptrdiff_t(seed));
+      t.seed_index = 0;
+      t.forward_stop = t.backward_stop = StopReason::closed;
+      return;
+    }
     t.points.resize(last + 1);
     t.forward_stop = StopReason::too_close;
   }

@@ -82,6 +82,9 @@ struct Trajectory {
   StopReason forward_stop = StopReason::max_length;
 
   double length() const;
+  // Round a loop: its last point comes back to its first (both ends
+  // stopped as `closed`), and glyphs go evenly round it with no seam.
+  bool closed() const { return forward_stop == StopReason::closed && backward_stop == StopReason::closed; }
 };
 
 // What integration sees at one point: the followed eigenvector (unit,

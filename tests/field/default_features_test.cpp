@@ -202,6 +202,37 @@ TEST(DefaultFeatures, ABentBeamGetsLinesInBothHalves) {
 // Stress in pascals and the same as "strain" a million times smaller: the
 // same trajectories, seeds and glyph places. Direction fields do not
 // depend on the unit; nothing in the integrator or the seeding may.
+// Lamé's thick tube under internal pressure: hoop tension, radial
+// compression. The hoop lines are whole rings, closed where they began
+// (they stopped a line's separation short of their seed, a gap in every
+// ring).
+TEST(DefaultFeatures, ATubesHoopLinesAreClosedRings) {
+  constexpr double a = 0.5, b = 1.0, p = 1e6;
+  const auto lame = [&](const Vec3& x) -> std::optional<Sym3> {
+    const double r = std::hypot(x.x(), x.y());
+    if (r < a || r > b) return std::nullopt;
+    const double k = p * a * a / (b * b - a * a), radial = k * (1 - b * b / (r * r)), hoop = k * (1 + b * b / (r * r));
+    const double c = x.x() / r, s = x.y() / r;
+    Sym3 out;
+    out.xx = radial * c * c + hoop * s * s;
+    out.yy = radial * s * s + hoop * c * c;
+    out.xy = (radial - hoop) * s * c;
+    out.zz = 0.3 * (radial + hoop);
+    return out;
+  };
+  const GlyphScene scene = default_scene(grid_file("lame.vti", {Vec3(-1, -1, 0), Vec3(1, 1, 0.2)}, {81, 81, 9}, lame));
+  std::size_t rings = 0;
+  for (const Trajectory& t : scene.trajectories) {
+    if (t.family != EigenFamily::major || t.length() < 2.0) continue;  // a hoop line: at least r = ½ round
+    ASSERT_TRUE(t.closed()) << "a hoop line of length " << t.length() << " is not a ring";
+    EXPECT_EQ(t.points.front(), t.points.back());
+    const double r = std::hypot(t.points.front().x(), t.points.front().y());
+    EXPECT_NEAR(t.length(), 2 * M_PI * r, 0.02 * 2 * M_PI * r);
+    ++rings;
+  }
+  EXPECT_GE(rings, 2u);
+}
+
 TEST(DefaultFeatures, TrajectoriesDoNotDependOnTheStressUnit) {
   const GlyphScene pascals = default_scene(grid_file("kirsch_pa.vti", kPlate, kPlateGrid, kirsch));
   const GlyphScene scaled = default_scene(grid_file("kirsch_micro.vti", kPlate, kPlateGrid, kirsch, 1e-6));

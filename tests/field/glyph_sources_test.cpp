@@ -61,6 +61,28 @@ TEST(PlaceSources, EquallySpacedAndCentred) {
     EXPECT_LE((c[i] - Vec3(0.025 + 0.2 * static_cast<double>(i), 0, 0)).norm(), 1e-12) << i;
 }
 
+// Round a closed loop the sources go evenly, as many as the spacing
+// nearest fits, with none doubled where the loop closes: a loop of 20.05
+// spacings, placed as an open run (21 sources over 20 spacings, centred),
+// has its first and last source a twentieth of a spacing apart, a blend
+// swollen at the seam.
+TEST(PlaceSources, EvenlyRoundALoopWithNoSeam) {
+  const ConstantField f;
+  std::vector<Vec3> circle;
+  for (int i = 0; i <= 2000; ++i) circle.emplace_back(std::cos(2 * M_PI * i / 2000), std::sin(2 * M_PI * i / 2000), 0);
+  Trajectory loop = polyline(circle);
+  const double spacing = loop.length() / 20.05;
+  const std::vector<Vec3> open = centres(place_sources(f, loop, spacing, ColorScalar::lambda3));
+  ASSERT_EQ(open.size(), 21u);
+  EXPECT_LT((open.front() - open.back()).norm(), 0.1 * spacing);
+  loop.forward_stop = loop.backward_stop = StopReason::closed;
+  ASSERT_TRUE(loop.closed());
+  const std::vector<Vec3> c = centres(place_sources(f, loop, spacing, ColorScalar::lambda3));
+  ASSERT_EQ(c.size(), 20u);
+  for (std::size_t i = 0; i < c.size(); ++i)
+    EXPECT_NEAR((c[(i + 1) % c.size()] - c[i]).norm(), 2 * std::sin(M_PI / 20), 1e-5) << i;
+}
+
 TEST(PlaceSources, WholeNumberOfSpacingsReachesBothEnds) {
   const ConstantField f;
   const Trajectory t = polyline({Vec3(0, 0, 0), Vec3(0.3, 0, 0), Vec3(1.0, 0, 0)});
