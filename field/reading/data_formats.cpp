@@ -73,8 +73,16 @@ std::vector<DataFormat> build_formats() {
       {"Gmsh mesh", {".msh"}, gmsh, nullptr, convert},
       {"Abaqus input", {".inp"}, abaqus_input, nullptr, convert},
       {"Abaqus output database", {".odb"}, nullptr, nullptr, "export the field output to .vtu (Abaqus/CAE or a VTK exporter)"},
-      {"MED (Code_Aster, Salome)", {".med", ".rmed"}, nullptr, nullptr, convert},
-      {"XDMF", {".xdmf", ".xmf"}, xdmf, nullptr, convert},
+      // MED files are HDF5 inside. meshio knows .med only by name (-i med
+      // for .rmed), and Debian 12's meshio 5.0 fails writing MED's field
+      // records to .vtu; its legacy .vtk keeps the fields.
+      {"MED (Code_Aster, Salome)", {".med", ".rmed"}, nullptr, nullptr,
+       "convert it with meshio convert -i med FILE out.vtk, or ParaView's MED reader and Save Data", "HDF5"},
+      // meshio 5.0 writes a 2-D result's 2×2 tensors to .vtu and .vtk
+      // without their component count: ParaView's converts them whole.
+      {"XDMF", {".xdmf", ".xmf"}, xdmf, nullptr,
+       "open it in ParaView and Save Data as .vtu (meshio convert FILE out.vtu loses the component count of a "
+       "2-D result's 2×2 tensors)"},
       {"HDF5", {".h5", ".hdf5"}, hdf5, nullptr, convert},
       {"Gmsh or OpenFOAM results", {".pos", ".foam"}, nullptr, nullptr, convert},
   };
@@ -167,7 +175,7 @@ std::string unreadable_format_message(const std::string& path) {
   if (format && format->readable() && by_name && by_name->reader == format->reader) return "";
   std::string text = path + ": ";
   if (format) {
-    text += "a " + format->name + " file (by its " +
+    text += "a file in the " + format->name + " format (by its " +
             std::string(by_name == format && by_content == format ? "name and content"
                         : by_content == format                     ? "content"
                                                                    : "name") +

@@ -67,12 +67,12 @@ for command in render info export; do
   [[ $command == info ]] || args+=(-o "$work/formats")
   out=$("$hsb" $command "${args[@]}" 2>&1); status=$?
   [[ $status == 1 ]] || fail "$command of a Gmsh file: exit $status: $out"
-  grep -q "bracket.msh: a Gmsh mesh file (by its name and content), which hsb does not read: .*hsb reads legacy VTK" <<<"$out" ||
+  grep -q "bracket.msh: a file in the Gmsh mesh format (by its name and content), which hsb does not read: .*hsb reads legacy VTK" <<<"$out" ||
     fail "$command of a Gmsh file: $out"
 done
 printf '[data]\nfile = "bracket.msh"\n' > "$work/msh_scene.toml"
 out=$("$hsb" render "$work/msh_scene.toml" -o "$work/formats" 2>&1)
-grep -q "msh_scene.toml:2:8: data.file names .*bracket.msh: a Gmsh mesh file" <<<"$out" || fail "a scene naming Gmsh: $out"
+grep -q "msh_scene.toml:2:8: data.file names .*bracket.msh: a file in the Gmsh mesh format" <<<"$out" || fail "a scene naming Gmsh: $out"
 "$hsb" info --formats | grep -q "^Gmsh mesh	.msh	no: " || fail "hsb info --formats lists no Gmsh"
 "$hsb" info --formats | grep -q "^NRRD	.nrrd .nhdr	yes" || fail "hsb info --formats does not list NRRD as read"
 
