@@ -4,7 +4,6 @@
 #include "renderer/surface/single_source.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -87,25 +86,30 @@ double FieldRay::first_crossing(const BlobField& field, const Vec3& origin, cons
     spans.erase(std::remove_if(spans.begin(), spans.end(), [&](const RaySpan& s) { return s.t0 > upper; }),
                 spans.end());
   grouped_spans_.swap(spans);
+  // The groups the ray meets (a few: the line families), in their order.
   group_of_.clear();
-  for (const RaySpan& s : grouped_spans_) group_of_.push_back(field.groups[s.source]);
-  std::array<bool, 256> present{};
-  for (std::uint8_t g : group_of_) present[g] = true;
-  double best = -1.0;
-  int best_group = -1;
-  for (int g = 0; g < 256; ++g) {
-    if (!present[std::size_t(g)]) continue;
+  groups_met_.clear();
+  for (const RaySpan& s : grouped_spans_) {
+    const std::uint8_t g = field.groups[s.source];
+    group_of_.push_back(g);
+    if (std::find(groups_met_.begin(), groups_met_.end(), g) == groups_met_.end()) groups_met_.push_back(g);
+  }
+  std::sort(groups_met_.begin(), groups_met_.end());
+  const auto take_group = [&](std::uint8_t g) {
     spans.clear();
     for (std::size_t i = 0; i < grouped_spans_.size(); ++i)
       if (group_of_[i] == g) spans.push_back(grouped_spans_[i]);
+  };
+  double best = -1.0;
+  std::uint8_t best_group = 0;
+  for (const std::uint8_t g : groups_met_) {
+    take_group(g);
     const double t = group_crossing(field, origin, direction, tmin, best >= 0.0 ? best : tmax, settings, stats, query);
     if (t >= 0.0 && (best < 0.0 || t < best)) best = t, best_group = g;
     if (best >= 0.0 && query == CrossingQuery::any) break;
   }
   // surface_at() shades the group that was hit, from all of its spans.
-  spans.clear();
-  for (std::size_t i = 0; i < grouped_spans_.size(); ++i)
-    if (group_of_[i] == best_group) spans.push_back(grouped_spans_[i]);
+  if (best >= 0.0 && best_group != groups_met_.back()) take_group(best_group);
   return best;
 }
 

@@ -89,7 +89,7 @@ class FieldRay {
   // Every group's spans, and each one's group, while first_crossing()
   // takes the groups one at a time.
   std::vector<RaySpan> grouped_spans_;
-  std::vector<std::uint8_t> group_of_;
+  std::vector<std::uint8_t> group_of_, groups_met_;
 
   // For an `any` query, the first step at or above C is the answer.
   double sphere_trace(const BlobField& field, double tmin, double tmax, const TraceSettings& settings,
