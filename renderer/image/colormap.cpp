@@ -56,7 +56,11 @@ const Colormap& colormap_named(const std::string& name) {
   throw std::invalid_argument("unknown colormap \"" + name + "\"");
 }
 
+bool ColorScale::centred_on_zero() const { return map && map->diverging && !log && lo < 0.0 && hi > 0.0; }
+
 double ColorScale::normalized(double value) const {
+  // (A symmetric range is already centred: the one formula, to the bit.)
+  if (centred_on_zero() && lo != -hi) return value < 0.0 ? 0.5 - 0.5 * value / lo : 0.5 + 0.5 * value / hi;
   if (!log) return (value - lo) / (hi - lo);
   if (!(value > 0.0)) return 0.0;
   return (std::log10(value) - std::log10(lo)) / (std::log10(hi) - std::log10(lo));
@@ -135,10 +139,20 @@ ColorScale auto_scale(const Colormap& map, const std::vector<double>& values, bo
   }
   if (finite.empty()) return scale;
   if (symmetric) {
-    for (double& v : finite) v = std::fabs(v);
+    // Each side's fence, and both sides' together.
+    std::vector<double> below, above;
+    for (double& v : finite) {
+      if (v < 0.0) below.push_back(-v);
+      else if (v > 0.0) above.push_back(v);
+      v = std::fabs(v);
+    }
     const double m = fenced(finite)[1];
     scale.lo = -m;
     scale.hi = m;
+    if (!below.empty() && !above.empty() && map.diverging) {
+      const double m_below = fenced(below)[1], m_above = fenced(above)[1];
+      if (std::max(m_below, m_above) > kSidesApart * std::min(m_below, m_above)) scale.lo = -m_below, scale.hi = m_above;
+    }
   } else {
     const std::array<double, 2> range = fenced(finite);
     scale.lo = range[0];

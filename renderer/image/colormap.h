@@ -47,8 +47,13 @@ struct ColorScale {
   bool clipped_high() const { return data_hi > hi; }
 
   // Where `value` lies in the range, 0 at lo and 1 at hi (not clamped;
-  // with `log`, values ≤ 0 are at lo).
+  // with `log`, values ≤ 0 are at lo). A diverging map over a range
+  // across zero is centred on zero (centred_on_zero): each half of the
+  // range is spread over its half of the map, so the neutral colour is
+  // zero stress and tension and compression of different sizes both
+  // reach their full colour.
   double normalized(double value) const;
+  bool centred_on_zero() const;
   Rgb srgb(double value) const { return map->at(normalized(value)); }
 };
 
@@ -62,10 +67,15 @@ struct ColorScale {
 // bound) lie beyond the fence and are clipped, so they do not flatten
 // every other colour, and the bar marks the clipping (data_lo, data_hi).
 // `symmetric` (signed stress, where zero should look neutral): [−m, m],
-// with m the same fence over |v|. `log`: the same over log10 of the
+// with m the same fence over |v|; unless the fence over the positive
+// values and the one over the negative values' magnitudes differ more than
+// kSidesApart times (a disc's +25 MPa of splitting tension beside
+// −970 MPa under its loads): then each side's own, [−m₋, m₊], centred on
+// zero, where one m for both left the smaller side too pale to read. `log`: the same over log10 of the
 // positive values. A degenerate range is widened so normalized() stays
 // finite.
 ColorScale auto_scale(const Colormap& map, const std::vector<double>& values, bool symmetric, bool log);
+constexpr double kSidesApart = 3.0;
 
 // The map named, else the automatic one for `values`: "coolwarm",
 // centred on zero, for values of both signs (both_signs), "viridis" for

@@ -54,14 +54,37 @@ std::string value_label(double value, int exponent) {
   return fixed(v, std::max(0, 2 - digits));
 }
 
+namespace {
+
+// Plain digits between 10⁻³ and 10⁴; beyond, a shared factor of 10ᵉ (a
+// multiple of three, as engineers write units).
+int factor_exponent(double largest) {
+  return largest >= 1e4 || largest < 1e-3 ? 3 * int(std::floor(std::log10(largest) / 3.0)) : 0;
+}
+
+TickSet ticks_in_unit(double lo, double hi, int target, int exponent);
+
+}  // namespace
+
 TickSet linear_ticks(double lo, double hi, int target) {
+  if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi)) return {};
+  return ticks_in_unit(lo, hi, target, factor_exponent(std::max(std::fabs(lo), std::fabs(hi))));
+}
+
+TickSet two_sided_ticks(double lo, double hi, int target) {
+  if (!(lo < 0.0 && hi > 0.0) || !std::isfinite(lo) || !std::isfinite(hi)) return linear_ticks(lo, hi, target);
+  const int exponent = factor_exponent(std::max(-lo, hi)), half = std::max(2, (target + 1) / 2);
+  TickSet set = ticks_in_unit(lo, 0.0, half, exponent);
+  for (Tick& t : ticks_in_unit(0.0, hi, half, exponent).ticks)
+    if (t.value > 0.0) set.ticks.push_back(std::move(t));
+  return set;
+}
+
+namespace {
+
+TickSet ticks_in_unit(double lo, double hi, int target, int exponent) {
   TickSet set;
-  if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi)) return set;
   const double largest = std::max(std::fabs(lo), std::fabs(hi));
-  // Plain digits between 10⁻³ and 10⁴; beyond, a shared factor of 10ᵉ
-  // (a multiple of three, as engineers write units).
-  int exponent = 0;
-  if (largest >= 1e4 || largest < 1e-3) exponent = 3 * int(std::floor(std::log10(largest) / 3.0));
   const double unit = std::pow(10.0, exponent);
   if (exponent != 0) set.factor = "\u00d7" + power_of_ten(exponent);
   set.exponent = exponent;
@@ -91,6 +114,8 @@ TickSet linear_ticks(double lo, double hi, int target) {
   }
   return set;
 }
+
+}  // namespace
 
 TickSet log_ticks(double lo, double hi) {
   TickSet set;

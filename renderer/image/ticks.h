@@ -27,6 +27,10 @@ std::string value_label(double value, int exponent);
 
 // About `target` ticks (at least 2 where the range allows) inside [lo, hi].
 TickSet linear_ticks(double lo, double hi, int target = 5);
+// A range centred on zero with sides of different sizes (lo < 0 < hi; a
+// colour bar's halves, ColorScale::centred_on_zero): each half's own
+// round ticks, about target/2 of them, zero once, one factor for all.
+TickSet two_sided_ticks(double lo, double hi, int target = 5);
 // Powers of ten inside [lo, hi] (lo > 0), with 2 and 5 between them when
 // the range spans less than two decades.
 TickSet log_ticks(double lo, double hi);

@@ -185,6 +185,37 @@ TEST_F(Color, AutoRangeKeepsAStressConcentration) {
   EXPECT_DOUBLE_EQ(scale.lo, 9.0);
 }
 
+// A disc split by +25 of tension under −970 of compression: one fence
+// for both sides painted the tension white. Sides more than kSidesApart
+// times apart keep their own fences, and a diverging map centred on zero
+// spreads each over its half; sides alike stay one symmetric range.
+TEST_F(Color, SidesFarApartKeepTheirOwnRangesCentredOnZero) {
+  std::vector<double> values;
+  for (int i = 0; i < 500; ++i) values.push_back(25.0 * (i + 1) / 500.0);   // (0, 25]
+  for (int i = 0; i < 500; ++i) values.push_back(-970.0 * (i + 1) / 500.0);  // [−970, 0)
+  const Colormap& coolwarm = colormap_named("coolwarm");
+  const ColorScale apart = auto_scale(coolwarm, values, true, false);
+  EXPECT_DOUBLE_EQ(apart.lo, -970.0);
+  EXPECT_DOUBLE_EQ(apart.hi, 25.0);
+  ASSERT_TRUE(apart.centred_on_zero());
+  EXPECT_DOUBLE_EQ(apart.normalized(0.0), 0.5);
+  EXPECT_DOUBLE_EQ(apart.normalized(25.0), 1.0);
+  EXPECT_DOUBLE_EQ(apart.normalized(12.5), 0.75);  // the tension's own half of the map
+  EXPECT_DOUBLE_EQ(apart.normalized(-970.0), 0.0);
+  EXPECT_DOUBLE_EQ(apart.normalized(-485.0), 0.25);
+  // Within kSidesApart: one symmetric range, as before (normalized to the
+  // bit of the linear formula).
+  for (double& v : values)
+    if (v > 0.0) v *= 20.0;  // (0, 500]
+  const ColorScale alike = auto_scale(coolwarm, values, true, false);
+  EXPECT_DOUBLE_EQ(alike.lo, -970.0);
+  EXPECT_DOUBLE_EQ(alike.hi, 970.0);
+  EXPECT_EQ(alike.normalized(123.0), (123.0 - alike.lo) / (alike.hi - alike.lo));
+  // A sequential map is never centred; nor a range that does not cross zero.
+  EXPECT_FALSE((ColorScale{&colormap_named("viridis"), -970.0, 25.0}).centred_on_zero());
+  EXPECT_FALSE((ColorScale{&coolwarm, 1.0, 25.0}).centred_on_zero());
+}
+
 TEST_F(Color, SignedValuesAreBothSignsOnlyBeyondAHundredthOfTheLargest) {
   EXPECT_TRUE(both_signs({-5.0, 3.0, 1.0}));
   EXPECT_FALSE(both_signs({-5.0, 0.0, 0.01}));  // round-off above zero: one-signed

@@ -37,6 +37,26 @@ TEST(Ticks, OrdinaryRangesGetRoundStepsAndPlainLabels) {
   expect_inside_and_increasing(c, 2e6, 9e6);
 }
 
+// A bar centred on zero with sides of different sizes: each half its own
+// round steps, zero once, one factor for both.
+TEST(Ticks, TwoSidedRangesGetEachHalfsOwnSteps) {
+  const TickSet disc = two_sided_ticks(-968.0, 24.5);
+  expect_inside_and_increasing(disc, -968.0, 24.5);
+  int zeros = 0, above = 0, below = 0;
+  for (const Tick& t : disc.ticks) zeros += t.value == 0.0, above += t.value > 0.0, below += t.value < 0.0;
+  EXPECT_EQ(zeros, 1);
+  EXPECT_GE(above, 2);  // 10, 20: linear ticks over [−968, 24.5] had none above zero
+  EXPECT_GE(below, 2);
+  EXPECT_TRUE(disc.factor.empty());
+  const TickSet huge = two_sided_ticks(-5e7, 1.6e9);
+  expect_inside_and_increasing(huge, -5e7, 1.6e9);
+  EXPECT_EQ(huge.factor, "\u00d710\u2079");  // the larger side's
+  EXPECT_EQ(huge.ticks.front().value, -4e7);
+  EXPECT_EQ(huge.ticks.front().label, "\u22120.04");
+  // A range on one side of zero is an ordinary one.
+  EXPECT_EQ(two_sided_ticks(2.0, 9.0).ticks.size(), linear_ticks(2.0, 9.0).ticks.size());
+}
+
 // Ranges that are one value up to round-off once looped for ever (a tick
 // step below the values' resolution), at any magnitude.
 TEST(Ticks, RangesConstantUpToRoundOffGiveOneTickAtOnce) {
