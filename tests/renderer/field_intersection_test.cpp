@@ -125,6 +125,22 @@ TEST(Blending, TwoNearbySourcesBlendWhereEachAloneWouldMiss) {
   EXPECT_LT(trace(unioned, o, d), 0.0);
 }
 
+// The pair's first crossing along o + t d, by `tracer` given both its
+// spans (whose last spans then shade it).
+double crossing_with_both_spans(const BlobField& pair, FieldRay& tracer, const Vec3& o, const Vec3& d,
+                                const TraceSettings& settings) {
+  for (std::uint32_t i = 0; i < 2; ++i) {
+    RaySpan span;
+    if (!ray_span(pair.sources[i], i, 0, o, d, 0.0, 100.0, span)) {
+      ADD_FAILURE() << "the ray misses source " << i;
+      return -1.0;
+    }
+    tracer.spans.push_back(span);
+  }
+  TraceStats stats;
+  return tracer.first_crossing(pair, o, d, 0.0, 100.0, settings, stats);
+}
+
 // Sources of two groups (two line families) are two surfaces: the pair's
 // blend between them is gone, each source still stands as it does alone,
 // and what a ray hits is shaded by its own group alone. For both
@@ -150,13 +166,7 @@ TEST(Blending, GroupsAreSurfacesOfTheirOwn) {
       // colour is pure red.
       const Vec3 o(-0.3, -5, 0), d(0, 1, 0);
       FieldRay tracer;
-      TraceStats stats;
-      for (std::uint32_t i = 0; i < 2; ++i) {
-        RaySpan span;
-        ASSERT_TRUE(ray_span(pair.sources[i], i, 0, o, d, 0.0, 100.0, span));
-        tracer.spans.push_back(span);
-      }
-      const double t = tracer.first_crossing(pair, o, d, 0.0, 100.0, settings, stats);
+      const double t = crossing_with_both_spans(pair, tracer, o, d, settings);
       ASSERT_GT(t, 0.0) << what;
       const SurfaceSample sample = tracer.surface_at(pair, o, d, t);
       EXPECT_FLOAT_EQ(sample.color[0], 1.0f) << what;
@@ -171,13 +181,7 @@ TEST(Blending, ColourIsTheInfluenceWeightedMixAndNormalIsTheGradient) {
   const BlobField pair = blob_pair();
   const Vec3 o(-0.1, -5, 0), d(0, 1, 0);
   FieldRay tracer;
-  TraceStats stats;
-  for (std::uint32_t i = 0; i < 2; ++i) {
-    RaySpan span;
-    ASSERT_TRUE(ray_span(pair.sources[i], i, 0, o, d, 0.0, 100.0, span));
-    tracer.spans.push_back(span);
-  }
-  const double t = tracer.first_crossing(pair, o, d, 0.0, 100.0, TraceSettings{}, stats);
+  const double t = crossing_with_both_spans(pair, tracer, o, d, TraceSettings{});
   ASSERT_GT(t, 0.0);
   const Vec3 x = o + t * d;
   EXPECT_NEAR(field_value(pair, x), 0.5, 1e-9);
