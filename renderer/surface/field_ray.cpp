@@ -73,18 +73,8 @@ double FieldRay::first_crossing(const BlobField& field, const Vec3& origin, cons
   // Each group's surface on its own, the nearest first crossing of any
   // (an `any` query: the first group that has one). A single source's
   // entry bounds the union's first crossing as it bounds its own group's,
-  // so the spans beyond the earliest go first, as group_crossing() would
-  // drop them: which of them the span query gathered depends on the
-  // order it met them in, and the answer must not.
-  const double g_level = level_g(field.kernel, field.isovalue);
-  double upper = -1.0;
-  for (const RaySpan& s : spans) {
-    const double t = single_source_entry(s, inner_level_g(field, s.source, g_level), tmin, tmax);
-    if (t >= 0.0 && (upper < 0.0 || t < upper)) upper = t;
-  }
-  if (upper >= 0.0)
-    spans.erase(std::remove_if(spans.begin(), spans.end(), [&](const RaySpan& s) { return s.t0 > upper; }),
-                spans.end());
+  // so the spans beyond the earliest of all go first.
+  drop_spans_beyond_first_entry(field, tmin, tmax);
   grouped_spans_.swap(spans);
   // The groups the ray meets (a few: the line families), in their order.
   group_of_.clear();
@@ -113,6 +103,30 @@ double FieldRay::first_crossing(const BlobField& field, const Vec3& origin, cons
   return best;
 }
 
+double FieldRay::drop_spans_beyond_first_entry(const BlobField& field, double tmin, double tmax) {
+  // The earliest entry into a single source's own level surface (for a
+  // shape other than the ellipsoid, into the ball inside it that bounds
+  // it, found without evaluating the shape): F ≥ C there whatever the
+  // others add (single_source.h).
+  const double g_level = level_g(field.kernel, field.isovalue);
+  double upper = -1.0;
+  for (const RaySpan& s : spans) {
+    const double t = single_source_entry(s, inner_level_g(field, s.source, g_level), tmin, tmax);
+    if (t >= 0.0 && (upper < 0.0 || t < upper)) upper = t;
+  }
+  // A span query stops collecting at such an entry (blob_geometry.cpp):
+  // which sources beyond the earliest one it holds depends on the order
+  // the traversal met them in. None of them is non-zero before that entry,
+  // where the answer lies, so all are left out, and the answer is the same
+  // to the bit however the spans were gathered (a list, a traversal, any
+  // BVH width). (The entering source itself begins before its entry, and
+  // stays.)
+  if (upper >= 0.0)
+    spans.erase(std::remove_if(spans.begin(), spans.end(), [&](const RaySpan& s) { return s.t0 > upper; }),
+                spans.end());
+  return upper;
+}
+
 double FieldRay::group_crossing(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin,
                                 double tmax, const TraceSettings& settings, TraceStats& stats,
                                 CrossingQuery query) {
@@ -125,27 +139,8 @@ double FieldRay::group_crossing(const BlobField& field, const Vec3& origin, cons
   // shape): when even that is below C, so is F.
   const double c = field.isovalue;
   const double g_level = level_g(field.kernel, c);
-  // The earliest entry into a single source's own level surface (for a
-  // shape other than the ellipsoid, into the ball inside it that bounds
-  // it, found without evaluating the shape): F ≥ C there whatever the
-  // others add (single_source.h).
-  double upper = -1.0;
-  for (const RaySpan& s : spans) {
-    const double t = single_source_entry(s, inner_level_g(field, s.source, g_level), tmin, tmax);
-    if (t >= 0.0 && (upper < 0.0 || t < upper)) upper = t;
-  }
-  if (upper >= 0.0) {
-    // A span query stops collecting at such an entry (blob_geometry.cpp):
-    // which sources beyond the earliest one it holds depends on the order
-    // the traversal met them in. None of them is non-zero before that
-    // entry, where the answer lies, so all are left out, and the answer is
-    // the same to the bit however the spans were gathered (a list, a
-    // traversal, any BVH width). (The entering source itself begins before
-    // its entry, and stays.) An `any` query has its answer.
-    if (query == CrossingQuery::any) return upper;
-    spans.erase(std::remove_if(spans.begin(), spans.end(), [&](const RaySpan& s) { return s.t0 > upper; }),
-                spans.end());
-  }
+  double upper = drop_spans_beyond_first_entry(field, tmin, tmax);
+  if (upper >= 0.0 && query == CrossingQuery::any) return upper;  // an `any` query has its answer
   double at_start = 0.0, peaks = 0.0, last_peak = tmin;
   peaks_.resize(spans.size());
   for (std::uint32_t i = 0; i < spans.size(); ++i) {

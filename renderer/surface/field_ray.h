@@ -86,6 +86,9 @@ class FieldRay {
   // first_crossing() of one group's sources, the spans.
   double group_crossing(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin, double tmax,
                         const TraceSettings& settings, TraceStats& stats, CrossingQuery query);
+  // The earliest entry into one source's own level surface in [tmin,
+  // tmax] (F ≥ C there), or −1; the spans that begin beyond it dropped.
+  double drop_spans_beyond_first_entry(const BlobField& field, double tmin, double tmax);
   // Every group's spans, and each one's group, while first_crossing()
   // takes the groups one at a time.
   std::vector<RaySpan> grouped_spans_;
