@@ -39,7 +39,7 @@ std::optional<std::array<double, 2>> data_color_extremes(const TensorField& fiel
       [&](const tbb::blocked_range<std::size_t>& block, Range range) {
         for (std::size_t i = block.begin(); i < block.end(); ++i) {
           const Sym3& t = (*values)[i];
-          if (!t.is_finite() || t.matrix().cwiseAbs().maxCoeff() == 0.0) continue;
+          if (!t.holds_data()) continue;
           const Vec3 l = decompose(t).values;
           range[0] = std::min(range[0], color_scalar(l, low));
           range[1] = std::max(range[1], color_scalar(l, high));

@@ -546,8 +546,7 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
     // surface of the rest.
     if (auto* image = vtkImageData::SafeDownCast(data); image && spec.boundary && chosen.on_points) {
       std::vector<std::uint8_t> has_data(tensors.size());
-      for (std::size_t i = 0; i < tensors.size(); ++i)
-        has_data[i] = tensors[i].is_finite() && tensors[i].matrix().cwiseAbs().maxCoeff() > 0.0;
+      for (std::size_t i = 0; i < tensors.size(); ++i) has_data[i] = tensors[i].holds_data();
       region = data_region_surface(image, has_data);
     }
     if (!volume) {

@@ -33,6 +33,10 @@ bool Sym3::is_finite() const {
          std::isfinite(yz) && std::isfinite(xz);
 }
 
+bool Sym3::holds_data() const {
+  return is_finite() && (xx != 0.0 || yy != 0.0 || zz != 0.0 || xy != 0.0 || yz != 0.0 || xz != 0.0);
+}
+
 Sym3 operator+(const Sym3& a, const Sym3& b) {
   return {a.xx + b.xx, a.yy + b.yy, a.zz + b.zz, a.xy + b.xy, a.yz + b.yz, a.xz + b.xz};
 }

@@ -17,6 +17,9 @@ struct Sym3 {
   Mat3 matrix() const;
   double frobenius_norm() const;
   bool is_finite() const;
+  // Finite and not all zero: a value of the data (diffusion tools write
+  // exact zeros outside the brain's mask, a voxel model in its void).
+  bool holds_data() const;
 };
 
 Sym3 operator+(const Sym3& a, const Sym3& b);

@@ -1,6 +1,5 @@
 #include "renderer/app/povray_export.h"
 
-#include <array>
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
@@ -68,11 +67,7 @@ void write_povray_scene(const BlobField& field, const CameraSpec& camera, const 
       << " roughness " << 1.0 / shading.shininess << " }\n";
   // One blob per group of sources (BlobField::groups): each blends within
   // itself, and POV-Ray draws the blobs side by side, a union.
-  std::array<bool, 256> present{};
-  for (std::uint8_t g : field.groups) present[g] = true;
-  if (field.groups.empty()) present[0] = true;
-  for (std::size_t group = 0; group < present.size(); ++group) {
-    if (!present[group]) continue;
+  for (const std::uint8_t group : field_groups(field)) {
     pov << "blob {\n  threshold " << field.isovalue << "\n";
     for (std::size_t i = 0; i < field.sources.size(); ++i) {
       if (!field.groups.empty() && field.groups[i] != group) continue;

@@ -60,7 +60,7 @@ bool ColorScale::centred_on_zero() const { return map && map->diverging && !log 
 
 double ColorScale::normalized(double value) const {
   // (A symmetric range is already centred: the one formula, to the bit.)
-  if (centred_on_zero() && lo != -hi) return value < 0.0 ? 0.5 - 0.5 * value / lo : 0.5 + 0.5 * value / hi;
+  if (two_sided()) return value < 0.0 ? 0.5 - 0.5 * value / lo : 0.5 + 0.5 * value / hi;
   if (!log) return (value - lo) / (hi - lo);
   if (!(value > 0.0)) return 0.0;
   return (std::log10(value) - std::log10(lo)) / (std::log10(hi) - std::log10(lo));

@@ -54,6 +54,9 @@ struct ColorScale {
   // reach their full colour.
   double normalized(double value) const;
   bool centred_on_zero() const;
+  // Centred on zero with sides of different sizes: the two halves have
+  // scales (and ticks) of their own.
+  bool two_sided() const { return centred_on_zero() && lo != -hi; }
   Rgb srgb(double value) const { return map->at(normalized(value)); }
 };
 

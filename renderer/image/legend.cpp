@@ -236,9 +236,9 @@ void draw_annotations(cairo_t* cr, const LegendLayout& l, const ColorScale& scal
 // The bar's ticks, about `target` of them, and the labels of its clipped
 // ends in their unit.
 void set_ticks(LegendLayout& l, const ColorScale& scale, int target) {
-  l.ticks = scale.log                                       ? log_ticks(scale.lo, scale.hi)
-            : scale.centred_on_zero() && scale.lo != -scale.hi ? two_sided_ticks(scale.lo, scale.hi, target)
-                                                               : linear_ticks(scale.lo, scale.hi, target);
+  l.ticks = scale.log         ? log_ticks(scale.lo, scale.hi)
+            : scale.two_sided() ? two_sided_ticks(scale.lo, scale.hi, target)
+                                : linear_ticks(scale.lo, scale.hi, target);
   const int exponent = scale.log ? 0 : l.ticks.exponent;
   if (scale.clipped_high()) l.high_label = "max " + value_label(scale.data_hi, exponent);
   if (scale.clipped_low()) l.low_label = "min " + value_label(scale.data_lo, exponent);

@@ -88,6 +88,14 @@ double source_g(const BlobField& field, std::size_t i, const Vec3& x) {
   return shape_g(field.shape, shape_params(field, i), scaled_offset(s, shape_matrix(s), x));
 }
 
+std::vector<std::uint8_t> field_groups(const BlobField& field) {
+  if (field.groups.empty()) return {0};
+  std::vector<std::uint8_t> groups = field.groups;
+  std::sort(groups.begin(), groups.end());
+  groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
+  return groups;
+}
+
 double field_value(const BlobField& field, const Vec3& x) {
   // Each group's own F; the union's is the largest (its level set is the
   // union of theirs).

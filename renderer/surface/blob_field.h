@@ -60,6 +60,10 @@ BlobField make_blob_field(const std::vector<GlyphSource>& glyphs,
                           double isovalue, GlyphShape shape = GlyphShape::ellipsoid, double sharpness = 3.0,
                           SignConvention sign = SignConvention::tension_positive);
 
+// The groups among the sources (BlobField::groups), in ascending order;
+// {0} where there are none.
+std::vector<std::uint8_t> field_groups(const BlobField& field);
+
 // Source i's shape parameters: the defaults (σ = 1) for ellipsoids, which
 // store none.
 inline const ShapeParams& shape_params(const BlobField& field, std::size_t i) {

@@ -14,10 +14,12 @@
 #include <fstream>
 
 #include "renderer/app/export_job.h"
+#include "renderer/app/povray_export.h"
 #include "renderer/app/prepared_scene.h"
 #include "renderer/scene/scene_spec.h"
 #include "renderer/surface/glyph_shape.h"
 #include "renderer/surface/kernel.h"
+#include "tests/renderer/blob_pair.h"
 #include "tests/temp_dir.h"
 
 namespace hsb {
@@ -140,6 +142,28 @@ TEST(Export, POVRayRefusesSuperquadricsAndWritesNothing) {
     EXPECT_NE(std::string(e.what()).find("glyphs.shape = \"ellipsoid\""), std::string::npos) << e.what();
   }
   EXPECT_FALSE(std::filesystem::exists(dir / "out" / "s.pov"));
+}
+
+// Two groups (two line families) are two surfaces: POV-Ray gets a blob
+// each, so its picture does not blend them either; one group, one blob.
+TEST(Export, POVRayWritesABlobPerGroup) {
+  const auto dir = test_temp_dir("export_pov_groups", true);
+  BlobField field = blob_pair();
+  field.kernel = KernelKind::quartic;
+  const auto blobs_written = [&](const std::string& name) {
+    const std::string pov = (dir / (name + ".pov")).string();
+    write_povray_scene(field, CameraSpec{}, ShadingSpec{}, RenderSettings{}, pov, (dir / (name + ".ini")).string(),
+                       (dir / (name + ".png")).string());
+    std::ifstream in(pov);
+    std::string line;
+    int blobs = 0, spheres = 0;
+    while (std::getline(in, line)) blobs += line.rfind("blob {", 0) == 0, spheres += line.find("sphere {") != std::string::npos;
+    EXPECT_EQ(spheres, 2) << name;
+    return blobs;
+  };
+  EXPECT_EQ(blobs_written("one"), 1);
+  field.groups = {0, 2};
+  EXPECT_EQ(blobs_written("two"), 2);
 }
 
 }  // namespace
