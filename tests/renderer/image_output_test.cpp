@@ -9,8 +9,10 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <filesystem>
 
+#include "renderer/image/dither.h"
 #include "renderer/image/image_io_module.h"
 #include "renderer/image/image_output.h"
 #include "tests/temp_dir.h"
@@ -53,38 +55,80 @@ TEST(ImageOutput, PngAt8And16BitsWithMetadata) {
   }
 }
 
-// The 8-bit picture is dithered and quantised in bands on every core; its
-// bytes must be those OIIO's writer makes of the same floats with
-// oiio:dither on one, alpha (premultiplied, undone by the PNG writer) included.
-TEST(ImageOutput, EightBitsAreOiiosOwnDitheredBytes) {
+// A flat value between two levels is drawn with both, in the proportion
+// that averages to it: no byte is more than a level off, and a patch's
+// mean is the value (a plain rounding would be half a level off, and a
+// gradient would band).
+TEST(Dither, FlatValuesAverageToThemselvesWithinALevel) {
+  constexpr int kSide = 128;
+  for (float level : {0.0f, 0.1f, 0.25f, 0.5f, 0.77f, 0.93f}) {
+    const float value = (77.0f + level) / 255.0f;
+    const std::vector<float> pixels(std::size_t(kSide * kSide * 3), value);
+    const std::vector<unsigned char> bytes = dithered_8bit(pixels, kSide, kSide, 3, -1);
+    for (int c = 0; c < 3; ++c) {
+      double sum = 0.0;
+      for (std::size_t i = std::size_t(c); i < bytes.size(); i += 3) {
+        ASSERT_GE(bytes[i], 77) << "level " << level;
+        ASSERT_LE(bytes[i], 78) << "level " << level;
+        sum += bytes[i];
+      }
+      EXPECT_NEAR(sum / double(kSide * kSide), 77.0 + level, 0.01) << "level " << level << " channel " << c;
+    }
+  }
+}
+
+// Alpha is rounded, never dithered (an opaque picture stays opaque, a
+// transparent background stays transparent); values beyond [0, 1] and NaN
+// are clamped, not wrapped.
+TEST(Dither, AlphaIsRoundedAndValuesClamped) {
+  const std::vector<float> pixels = {1.5f, -0.2f, std::nanf(""), 1.0f,  // clamped colour, opaque
+                                     0.0f, 0.0f,  0.0f,          0.0f,  // transparent
+                                     0.2f, 0.2f,  0.2f,          0.5f};
+  const std::vector<unsigned char> bytes = dithered_8bit(pixels, 3, 1, 4, 3);
+  EXPECT_EQ(bytes[0], 255);
+  EXPECT_EQ(bytes[1], 0);
+  EXPECT_EQ(bytes[2], 0);
+  EXPECT_EQ(bytes[3], 255);
+  EXPECT_EQ(bytes[7], 0);
+  EXPECT_EQ(bytes[11], 128);
+}
+
+// The pattern has no low frequencies: neighbouring offsets differ, so a
+// flat region reads as fine grain, and the three channels are shifted so
+// their grain does not coincide.
+TEST(Dither, OffsetsAreFineGrainAndDifferPerChannel) {
+  double step = 0.0, same_channel = 0.0;
+  int n = 0;
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 63; ++x, ++n) {
+      const float o = dither_offset(x, y, 0);
+      ASSERT_GE(o, 0.0f);
+      ASSERT_LT(o, 1.0f);
+      step += std::abs(dither_offset(x + 1, y, 0) - o);
+      same_channel += std::abs(dither_offset(x, y, 1) - o) < 0.02f;
+    }
+  EXPECT_GT(step / n, 0.25);  // white noise: 1/3; a smooth pattern: near 0
+  EXPECT_LT(same_channel / n, 0.1);
+}
+
+// The 8-bit picture a PNG holds is the dithered bytes of its floats.
+TEST(ImageOutput, EightBitPngHoldsTheDitheredBytes) {
   ImageToWrite image;
   image.width = 301;  // not a multiple of any band or tile
   image.height = 157;
-  image.channels = 4;
+  image.channels = 3;
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
-      const float alpha = float((x * 7 + y * 3) % 101) / 100.0f;
       const float shade = 0.25f + 0.5f * float(x) / float(image.width) + 0.003f * float(y % 5);  // a smooth ramp
-      for (float v : {shade, 1.0f - shade, 0.5f * shade}) image.pixels.push_back(v * alpha);
-      image.pixels.push_back(alpha);
+      for (float v : {shade, 1.0f - shade, 0.5f * shade}) image.pixels.push_back(v);
     }
-  const std::string ours = (temp_dir() / "ours.png").string(), oiio = (temp_dir() / "oiio.png").string();
-  write_image(image, ours);
-  OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::UINT8);
-  spec.alpha_channel = 3;
-  spec.attribute("oiio:dither", 1);
-  auto out = OIIO::ImageOutput::create(oiio);
-  ASSERT_TRUE(out && out->open(oiio, spec) && out->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data()) &&
-              out->close());
-  std::vector<unsigned char> a(image.pixels.size()), b(image.pixels.size());
-  for (auto [path, bytes] : {std::pair{ours, &a}, std::pair{oiio, &b}}) {
-    auto in = OIIO::ImageInput::open(path);
-    ASSERT_TRUE(in);
-    ASSERT_TRUE(in->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, bytes->data()));
-  }
-  std::size_t differing = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) differing += a[i] != b[i];
-  EXPECT_EQ(differing, 0u);  // without the same dither, most would differ
+  const std::string path = (temp_dir() / "dithered.png").string();
+  write_image(image, path);
+  std::vector<unsigned char> read(image.pixels.size());
+  auto in = OIIO::ImageInput::open(path);
+  ASSERT_TRUE(in);
+  ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, read.data()));
+  EXPECT_EQ(read, dithered_8bit(image.pixels, image.width, image.height, 3, -1));
 }
 
 TEST(ImageOutput, ExrKeepsFloatsBeyondOne) {

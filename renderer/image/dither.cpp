@@ -1,0 +1,68 @@
+#include "renderer/image/dither.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace hsb {
+namespace {
+
+// The pattern repeats every kTile pixels each way: the offsets are looked
+// up, not computed, and a repeat of 64 pixels in a grain of one level's
+// amplitude is invisible.
+constexpr int kTile = 64;
+// Each channel reads the pattern shifted, so the grain of red, green and
+// blue does not line up into grey specks.
+constexpr int kChannelShift[4] = {0, 21, 42, 9};
+
+std::array<float, kTile * kTile> gradient_noise() {
+  std::array<float, kTile * kTile> tile{};
+  for (int y = 0; y < kTile; ++y)
+    for (int x = 0; x < kTile; ++x) {
+      const double inner = 0.06711056 * x + 0.00583715 * y;
+      const double value = 52.9829189 * (inner - std::floor(inner));
+      tile[std::size_t(y * kTile + x)] = float(value - std::floor(value));
+    }
+  return tile;
+}
+
+const std::array<float, kTile * kTile>& noise_tile() {
+  static const std::array<float, kTile * kTile> tile = gradient_noise();
+  return tile;
+}
+
+}  // namespace
+
+float dither_offset(int x, int y, int c) {
+  const int shift = kChannelShift[c % 4];
+  return noise_tile()[std::size_t(((y + shift) % kTile) * kTile + (x + 3 * shift) % kTile)];
+}
+
+std::vector<unsigned char> dithered_8bit(const std::vector<float>& pixels, int width, int height, int channels,
+                                         int alpha_channel) {
+  const std::size_t row = std::size_t(width) * std::size_t(channels);
+  std::vector<unsigned char> bytes(row * std::size_t(height));
+  const std::array<float, kTile * kTile>& tile = noise_tile();
+  tbb::parallel_for(tbb::blocked_range<int>(0, height, 16), [&](const tbb::blocked_range<int>& rows) {
+    for (int y = rows.begin(); y < rows.end(); ++y) {
+      const float* in = pixels.data() + std::size_t(y) * row;
+      unsigned char* out = bytes.data() + std::size_t(y) * row;
+      for (int c = 0; c < channels; ++c) {
+        const int shift = kChannelShift[c % 4];
+        const float* noise = &tile[std::size_t(((y + shift) % kTile) * kTile)];
+        for (int x = 0; x < width; ++x) {
+          const std::size_t i = std::size_t(x) * std::size_t(channels) + std::size_t(c);
+          const float v = in[i] > 0.0f ? std::min(in[i], 1.0f) : 0.0f;  // NaN too becomes 0
+          const float offset = c == alpha_channel ? 0.5f : noise[(x + 3 * shift) % kTile];
+          out[i] = (unsigned char)std::min(255.0f, v * 255.0f + offset);
+        }
+      }
+    }
+  });
+  return bytes;
+}
+
+}  // namespace hsb
