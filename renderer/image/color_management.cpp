@@ -44,6 +44,7 @@ ColorManagement::ColorManagement(const std::string& display, const std::string& 
   transform->setDisplay(display_.c_str());
   transform->setView(view_.c_str());
   to_display_ = config_->getProcessor(transform)->getDefaultCPUProcessor();
+  display_tables_ = ChannelTables::of(to_display_);
 }
 
 Rgb ColorManagement::to_scene_linear(const Rgb& picked) const {
@@ -62,9 +63,16 @@ void ColorManagement::apply_display(std::vector<float>& rgba, int width, int hei
   // The processor works pixel by pixel and keeps no state: bands of rows
   // on every core give the same values as the whole image on one.
   tbb::parallel_for(tbb::blocked_range<int>(0, height, 32), [&](const tbb::blocked_range<int>& rows) {
-    OCIO::PackedImageDesc band(rgba.data() + std::size_t(rows.begin()) * std::size_t(width) * 4, width,
-                               long(rows.size()), 4);
-    to_display_->apply(band);
+    float* band = rgba.data() + std::size_t(rows.begin()) * std::size_t(width) * 4;
+    if (!display_tables_) {
+      OCIO::PackedImageDesc image(band, width, long(rows.size()), 4);
+      to_display_->apply(image);
+      return;
+    }
+    // The tables where they reach, OCIO for the rest (highlights beyond 1).
+    const std::size_t pixels = std::size_t(width) * std::size_t(rows.size());
+    for (std::size_t i = 0; i < pixels; ++i)
+      if (!display_tables_->apply(band + 4 * i)) to_display_->applyRGBA(band + 4 * i);
   });
 }
 

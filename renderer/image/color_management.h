@@ -5,9 +5,11 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "renderer/image/channel_tables.h"
 #include "renderer/render/shading.h"
 
 namespace hsb {
@@ -39,6 +41,7 @@ class ColorManagement {
   OCIO_NAMESPACE::ConstConfigRcPtr config_;
   std::string display_, view_;
   OCIO_NAMESPACE::ConstCPUProcessorRcPtr to_linear_, to_picking_, to_display_;
+  std::optional<ChannelTables> display_tables_;  // to_display_ where it treats each channel alone
 };
 
 // The built-in config's text (for tests and for `hsb --print-ocio-config`).

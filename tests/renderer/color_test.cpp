@@ -3,10 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <optional>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "renderer/image/channel_tables.h"
 #include "renderer/image/color_management.h"
 #include "renderer/image/colormap.h"
 #include "renderer/image/direction_key.h"
@@ -49,6 +52,54 @@ TEST_F(Color, DisplayTransformEncodesSceneLinearAsSrgb) {
   EXPECT_NEAR(px[1], 0.7354, 2e-3);
   EXPECT_NEAR(px[2], 1.0, 2e-4);
   EXPECT_FLOAT_EQ(px[3], 0.7f);  // alpha untouched
+}
+
+// The default view's sRGB encoding goes through tables; the picture is
+// OCIO's own to a tenth of a 16-bit level, highlights beyond 1 included
+// (those are OCIO's).
+TEST_F(Color, SrgbDisplayThroughTablesIsOciosOwn) {
+  std::istringstream text(builtin_ocio_config());
+  const auto config = OCIO_NAMESPACE::Config::CreateFromStream(text);
+  const auto processor = config->getProcessor(OCIO_NAMESPACE::ROLE_SCENE_LINEAR, "srgb")->getDefaultCPUProcessor();
+  const std::optional<ChannelTables> tables = ChannelTables::of(processor);
+  ASSERT_TRUE(tables);
+  const ColorManagement color("", "");
+  std::vector<float> pixels, reference;
+  std::uint32_t state = 12345;
+  const auto next = [&] { return float((state = state * 1664525u + 1013904223u) >> 8) / float(1 << 24); };
+  for (int i = 0; i < 20000; ++i) {
+    const float scale = i % 10 == 0 ? 1.5f : (i % 3 == 0 ? 0.01f : 1.0f);  // dark values, highlights
+    pixels.insert(pixels.end(), {scale * next(), scale * next(), scale * next(), next()});
+  }
+  reference = pixels;
+  color.apply_display(pixels, 100, 200);
+  OCIO_NAMESPACE::PackedImageDesc image(reference.data(), 100, 200, 4);
+  processor->apply(image);
+  float worst = 0.0f;
+  for (std::size_t i = 0; i < pixels.size(); ++i) worst = std::max(worst, std::abs(pixels[i] - reference[i]));
+  EXPECT_LE(worst, ChannelTables::kTolerance);
+  float rgb[3] = {1.2f, 0.5f, 0.5f};
+  EXPECT_FALSE(tables->apply(rgb));
+  EXPECT_EQ(rgb[0], 1.2f);  // left for OCIO
+}
+
+// Tables only where they are the transform: not for a view that mixes
+// channels (Filmic's ACES output), nor for an encoding whose foot is too
+// steep for them (a logarithm).
+TEST_F(Color, NoTablesForCrosstalkOrASteepFoot) {
+  std::istringstream text(builtin_ocio_config());
+  const auto config = OCIO_NAMESPACE::Config::CreateFromStream(text);
+  auto filmic = OCIO_NAMESPACE::DisplayViewTransform::Create();
+  filmic->setSrc(OCIO_NAMESPACE::ROLE_SCENE_LINEAR);
+  filmic->setDisplay("sRGB");
+  filmic->setView("Filmic");
+  EXPECT_FALSE(ChannelTables::of(config->getProcessor(filmic)->getDefaultCPUProcessor()));
+  auto log = OCIO_NAMESPACE::LogAffineTransform::Create();
+  log->setBase(2.0);
+  log->setLinSideOffsetValue({1e-4, 1e-4, 1e-4});
+  log->setLogSideSlopeValue({0.07, 0.07, 0.07});
+  log->setLogSideOffsetValue({0.95, 0.95, 0.95});
+  EXPECT_FALSE(ChannelTables::of(config->getProcessor(log)->getDefaultCPUProcessor()));
 }
 
 // The built-in config with Raw as the sRGB display's first (default) view,
