@@ -342,6 +342,7 @@ std::vector<std::size_t> sites_to_draw(const DataSites& sites, const RegionSpec&
 std::vector<GlyphSource> sources_at_sites(const DataSites& sites, const std::vector<std::size_t>& which,
                                           std::size_t stride, ColorScalar color) {
   std::vector<GlyphSource> sources;
+  sources.reserve((which.size() + stride - 1) / stride);
   const bool flow = !sites.vectors.empty();
   for (std::size_t k = 0; k < which.size(); k += stride) {
     const std::size_t i = which[k];

@@ -1,5 +1,7 @@
 #include "field/reading/vtk_data.h"
 
+#include "base/huge_pages.h"
+
 #include <vtkCellData.h>
 #include <vtkCellDataToPointData.h>
 #include <vtkCellTypes.h>
@@ -264,7 +266,8 @@ std::vector<Sym3> read_tensors(const ChosenArray& chosen, const std::string& pat
   const char* item = chosen.on_points ? "point" : "cell";
   const vtkIdType n = array->GetNumberOfTuples();
   const int components = array->GetNumberOfComponents();
-  std::vector<Sym3> tensors(static_cast<std::size_t>(n));
+  std::vector<Sym3> tensors;
+  assign_on_huge_pages(tensors, std::size_t(n), Sym3{});
   double worst = 0.0, worst_norm = 0.0;
   vtkIdType worst_at = -1;
   double t[9];
@@ -463,7 +466,7 @@ std::vector<Vec3> site_positions(vtkDataSet* data, bool on_points) {
   std::vector<Vec3> sites;
   double p[3];
   if (on_points) {
-    sites.reserve(std::size_t(data->GetNumberOfPoints()));
+    reserve_on_huge_pages(sites, std::size_t(data->GetNumberOfPoints()));
     for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i) {
       data->GetPoint(i, p);
       sites.emplace_back(p[0], p[1], p[2]);
@@ -541,7 +544,10 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
                                                       : static_cast<vtkDataSetAttributes*>(data->GetCellData());
       holder->RemoveArray(chosen.name.c_str());
     }
-    if (sites) out.sites.tensors = tensors;
+    if (sites) {
+      reserve_on_huge_pages(out.sites.tensors, tensors.size());
+      out.sites.tensors.assign(tensors.begin(), tensors.end());
+    }
     // A grid whose tensors are zero over a background: its outline is the
     // surface of the rest.
     if (auto* image = vtkImageData::SafeDownCast(data); image && spec.boundary && chosen.on_points) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "base/huge_pages.h"
 #include "base/memory_budget.h"
 #include "base/process_memory.h"
 #include "field/reading/data_formats.h"
@@ -141,6 +142,7 @@ void add_corners(const Box3& b, std::vector<Vec3>& points) {
 void add_glyph_points(const PreparedScene& p, double extent, std::vector<Vec3>& points) {
   const double reach = std::min(1.0, kBlendAllowance * extent / p.spec.surface.influence_radius) *
                        p.spec.surface.influence_radius;
+  reserve_on_huge_pages(points, points.size() + 14 * p.glyphs.sources.size());
   for (std::size_t i = 0; i < p.glyphs.sources.size(); ++i) {
     const GlyphSource& s = p.glyphs.sources[i];
     // The glyph is the unit ball of its gauge u, a norm symmetric in each

@@ -1,5 +1,8 @@
 #include "renderer/render/film.h"
 
+#include "base/huge_pages.h"
+
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -20,14 +23,14 @@ const PlaneInfo& plane_info(Plane plane) {
 Film::Film(int width, int height, const std::vector<Plane>& planes) : width_(width), height_(height) {
   if (width < 1 || height < 1) throw std::invalid_argument("a film needs at least one pixel");
   const std::size_t pixels = std::size_t(width) * std::size_t(height);
-  const auto allocate = [&](Plane p) {
-    const PlaneInfo& info = plane_info(p);
-    data_[std::size_t(p)].assign(pixels * std::size_t(info.channels), info.empty);
-  };
   // Colour keeps room for a fourth channel: the display image widens it to
   // RGBA where it stands (display_image.h). Reserved, not touched, the room
   // is no resident memory while the picture renders.
-  data_[std::size_t(Plane::color)].reserve(pixels * 4);
+  const auto allocate = [&](Plane p) {
+    const PlaneInfo& info = plane_info(p);
+    const std::size_t values = pixels * std::size_t(info.channels);
+    assign_on_huge_pages(data_[std::size_t(p)], values, info.empty, p == Plane::color ? pixels * 4 : values);
+  };
   allocate(Plane::color);
   allocate(Plane::alpha);
   for (Plane p : planes) allocate(p);
