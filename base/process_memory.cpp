@@ -24,6 +24,7 @@ double status_kib(const char* field) {
 
 double resident_bytes() { return status_kib("VmRSS:") * 1024.0; }
 double peak_resident_bytes() { return status_kib("VmHWM:") * 1024.0; }
+double file_resident_bytes() { return status_kib("RssFile:") * 1024.0; }
 double virtual_bytes() { return status_kib("VmSize:") * 1024.0; }
 void reset_peak_resident() { std::ofstream("/proc/self/clear_refs") << "5"; }
 

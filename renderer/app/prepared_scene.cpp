@@ -504,10 +504,10 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   std::ostringstream picture;
   picture << "the scene with its picture (" << p.render.width << " × " << p.render.height << " pixels)";
   // The image module loads while the data is read (image_io_module.h),
-  // and counts towards the peak: once it is in, what is resident holds it
-  // and the sources, made by now.
-  finish_image_io_preload();
-  const double held = std::max(p.glyphs.memory_estimate, resident_bytes());
+  // and counts towards the peak: what is resident holds the sources, made
+  // by now, and what of the module has loaded; the rest of it is added.
+  // (The render goes on beside the load; the picture is written after it.)
+  const double held = std::max(p.glyphs.memory_estimate, resident_bytes()) + image_io_pending_bytes();
   p.memory_estimate = held + kBytesPerPixel * p.render.width * p.render.height;
   check_memory(p.memory_estimate, picture.str(),
                "lower render.width and render.height (or output.print_size or output.dpi)");

@@ -42,6 +42,15 @@ void preload_image_io();
 // main() calls it on its way out.
 void finish_image_io_preload();
 
+// What the module's load may still add to this process's resident memory:
+// 0 once it is loaded (or before it is asked for); else what its
+// libraries' files have yet to take, against a whole load's (the files
+// paged in since it began counted as its), and what their relocations
+// and constructors take as it ends. A render counts it
+// into its estimate instead of waiting for the load, which would hold
+// the render back a tenth of a second; the picture is written after it.
+double image_io_pending_bytes();
+
 // Whether the module is (or will be) loaded with RTLD_DEEPBIND, which
 // takes a third off the load (image_io_module.cpp): where the process
 // has no second copy of the allocator, the standard streams or libc's

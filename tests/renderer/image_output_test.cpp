@@ -131,6 +131,17 @@ TEST(ImageOutput, EightBitPngHoldsTheDitheredBytes) {
   EXPECT_EQ(read, dithered_8bit(image.pixels, image.width, image.height, 3, -1));
 }
 
+// A render counts what the module's load has yet to add instead of
+// waiting for it: never more than a whole load, none once it is in.
+TEST(ImageOutput, WhatTheLoadStillAddsEndsAtNone) {
+  preload_image_io();
+  const double pending = image_io_pending_bytes();
+  EXPECT_GE(pending, 0.0);
+  EXPECT_LE(pending, 103e6);
+  finish_image_io_preload();
+  EXPECT_EQ(image_io_pending_bytes(), 0.0);
+}
+
 TEST(ImageOutput, ExrKeepsFloatsBeyondOne) {
   ImageToWrite image = gradient(5);
   image.channel_names = {"R", "G", "B", "A", "Z"};
