@@ -42,6 +42,31 @@ TEST(Superquadric, ExponentsAreKindlmannsAsTeemComputesThem) {
   EXPECT_LE(cube.bound_scale, std::sqrt(3.0) * (1.0 + 1e-5));
 }
 
+// σ is the least bound, not only a bound: in the stored frame (q scaled
+// by 1/σ, so that g_e = |q|² ≤ g) the bounding ellipsoid touches the glyph,
+// |q|/u reaching 1 over a net of directions to within the net's spacing (a
+// loose σ would widen every span and slow every superquadric ray), sharp
+// glyphs whose exponents reach 10⁻⁹ among them. (That it is a bound:
+// KeepTheBoundsTheTracerRestsOn.)
+TEST(Superquadric, BoundScaleIsTheLargestRatioOfDistanceToGauge) {
+  std::vector<ShapeParams> shapes;
+  for (const Vec3& radii : {Vec3(1.0, 0.5, 0.2), Vec3(1.0, 0.05, 0.04), Vec3(1.0, 0.98, 0.01), Vec3(1.0, 1.0, 1.0),
+                            Vec3(0.3, 1.0, 0.9)})
+    for (double sharpness : {1.0, 3.0, 10.0}) shapes.push_back(superquadric_params(radii, sharpness));
+  for (const ShapeParams& s : shapes) {
+    double largest = 0.0;
+    constexpr int kSteps = 180;
+    for (int i = 0; i <= kSteps; ++i)
+      for (int j = 0; j < 2 * kSteps; ++j) {
+        const double theta = M_PI * i / kSteps, phi = M_PI * j / kSteps;
+        const Vec3 q(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+        largest = std::max(largest, 1.0 / std::sqrt(shape_g(GlyphShape::superquadric, s, q)));
+      }
+    EXPECT_LE(largest, 1.0 + 1e-9) << "α " << s.alpha << " β " << s.beta;
+    EXPECT_GE(largest, 0.99) << "α " << s.alpha << " β " << s.beta;
+  }
+}
+
 // Superquadrics of every proportion and sharpness, and signed glyphs of
 // every sign pattern.
 std::vector<std::pair<GlyphShape, ShapeParams>> sample_shapes() {
