@@ -118,7 +118,12 @@ BlobGeometry::BlobGeometry(RTCDevice device, const BlobField& field, const Trace
       settings_(settings),
       bounds_(influence_bounds(field)),
       margin_(bounds_margin(bounds_.diagonal())),
-      first_window_(2.0 * mean_influence_diagonal(field)),
+      // A union's query stops at the first source it enters
+      // (prune_beyond_entry) and what lies in front of that is all it
+      // needs: one window, the whole ray. A blend's windows keep it from
+      // collecting the crowd behind its first crossing.
+      first_window_(field.blend == Blend::max ? std::numeric_limits<double>::infinity()
+                                              : 2.0 * mean_influence_diagonal(field)),
       listed_scale_(field.blend == Blend::max ? kernel_level_radius(field.kernel, field.isovalue) : 1.0),
       rank_(spatial_ranks(field, bounds_)),
       device_(device),
