@@ -141,6 +141,10 @@ double FieldRay::group_crossing(const BlobField& field, const Vec3& origin, cons
   const double g_level = level_g(field.kernel, c);
   double upper = drop_spans_beyond_first_entry(field, tmin, tmax);
   if (upper >= 0.0 && query == CrossingQuery::any) return upper;  // an `any` query has its answer
+  // A union of ellipsoids: that earliest entry is the whole answer, and
+  // the sources' values at tmin and their peaks, which bound a blend, are
+  // not needed.
+  if (quadric_ && field.blend == Blend::max) return upper;
   double at_start = 0.0, peaks = 0.0, last_peak = tmin;
   peaks_.resize(spans.size());
   for (std::uint32_t i = 0; i < spans.size(); ++i) {
