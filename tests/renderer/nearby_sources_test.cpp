@@ -259,6 +259,13 @@ TEST(UnionScene, ListsEachSourceByItsLevelSurfacesBoxAndFindsTheSameCrossings) {
     EXPECT_NEAR(t, earliest, 1e-12) << "ray " << r;
     const SurfaceSample s = tracer.surface_at(field, ray.origin, ray.direction, t);
     EXPECT_EQ(s.color, field.sources[winner].color) << "ray " << r;
+    // The normal is the winner's own, ∇g = 2 Wᵀ q, though only the winner
+    // is evaluated among the sources there.
+    const Vec3 x = ray.origin + t * ray.direction;
+    const Mat3 w = shape_matrix(field.sources[winner]);
+    const Vec3 gradient = 2.0 * w.transpose() * scaled_offset(field.sources[winner], w, x);
+    EXPECT_LT((s.normal - gradient.normalized()).norm(), 1e-9) << "ray " << r;
+    EXPECT_GE(s.crowd, 1u);
   }
   EXPECT_GT(hits, 100);
 }
