@@ -34,12 +34,16 @@ const std::array<float, kTile * kTile>& noise_tile() {
   return tile;
 }
 
+// Channel c's row of the tile for picture row y, and the column in it of
+// picture column x: the offset of pixel (x, y) is row[column].
+const float* tile_row(const std::array<float, kTile * kTile>& tile, int y, int c) {
+  return &tile[std::size_t(((y + kChannelShift[c % 4]) % kTile) * kTile)];
+}
+int tile_column(int x, int c) { return (x + 3 * kChannelShift[c % 4]) % kTile; }
+
 }  // namespace
 
-float dither_offset(int x, int y, int c) {
-  const int shift = kChannelShift[c % 4];
-  return noise_tile()[std::size_t(((y + shift) % kTile) * kTile + (x + 3 * shift) % kTile)];
-}
+float dither_offset(int x, int y, int c) { return tile_row(noise_tile(), y, c)[tile_column(x, c)]; }
 
 std::vector<unsigned char> dithered_8bit(const std::vector<float>& pixels, int width, int height, int channels,
                                          int alpha_channel) {
@@ -51,12 +55,11 @@ std::vector<unsigned char> dithered_8bit(const std::vector<float>& pixels, int w
       const float* in = pixels.data() + std::size_t(y) * row;
       unsigned char* out = bytes.data() + std::size_t(y) * row;
       for (int c = 0; c < channels; ++c) {
-        const int shift = kChannelShift[c % 4];
-        const float* noise = &tile[std::size_t(((y + shift) % kTile) * kTile)];
+        const float* noise = tile_row(tile, y, c);
         for (int x = 0; x < width; ++x) {
           const std::size_t i = std::size_t(x) * std::size_t(channels) + std::size_t(c);
           const float v = in[i] > 0.0f ? std::min(in[i], 1.0f) : 0.0f;  // NaN too becomes 0
-          const float offset = c == alpha_channel ? 0.5f : noise[(x + 3 * shift) % kTile];
+          const float offset = c == alpha_channel ? 0.5f : noise[tile_column(x, c)];
           out[i] = (unsigned char)std::min(255.0f, v * 255.0f + offset);
         }
       }

@@ -1,7 +1,5 @@
 #include "renderer/image/image_io_module.h"
 
-#include "base/process_memory.h"
-
 #include <dlfcn.h>
 #include <sys/single_threaded.h>
 #include <unistd.h>
@@ -22,6 +20,8 @@
 #include <mutex>
 #include <stdexcept>
 #include <thread>
+
+#include "base/process_memory.h"
 
 namespace hsb {
 namespace {
