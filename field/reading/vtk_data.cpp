@@ -368,7 +368,7 @@ bool is_image_volume(vtkDataSet* data) {
 // as the data set is: trilinearly on an image volume's grid, turned or
 // not, else through its cells, by the shared `locator`.
 template <class T>
-std::unique_ptr<Field<T>> sampled_field(vtkDataSet* data, std::vector<T> values, ValueLocation where,
+std::unique_ptr<Field<T>> sampled_field(vtkDataSet* data, SharedValues<T> values, ValueLocation where,
                                         const std::function<std::shared_ptr<const MeshLocator>()>& locator) {
   if (where != ValueLocation::points || !is_image_volume(data))
     return std::make_unique<MeshField<T>>(locator(), std::move(values), where);
@@ -544,32 +544,30 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
                                                       : static_cast<vtkDataSetAttributes*>(data->GetCellData());
       holder->RemoveArray(chosen.name.c_str());
     }
-    if (sites) {
-      reserve_on_huge_pages(out.sites.tensors, tensors.size());
-      out.sites.tensors.assign(tensors.begin(), tensors.end());
-    }
+    const SharedValues<Sym3> shared(std::move(tensors));
+    if (sites) out.sites.tensors = shared;
     // A grid whose tensors are zero over a background: its outline is the
     // surface of the rest.
     if (auto* image = vtkImageData::SafeDownCast(data); image && spec.boundary && chosen.on_points) {
-      std::vector<std::uint8_t> has_data(tensors.size());
-      for (std::size_t i = 0; i < tensors.size(); ++i) has_data[i] = tensors[i].holds_data();
+      std::vector<std::uint8_t> has_data(shared.size());
+      for (std::size_t i = 0; i < shared.size(); ++i) has_data[i] = shared[i].holds_data();
       region = data_region_surface(image, has_data);
     }
     if (!volume) {
       out.field = std::make_unique<PointsOnlyField<Sym3>>(bounds);
     } else {
-      out.field = sampled_field(data, std::move(tensors), chosen.on_points ? ValueLocation::points : ValueLocation::cells,
+      out.field = sampled_field(data, shared, chosen.on_points ? ValueLocation::points : ValueLocation::cells,
                                 mesh_locator);
     }
   }
   if (sites) out.sites.positions = site_positions(data, chosen.on_points);
   if (!spec.mask_array.empty()) {
     auto [values, where] = named_scalar_values(data, spec.mask_array, spec.path, "for region.mask", false);
-    out.mask = sampled_field(data, std::move(values), where, mesh_locator);
+    out.mask = sampled_field<double>(data, std::move(values), where, mesh_locator);
   }
   if (!spec.color_array.empty()) {
     auto [values, where] = named_scalar_values(data, spec.color_array, spec.path, "to colour by", true);
-    if (volume) out.color = sampled_field(data, values, where, mesh_locator);
+    if (volume) out.color = sampled_field<double>(data, values, where, mesh_locator);
     if (sites) out.sites.colors = site_colors(out.sites.positions, chosen.on_points, values, where, out.color.get());
   }
   if (spec.boundary && data->GetNumberOfCells() > 0)
@@ -600,7 +598,7 @@ std::unique_ptr<ScalarField> load_mask(const std::string& path) {
   chosen.name = chosen.array->GetName() ? chosen.array->GetName() : "";
   chosen.components = 1;
   auto [values, where] = scalar_values(chosen, path, false);
-  return sampled_field(data.Get(), std::move(values), where,
+  return sampled_field<double>(data.Get(), std::move(values), where,
                        [&] { return std::make_shared<const MeshLocator>(data.Get()); });
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "base/shared_values.h"
 #include "field/glyphs/triangle_mesh.h"
 #include "field/sampling/field.h"
 
@@ -54,7 +55,7 @@ struct VtkFileSpec {
 // centres for cell data. For a glyph at each (glyphs.placement = "points").
 struct DataSites {
   std::vector<Vec3> positions;
-  std::vector<Sym3> tensors;   // tensor data; or
+  SharedValues<Sym3> tensors;  // tensor data (the field's own, not a copy); or
   std::vector<Vec3> vectors;   // vector data
   std::vector<double> colors;  // VtkFileSpec::color_array at each, when named (NaN: none there)
 };

@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "base/shared_values.h"
 #include "field/sampling/field.h"
 #include "field/sampling/mesh_locator.h"
 
@@ -23,7 +24,7 @@ inline bool is_finite_value(const Sym3& v) { return v.is_finite(); }
 template <class T>
 class MeshField final : public Field<T> {
  public:
-  MeshField(std::shared_ptr<const MeshLocator> locator, std::vector<T> values, ValueLocation location)
+  MeshField(std::shared_ptr<const MeshLocator> locator, SharedValues<T> values, ValueLocation location)
       : locator_(std::move(locator)), values_(std::move(values)), location_(location) {}
 
   Box3 bounds() const override { return locator_->bounds(); }
@@ -47,11 +48,11 @@ class MeshField final : public Field<T> {
     return value;
   }
 
-  const std::vector<T>& values() const { return values_; }
+  const std::vector<T>& values() const { return values_.vector(); }
 
  private:
   std::shared_ptr<const MeshLocator> locator_;
-  std::vector<T> values_;
+  SharedValues<T> values_;
   ValueLocation location_;
 };
 

@@ -31,7 +31,7 @@ bool is_infinite(double v) { return std::isinf(v); }
 
 template <class T>
 UniformGrid<T>::UniformGrid(const Vec3& origin, const Vec3& spacing, const std::array<int, 3>& dims,
-                            std::vector<T> values, const Mat3& direction)
+                            SharedValues<T> values, const Mat3& direction)
     : origin_(origin),
       spacing_(spacing),
       direction_(direction),

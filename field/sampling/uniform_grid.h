@@ -8,6 +8,7 @@
 #include <array>
 #include <vector>
 
+#include "base/shared_values.h"
 #include "field/sampling/field.h"
 
 namespace hsb {
@@ -19,7 +20,7 @@ class UniformGrid final : public Field<T> {
   // `values` holds dims[0]*dims[1]*dims[2] values, x varying fastest (VTK's
   // point order). Every dimension must be at least 2.
   // `direction` must be invertible.
-  UniformGrid(const Vec3& origin, const Vec3& spacing, const std::array<int, 3>& dims, std::vector<T> values,
+  UniformGrid(const Vec3& origin, const Vec3& spacing, const std::array<int, 3>& dims, SharedValues<T> values,
               const Mat3& direction = Mat3::Identity());
 
   // Samples `field` at the nodes of a dims[0]×dims[1]×dims[2] grid spanning
@@ -34,14 +35,14 @@ class UniformGrid final : public Field<T> {
   const T& node(int i, int j, int k) const;
   const std::array<int, 3>& dims() const { return dims_; }
   // The values at the nodes, x varying fastest.
-  const std::vector<T>& values() const { return values_; }
+  const std::vector<T>& values() const { return values_.vector(); }
 
  private:
   Vec3 origin_, spacing_;
   Mat3 direction_, to_index_;  // D, and D⁻¹ scaled by 1/spacing: world offset → index
   bool aligned_;               // D = I: index from the offset alone
   std::array<int, 3> dims_;
-  std::vector<T> values_;
+  SharedValues<T> values_;
 };
 
 using UniformGridField = UniformGrid<Sym3>;
