@@ -204,7 +204,7 @@ RenderSummary render_panel_figure(SceneSpec figure, const std::string& image_pat
   std::ostringstream description;
   description << n << " panels, " << summary.sources << " sources";
   OutputSettings output = panels.front()->output;
-  write_display_picture(image_path, std::move(rgba), width, height, annotations, output,
+  write_display_picture(image_path, std::move(rgba), width, height, transparent, annotations, output,
                         picture_metadata(figure, description.str(), resolved.str(), color), color);
   summary.image_path = image_path;
   summary.render_seconds = render_seconds;

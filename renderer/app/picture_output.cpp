@@ -122,30 +122,16 @@ std::map<std::string, std::string> picture_metadata(const SceneSpec& spec, const
   };
 }
 
-namespace {
-
-// An opaque picture (any background but a transparent one) goes out as RGB:
-// its alpha is 1 everywhere and says nothing, and a quarter fewer bytes
-// make a quarter less to deflate, the one step after the render that runs
-// on a single core. Returns whether `rgba` was opaque and is now RGB.
-bool drop_opaque_alpha(std::vector<float>& rgba) {
-  const std::size_t pixels = rgba.size() / 4;
-  for (std::size_t i = 0; i < pixels; ++i)
-    if (rgba[4 * i + 3] != 1.0f) return false;
-  for (std::size_t i = 0; i < pixels; ++i)
-    for (std::size_t c = 0; c < 3; ++c) rgba[3 * i + c] = rgba[4 * i + c];
-  rgba.resize(3 * pixels);
-  return true;
+RasterStream::Format display_raster_format(int width, int height, const OutputSettings& output, bool transparent) {
+  return {width, height, transparent ? 4 : 3, output.bit_depth, output.dpi};
 }
-
-}  // namespace
 
 float legend_ink(const std::vector<float>& rgba, int width, int height, const LegendLayout& legend) {
   const std::array<double, 2> at = legend.ink_sample();
   return ink_over(rgba, width, std::clamp(int(at[0]), 0, width - 1), std::clamp(int(at[1]), 0, height - 1));
 }
 
-void write_display_picture(const std::string& path, std::vector<float> rgba, int width, int height,
+void write_display_picture(const std::string& path, std::vector<float> rgba, int width, int height, bool transparent,
                            const Annotations& annotations, const OutputSettings& output,
                            std::map<std::string, std::string> metadata, const ColorManagement& color) {
   std::filesystem::create_directories(std::filesystem::path(path).parent_path());
@@ -155,15 +141,10 @@ void write_display_picture(const std::string& path, std::vector<float> rgba, int
     return;
   }
   draw_annotations(rgba, width, height, annotations, color);
-  ImageToWrite image;
-  image.width = width;
-  image.height = height;
-  image.channels = drop_opaque_alpha(rgba) ? 3 : 4;
-  image.bit_depth = output.bit_depth;
-  image.dpi = output.dpi;
-  image.metadata = std::move(metadata);
-  image.pixels = std::move(rgba);
-  write_image(image, path);
+  const RasterStream::Format format = display_raster_format(width, height, output, transparent);
+  RasterStream stream(path, format, [&] { return std::move(metadata); });
+  stream.write_rows({rgba.data(), width, height, 0, 4, format.channels});
+  stream.finish();
 }
 
 void write_scene_linear_picture(const std::string& path, const Film& film, const OutputSettings& output,

@@ -10,6 +10,7 @@
 
 #include "renderer/app/prepared_scene.h"
 #include "renderer/image/annotations.h"
+#include "renderer/image/raster_stream.h"
 #include "renderer/render/film.h"
 
 namespace hsb {
@@ -27,9 +28,14 @@ std::map<std::string, std::string> picture_metadata(const SceneSpec& spec, const
 // A one-line description of a prepared scene's picture.
 std::string picture_description(const PreparedScene& prepared);
 
+// A PNG's or TIFF's shape: RGBA where the background is `transparent`,
+// else RGB (an opaque picture's alpha says nothing, and a quarter fewer
+// bytes make a quarter less to deflate); the output's bit depth and dpi.
+RasterStream::Format display_raster_format(int width, int height, const OutputSettings& output, bool transparent);
+
 // Writes display-referred, premultiplied `rgba` with `annotations` drawn
 // over it to `path`, in the format its extension names (not EXR).
-void write_display_picture(const std::string& path, std::vector<float> rgba, int width, int height,
+void write_display_picture(const std::string& path, std::vector<float> rgba, int width, int height, bool transparent,
                            const Annotations& annotations, const OutputSettings& output,
                            std::map<std::string, std::string> metadata, const ColorManagement& color);
 

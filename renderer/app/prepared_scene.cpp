@@ -31,8 +31,11 @@ constexpr double kTallest = 0.5, kWidest = 2.5;  // the automatic picture's aspe
 // (the figure scenes stay under 10; fig05 without its ceiling is over 2000).
 constexpr double kCrowdedRay = 100.0;
 // Memory a pixel takes at most: the film with every plane, the display
-// image and the encoder's copy.
+// image and the encoder's copy; where the picture is written as it is
+// made, its bytes, all waiting for the image module at worst, and the
+// encoded file, no larger.
 constexpr double kBytesPerPixel = 64.0;
+constexpr double kStreamedBytesPerPixel = 8.0;
 // How far beyond an isolated glyph's level surface the camera allows for
 // blending: two coincident wyvill sources at C = ½ reach 1.38 times as
 // far, three 1.56 times; a tube of overlapping glyphs lies between.
@@ -322,6 +325,10 @@ double glyph_extent(const SurfaceSpec& surface) {
   return surface.influence_radius * kernel_level_radius(surface.kernel, surface.isovalue);
 }
 
+bool OutputSettings::streams() const {
+  return !legend && !is_scene_linear_format(file) && !is_vector_format(file);
+}
+
 std::string output_file_name(const SceneSpec& spec) {
   return spec.output.file.value_or(file_stem(spec.path) + ".png");
 }
@@ -508,7 +515,8 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   // by now, and what of the module has loaded; the rest of it is added.
   // (The render goes on beside the load; the picture is written after it.)
   const double held = std::max(p.glyphs.memory_estimate, resident_bytes()) + image_io_pending_bytes();
-  p.memory_estimate = held + kBytesPerPixel * p.render.width * p.render.height;
+  p.memory_estimate =
+      held + (p.output.streams() ? kStreamedBytesPerPixel : kBytesPerPixel) * p.render.width * p.render.height;
   check_memory(p.memory_estimate, picture.str(),
                "lower render.width and render.height (or output.print_size or output.dpi)");
   p.camera = frame_camera(camera, framed, p.render.width, p.render.height, reserve);

@@ -23,6 +23,11 @@ struct OutputSettings {
   int bit_depth = 8;  // PNG/TIFF: 8 or 16; EXR: 16 (half) or 32 (float)
   double dpi = 300.0;
   std::optional<LegendLayout> legend;  // none: no colour bar and no shape key
+
+  // Whether the picture is written as it is rendered, a band of rows at a
+  // time (raster_stream.h), and never held whole: a PNG or TIFF with
+  // nothing drawn over it.
+  bool streams() const;
 };
 
 struct PreparedScene {

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <optional>
 
 #include "renderer/app/batch.h"
 #include "renderer/app/panel_figure.h"
@@ -10,6 +11,7 @@
 #include "renderer/app/prepared_scene.h"
 #include "renderer/image/display_image.h"
 #include "renderer/image/image_output.h"
+#include "renderer/image/raster_stream.h"
 #include "renderer/render/ray_scene.h"
 #include "renderer/render/render_image.h"
 
@@ -59,25 +61,40 @@ RenderSummary run_render_job(const RenderJob& job) {
   const double build_seconds = seconds_since(start);
   RenderSettings settings = prepared->render;
   settings.progress = [&](double fraction) { report(JobStage::rendering, fraction); };
+  const bool transparent = prepared->shading.background_kind == BackgroundKind::transparent;
+  const auto metadata = [&, description = picture_description(*prepared), resolved = pinned_scene_toml(*prepared)] {
+    return picture_metadata(prepared->spec, description, resolved, color);
+  };
+  // Render → result (the film) → display image → annotation → file; a
+  // picture with nothing drawn over it goes to its file as it is made.
+  std::optional<RasterStream> stream;
+  if (output.streams()) {
+    std::filesystem::create_directories(std::filesystem::path(image_path).parent_path());
+    const RasterStream::Format format =
+        display_raster_format(settings.width, settings.height, output, transparent);
+    stream.emplace(image_path, format, metadata);
+    settings.rows_done = [&, channels = format.channels](const Film& film, int first, int last) {
+      const std::vector<float> rgba = display_rows(film, first, last, color, transparent);
+      stream->write_rows({rgba.data(), film.width(), last - first, first, 4, channels});
+    };
+  }
   report(JobStage::rendering, 0.0);
   RenderOutput rendered = render_image(scene, prepared->camera, prepared->shading, settings);
 
-  // Render → result (the film) → display image → annotation → file.
   report(JobStage::writing, 1.0);
   const auto output_start = Clock::now();
-  std::map<std::string, std::string> metadata =
-      picture_metadata(prepared->spec, picture_description(*prepared), pinned_scene_toml(*prepared), color);
-  if (is_scene_linear_format(image_path)) {
-    write_scene_linear_picture(image_path, rendered.film, output, std::move(metadata));
+  if (stream) {
+    stream->finish();
+  } else if (is_scene_linear_format(image_path)) {
+    write_scene_linear_picture(image_path, rendered.film, output, metadata());
   } else {
     const int width = rendered.film.width(), height = rendered.film.height();
-    const bool transparent = prepared->shading.background_kind == BackgroundKind::transparent;
     std::vector<float> rgba = display_pixels(std::move(rendered.film), color, transparent);
     rendered.film = Film(1, 1);  // the rest of its memory is no longer needed
     Annotations annotations;
     if (output.legend)
       annotations.legends.push_back({*output.legend, prepared->scale, legend_ink(rgba, width, height, *output.legend)});
-    write_display_picture(image_path, std::move(rgba), width, height, annotations, output, std::move(metadata),
+    write_display_picture(image_path, std::move(rgba), width, height, transparent, annotations, output, metadata(),
                           color);
   }
 

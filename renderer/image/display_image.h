@@ -17,6 +17,10 @@ namespace hsb {
 // at 2000².
 std::vector<float> display_pixels(Film&& film, const ColorManagement& color, bool keep_alpha);
 
+// The same for the film's rows [first, last), which it holds (a band of a
+// picture written as it is made): (last − first) × width pixels.
+std::vector<float> display_rows(const Film& film, int first, int last, const ColorManagement& color, bool keep_alpha);
+
 // The grey of text drawn over `rgba` near (x, y): black over light
 // pixels, white over dark ones, black over transparent ones.
 float ink_over(const std::vector<float>& rgba, int width, int x, int y);

@@ -45,22 +45,25 @@ int tile_column(int x, int c) { return (x + 3 * kChannelShift[c % 4]) % kTile; }
 
 float dither_offset(int x, int y, int c) { return tile_row(noise_tile(), y, c)[tile_column(x, c)]; }
 
-std::vector<unsigned char> dithered_8bit(const std::vector<float>& pixels, int width, int height, int channels,
-                                         int alpha_channel) {
-  const std::size_t row = std::size_t(width) * std::size_t(channels);
-  std::vector<unsigned char> bytes(row * std::size_t(height));
+std::vector<unsigned char> dithered_8bit(const PixelRows& rows, int alpha_channel) {
+  const std::size_t in_row = std::size_t(rows.width) * std::size_t(rows.in_channels);
+  const std::size_t out_row = std::size_t(rows.width) * std::size_t(rows.channels);
+  std::vector<unsigned char> bytes(out_row * std::size_t(rows.rows));
   const std::array<float, kTile * kTile>& tile = noise_tile();
-  tbb::parallel_for(tbb::blocked_range<int>(0, height, 16), [&](const tbb::blocked_range<int>& rows) {
-    for (int y = rows.begin(); y < rows.end(); ++y) {
-      const float* in = pixels.data() + std::size_t(y) * row;
-      unsigned char* out = bytes.data() + std::size_t(y) * row;
-      for (int c = 0; c < channels; ++c) {
+  const int grain = std::max(1, 8192 / std::max(1, rows.width));  // some 8,000 pixels a task
+  tbb::parallel_for(tbb::blocked_range<int>(0, rows.rows, grain), [&](const tbb::blocked_range<int>& band) {
+    for (int r = band.begin(); r < band.end(); ++r) {
+      const int y = rows.first_row + r;
+      const float* in = rows.pixels + std::size_t(r) * in_row;
+      unsigned char* out = bytes.data() + std::size_t(r) * out_row;
+      for (int c = 0; c < rows.channels; ++c) {
         const float* noise = tile_row(tile, y, c);
-        for (int x = 0; x < width; ++x) {
-          const std::size_t i = std::size_t(x) * std::size_t(channels) + std::size_t(c);
-          const float v = in[i] > 0.0f ? std::min(in[i], 1.0f) : 0.0f;  // NaN too becomes 0
+        for (int x = 0; x < rows.width; ++x) {
+          const float value = in[std::size_t(x) * std::size_t(rows.in_channels) + std::size_t(c)];
+          const float v = value > 0.0f ? std::min(value, 1.0f) : 0.0f;  // NaN too becomes 0
           const float offset = c == alpha_channel ? 0.5f : noise[tile_column(x, c)];
-          out[i] = (unsigned char)std::min(255.0f, v * 255.0f + offset);
+          out[std::size_t(x) * std::size_t(rows.channels) + std::size_t(c)] =
+              (unsigned char)std::min(255.0f, v * 255.0f + offset);
         }
       }
     }

@@ -10,15 +10,17 @@
 
 #include <vector>
 
+#include "renderer/image/pixel_rows.h"
+
 namespace hsb {
 
-// `pixels` (width × height × channels, top row first, values in [0, 1];
-// outside is clamped) as bytes, dithered; the channel `alpha_channel`
-// (none when < 0) is rounded, not dithered, so an opaque pixel stays 255.
-// Each byte depends only on its own value and position: bands of rows on
-// every core give the bytes one core gives.
-std::vector<unsigned char> dithered_8bit(const std::vector<float>& pixels, int width, int height, int channels,
-                                         int alpha_channel);
+// `rows` as bytes, dithered, `rows.channels` a pixel; the channel
+// `alpha_channel` (none when < 0) is rounded, not dithered, so an opaque
+// pixel stays 255. Values outside [0, 1] are clamped, NaN is 0. Each byte
+// depends only on its own value and its position in the picture: bands of
+// rows on every core, or a picture a band at a time, give the bytes one
+// core gives for the whole.
+std::vector<unsigned char> dithered_8bit(const PixelRows& rows, int alpha_channel);
 
 // The dither's fraction of a level at pixel (x, y) for channel c, in [0, 1).
 float dither_offset(int x, int y, int c);

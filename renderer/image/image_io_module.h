@@ -14,12 +14,29 @@
 
 namespace hsb {
 
+// A PNG or TIFF being encoded a band of rows at a time (the module's).
+struct RowEncoder;
+
+// Every function throws std::runtime_error with OIIO's message when OIIO
+// fails. Encoded images go into `memory` where the format's writer can
+// write there, else into the file `file`.
 struct ImageIo {
-  // Encodes `image` in the format of `extension` (".png", ".tif", ".tiff",
-  // ".exr"): into `memory` where the format's writer can write there, else
-  // into the file `file`. Throws std::runtime_error with OIIO's message.
+  // Encodes `image`, float samples, as an EXR (`extension` ".exr").
   void (*encode)(const ImageToWrite& image, const std::string& extension, const std::string& file,
-                 std::vector<char>& memory);
+                 std::vector<unsigned char>& memory);
+  // Begins a PNG or TIFF (`extension` ".png", ".tif", ".tiff") of
+  // `header`'s size, channels, bit depth, resolution and metadata (its
+  // pixels are not read).
+  RowEncoder* (*open_rows)(const ImageToWrite& header, const std::string& extension, const std::string& file);
+  // Encodes rows [first, first + count), which follow those before:
+  // `samples` are bytes (8 bits) or unsigned shorts (16), the header's
+  // channels a pixel.
+  void (*write_rows)(RowEncoder* encoder, int first, int count, const void* samples);
+  // Ends the image, into `memory` where it was encoded there, and frees
+  // the encoder.
+  void (*close_rows)(RowEncoder* encoder, std::vector<unsigned char>& memory);
+  // Frees an encoder without ending its image (the file is abandoned).
+  void (*discard_rows)(RowEncoder* encoder);
   // The hsb:scene_sha1 a raster image at `path` holds, once it is decoded
   // whole; "" when it cannot be read or holds none.
   std::string (*stored_sha1)(const std::string& path);

@@ -3,6 +3,7 @@
 #include "base/file_extension.h"
 #include "base/partial_file.h"
 #include "renderer/image/image_io_module.h"
+#include "renderer/image/raster_stream.h"
 
 #include <filesystem>
 #include <fstream>
@@ -46,16 +47,21 @@ std::string stored_scene_sha1(const std::string& path) {
 
 void write_image(const ImageToWrite& image, const std::string& path) {
   const std::string ext = lower_extension(path);
-  const bool exr = ext == ".exr";
   if (!is_supported_image_path(path) || is_vector_format(path))
     throw std::runtime_error(path + ": unsupported image format \"" + ext + "\" (expected .png, .tif, .tiff or .exr)");
-  if (!exr && image.bit_depth != 8 && image.bit_depth != 16)
-    throw std::runtime_error(path + ": bit depth must be 8 or 16");
-  if (exr && image.bit_depth != 16 && image.bit_depth != 32)
+  if (ext != ".exr") {
+    // PNG and TIFF: the whole picture as one band of a stream, the one
+    // way their integer samples are made.
+    const RasterStream::Format format{image.width, image.height, image.channels, image.bit_depth, image.dpi};
+    RasterStream stream(path, format, [&] { return image.metadata; });
+    stream.write_rows({image.pixels.data(), image.width, image.height, 0, image.channels, image.channels});
+    stream.finish();
+    return;
+  }
+  if (image.bit_depth != 16 && image.bit_depth != 32)
     throw std::runtime_error(path + ": an EXR's bit depth must be 16 (half) or 32 (float)");
-
   PartialFile file(path);
-  std::vector<char> memory;
+  std::vector<unsigned char> memory;
   try {
     image_io().encode(image, ext, file.path(), memory);
   } catch (const std::runtime_error& e) {

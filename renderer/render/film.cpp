@@ -20,9 +20,10 @@ const PlaneInfo& plane_info(Plane plane) {
   return table.at(std::size_t(plane));
 }
 
-Film::Film(int width, int height, const std::vector<Plane>& planes) : width_(width), height_(height) {
+Film::Film(int width, int height, const std::vector<Plane>& planes, int window_rows)
+    : width_(width), height_(height), rows_held_(window_rows > 0 ? std::min(window_rows, height) : height) {
   if (width < 1 || height < 1) throw std::invalid_argument("a film needs at least one pixel");
-  const std::size_t pixels = std::size_t(width) * std::size_t(height);
+  const std::size_t pixels = std::size_t(width) * std::size_t(rows_held_);
   // Colour keeps room for a fourth channel: the display image widens it to
   // RGBA where it stands (display_image.h). Reserved, not touched, the room
   // is no resident memory while the picture renders.

@@ -11,6 +11,10 @@
 //
 // Colour and alpha are always made; the others only when an output asks
 // for them (an EXR's layers), so a large PNG carries 16 bytes a pixel.
+//
+// A film may hold only a window of the picture's rows: a picture written
+// as it is made (render_image.h, RenderSettings::rows_done) needs a band
+// of rows at a time, not 64 MB at 2000².
 
 #include <array>
 #include <cstdint>
@@ -40,25 +44,33 @@ const PlaneInfo& plane_info(Plane plane);
 
 class Film {
  public:
-  // Colour and alpha, and any of the other `planes`.
-  Film(int width, int height, const std::vector<Plane>& planes = {});
+  // Colour and alpha, and any of the other `planes`, for a picture of
+  // width × height pixels. With `window_rows` (> 0) the film holds that
+  // many rows only: row y where row y % window_rows stands.
+  Film(int width, int height, const std::vector<Plane>& planes = {}, int window_rows = 0);
 
   int width() const { return width_; }
   int height() const { return height_; }
+  // The rows held: the height, or the window's.
+  int rows_held() const { return rows_held_; }
   bool has(Plane p) const { return !data_[std::size_t(p)].empty(); }
-  // The plane's values, row-major, top row first, plane_info(p).channels a pixel.
+  // The plane's values, row-major, top row first, plane_info(p).channels a
+  // pixel: the rows held.
   std::vector<float>& data(Plane p) { return data_[std::size_t(p)]; }
   const std::vector<float>& data(Plane p) const { return data_[std::size_t(p)]; }
-  float* at(Plane p, int x, int y) {
-    return &data_[std::size_t(p)][(std::size_t(y) * std::size_t(width_) + std::size_t(x)) * std::size_t(plane_info(p).channels)];
-  }
+  float* at(Plane p, int x, int y) { return &data_[std::size_t(p)][offset(p, x, y)]; }
+  const float* at(Plane p, int x, int y) const { return &data_[std::size_t(p)][offset(p, x, y)]; }
   // The planes present, in the order above.
   std::vector<Plane> planes() const;
   // The plane's values, moved out of the film (which no longer has it).
   std::vector<float> take(Plane p) { return std::move(data_[std::size_t(p)]); }
 
  private:
-  int width_, height_;
+  std::size_t offset(Plane p, int x, int y) const {
+    const std::size_t row = std::size_t(y % rows_held_);
+    return (row * std::size_t(width_) + std::size_t(x)) * std::size_t(plane_info(p).channels);
+  }
+  int width_, height_, rows_held_;
   std::array<std::vector<float>, kPlaneCount> data_;
 };
 

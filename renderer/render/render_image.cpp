@@ -276,7 +276,7 @@ RenderOutput render_image(const RayScene& scene, const CameraSpec& camera_spec, 
   const int n = std::max(1, settings.samples);
   const int per_pixel = n * n;
 
-  RenderOutput out{Film(settings.width, settings.height, settings.planes)};
+  RenderOutput out{Film(settings.width, settings.height, settings.planes, settings.rows_done ? kBand : 0)};
   tbb::enumerable_thread_specific<SampleTracer> tracers;
   SampleRows rows(settings.width, per_pixel, kBand + 2 * kFilterReach);
   // Rays that cannot meet anything need no tracing, unless the ground
@@ -304,6 +304,7 @@ RenderOutput render_image(const RayScene& scene, const CameraSpec& camera_spec, 
       else if (surface_planes) gather_row<true>(y, settings, per_pixel, rows, out.film);
       else gather_row<false>(y, settings, per_pixel, rows, out.film);
     });
+    if (settings.rows_done) settings.rows_done(out.film, band, band_end);
     if (settings.progress) settings.progress(double(band_end) / settings.height);
   }
 

@@ -7,7 +7,8 @@
 // rules of its film planes (film.h). Every random number is a hash of what
 // it is for, and every sum is taken in the same order, so a render gives the
 // same bytes whatever the thread count; memory beyond the film is a few
-// bands of samples, whatever the picture's size.
+// bands of samples, whatever the picture's size, and the film itself is a
+// band where the picture is handed on as it is made (rows_done).
 
 #include <cstdint>
 #include <functional>
@@ -33,6 +34,10 @@ struct RenderSettings {
   // Called after each band with the fraction of the picture made; empty:
   // nobody is watching.
   std::function<void(double)> progress;
+  // When set, the picture goes here a band at a time as it is made, rows
+  // [first, last) of the film in order, and the film holds only the band
+  // being made (Film's window): RenderOutput::film is left with the last.
+  std::function<void(const Film& film, int first, int last)> rows_done;
 };
 
 struct RenderOutput {
