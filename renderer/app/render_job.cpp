@@ -73,8 +73,9 @@ RenderSummary run_render_job(const RenderJob& job) {
     const RasterStream::Format format =
         display_raster_format(settings.width, settings.height, output, transparent);
     stream.emplace(image_path, format, metadata);
-    settings.rows_done = [&, channels = format.channels](const Film& film, int first, int last) {
-      const std::vector<float> rgba = display_rows(film, first, last, color, transparent);
+    settings.rows_done = [&, channels = format.channels, rgba = std::vector<float>()](const Film& film, int first,
+                                                                                     int last) mutable {
+      display_rows(film, first, last, color, transparent, rgba);
       stream->write_rows({rgba.data(), film.width(), last - first, first, 4, channels});
     };
   }

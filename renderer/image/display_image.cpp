@@ -40,16 +40,15 @@ std::vector<float> display_pixels(Film&& film, const ColorManagement& color, boo
   return rgba;
 }
 
-std::vector<float> display_rows(const Film& film, int first, int last, const ColorManagement& color,
-                                bool keep_alpha) {
+void display_rows(const Film& film, int first, int last, const ColorManagement& color, bool keep_alpha,
+                  std::vector<float>& rgba) {
   if (first / film.rows_held() != (last - 1) / film.rows_held())
     throw std::invalid_argument("display_rows: rows " + std::to_string(first) + " to " + std::to_string(last) +
                                 " are not together in the film's window");
   const std::size_t pixels = std::size_t(film.width()) * std::size_t(last - first);
-  std::vector<float> rgba(pixels * 4);
+  rgba.resize(pixels * 4);
   straight_rgba(film.at(Plane::color, 0, first), film.at(Plane::alpha, 0, first), pixels, keep_alpha, rgba.data());
   to_display(rgba, film.width(), last - first, color);
-  return rgba;
 }
 
 float ink_over(const std::vector<float>& rgba, int width, int x, int y) {

@@ -18,8 +18,10 @@ namespace hsb {
 std::vector<float> display_pixels(Film&& film, const ColorManagement& color, bool keep_alpha);
 
 // The same for the film's rows [first, last), which it holds (a band of a
-// picture written as it is made): (last − first) × width pixels.
-std::vector<float> display_rows(const Film& film, int first, int last, const ColorManagement& color, bool keep_alpha);
+// picture written as it is made): (last − first) × width pixels into
+// `rgba`, resized to fit, keeping its capacity (the next band reuses it).
+void display_rows(const Film& film, int first, int last, const ColorManagement& color, bool keep_alpha,
+                  std::vector<float>& rgba);
 
 // The grey of text drawn over `rgba` near (x, y): black over light
 // pixels, white over dark ones, black over transparent ones.

@@ -45,10 +45,10 @@ int tile_column(int x, int c) { return (x + 3 * kChannelShift[c % 4]) % kTile; }
 
 float dither_offset(int x, int y, int c) { return tile_row(noise_tile(), y, c)[tile_column(x, c)]; }
 
-std::vector<unsigned char> dithered_8bit(const PixelRows& rows, int alpha_channel) {
+void dithered_8bit(const PixelRows& rows, int alpha_channel, std::vector<unsigned char>& bytes) {
   const std::size_t in_row = std::size_t(rows.width) * std::size_t(rows.in_channels);
   const std::size_t out_row = std::size_t(rows.width) * std::size_t(rows.channels);
-  std::vector<unsigned char> bytes(out_row * std::size_t(rows.rows));
+  bytes.resize(out_row * std::size_t(rows.rows));
   const std::array<float, kTile * kTile>& tile = noise_tile();
   const int grain = std::max(1, 8192 / std::max(1, rows.width));  // some 8,000 pixels a task
   tbb::parallel_for(tbb::blocked_range<int>(0, rows.rows, grain), [&](const tbb::blocked_range<int>& band) {
@@ -68,7 +68,6 @@ std::vector<unsigned char> dithered_8bit(const PixelRows& rows, int alpha_channe
       }
     }
   });
-  return bytes;
 }
 
 }  // namespace hsb

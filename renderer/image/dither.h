@@ -20,7 +20,9 @@ namespace hsb {
 // depends only on its own value and its position in the picture: bands of
 // rows on every core, or a picture a band at a time, give the bytes one
 // core gives for the whole.
-std::vector<unsigned char> dithered_8bit(const PixelRows& rows, int alpha_channel);
+// `bytes` is resized to fit, keeping its capacity: a stream's bands reuse
+// their buffers instead of taking fresh pages from the system each time.
+void dithered_8bit(const PixelRows& rows, int alpha_channel, std::vector<unsigned char>& bytes);
 
 // The dither's fraction of a level at pixel (x, y) for channel c, in [0, 1).
 float dither_offset(int x, int y, int c);

@@ -15,10 +15,10 @@ namespace {
 
 // 16-bit samples need no dither: 65,536 levels do not band. Rounded as
 // OIIO rounds floats it converts itself.
-std::vector<std::uint16_t> rounded_16bit(const PixelRows& rows) {
+void rounded_16bit(const PixelRows& rows, std::vector<std::uint16_t>& shorts) {
   const std::size_t in_row = std::size_t(rows.width) * std::size_t(rows.in_channels);
   const std::size_t out_row = std::size_t(rows.width) * std::size_t(rows.channels);
-  std::vector<std::uint16_t> shorts(out_row * std::size_t(rows.rows));
+  shorts.resize(out_row * std::size_t(rows.rows));
   tbb::parallel_for(0, rows.rows, [&](int r) {
     const float* in = rows.pixels + std::size_t(r) * in_row;
     std::uint16_t* out = shorts.data() + std::size_t(r) * out_row;
@@ -29,7 +29,6 @@ std::vector<std::uint16_t> rounded_16bit(const PixelRows& rows) {
         out[std::size_t(x) * std::size_t(rows.channels) + std::size_t(c)] = std::uint16_t(v * 65535.0f + 0.5f);
       }
   });
-  return shorts;
 }
 
 std::string checked_path(const std::string& path, const RasterStream::Format& format) {
@@ -70,12 +69,19 @@ void RasterStream::write_rows(const PixelRows& rows) {
     throw std::logic_error(path_ + ": rows " + std::to_string(rows.first_row) + " to " +
                            std::to_string(rows.first_row + rows.rows) + " do not follow row " +
                            std::to_string(next_row_) + " of the picture's shape");
-  rethrow_failure();
   Band band;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (failure_) std::rethrow_exception(failure_);
+    if (!spare_.empty()) {
+      band = std::move(spare_.back());
+      spare_.pop_back();
+    }
+  }
   band.first = rows.first_row;
   band.rows = rows.rows;
-  if (format_.bit_depth == 8) band.bytes = dithered_8bit(rows, format_.channels == 4 ? 3 : -1);
-  else band.shorts = rounded_16bit(rows);
+  if (format_.bit_depth == 8) dithered_8bit(rows, format_.channels == 4 ? 3 : -1, band.bytes);
+  else rounded_16bit(rows, band.shorts);
   next_row_ += rows.rows;
   {
     const std::lock_guard<std::mutex> lock(mutex_);
@@ -130,8 +136,10 @@ void RasterStream::encode_bands(const Metadata& metadata) {
         band = std::move(bands_.front());
         bands_.pop_front();
       }
-      const void* samples = band.bytes.empty() ? static_cast<const void*>(band.shorts.data()) : band.bytes.data();
+      const void* samples = format_.bit_depth == 8 ? static_cast<const void*>(band.bytes.data()) : band.shorts.data();
       io->write_rows(encoder, band.first, band.rows, samples);
+      const std::lock_guard<std::mutex> lock(mutex_);
+      spare_.push_back(std::move(band));
     }
   } catch (const std::exception& e) {
     const std::lock_guard<std::mutex> lock(mutex_);

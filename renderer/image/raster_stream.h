@@ -74,6 +74,7 @@ class RasterStream {
   std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<Band> bands_;
+  std::vector<Band> spare_;  // written, their buffers kept for the bands to come
   bool closing_ = false, abandoned_ = false;
   std::exception_ptr failure_;
   std::thread writer_;  // last: it starts once the rest is made

@@ -64,7 +64,8 @@ TEST(Dither, FlatValuesAverageToThemselvesWithinALevel) {
   for (float level : {0.0f, 0.1f, 0.25f, 0.5f, 0.77f, 0.93f}) {
     const float value = (77.0f + level) / 255.0f;
     const std::vector<float> pixels(std::size_t(kSide * kSide * 3), value);
-    const std::vector<unsigned char> bytes = dithered_8bit({pixels.data(), kSide, kSide, 0, 3, 3}, -1);
+    std::vector<unsigned char> bytes;
+    dithered_8bit({pixels.data(), kSide, kSide, 0, 3, 3}, -1, bytes);
     for (int c = 0; c < 3; ++c) {
       double sum = 0.0;
       for (std::size_t i = std::size_t(c); i < bytes.size(); i += 3) {
@@ -84,7 +85,8 @@ TEST(Dither, AlphaIsRoundedAndValuesClamped) {
   const std::vector<float> pixels = {1.5f, -0.2f, std::nanf(""), 1.0f,  // clamped colour, opaque
                                      0.0f, 0.0f,  0.0f,          0.0f,  // transparent
                                      0.2f, 0.2f,  0.2f,          0.5f};
-  const std::vector<unsigned char> bytes = dithered_8bit({pixels.data(), 3, 1, 0, 4, 4}, 3);
+  std::vector<unsigned char> bytes;
+  dithered_8bit({pixels.data(), 3, 1, 0, 4, 4}, 3, bytes);
   EXPECT_EQ(bytes[0], 255);
   EXPECT_EQ(bytes[1], 0);
   EXPECT_EQ(bytes[2], 0);
@@ -128,7 +130,9 @@ TEST(ImageOutput, EightBitPngHoldsTheDitheredBytes) {
   auto in = OIIO::ImageInput::open(path);
   ASSERT_TRUE(in);
   ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, read.data()));
-  EXPECT_EQ(read, dithered_8bit({image.pixels.data(), image.width, image.height, 0, 3, 3}, -1));
+  std::vector<unsigned char> dithered;
+  dithered_8bit({image.pixels.data(), image.width, image.height, 0, 3, 3}, -1, dithered);
+  EXPECT_EQ(read, dithered);
 }
 
 // A render counts what the module's load has yet to add instead of

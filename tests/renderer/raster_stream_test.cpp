@@ -60,8 +60,9 @@ TEST(RasterStream, APictureWrittenAsItIsMadeIsThePictureWrittenWhole) {
       RasterStream stream(streamed, format, [&] { return metadata; });
       RenderSettings settings = p->render;
       int bands = 0;
+      std::vector<float> band;
       settings.rows_done = [&](const Film& film, int first, int last) {
-        const std::vector<float> band = display_rows(film, first, last, color, transparent);
+        display_rows(film, first, last, color, transparent, band);
         stream.write_rows({band.data(), film.width(), last - first, first, 4, format.channels});
         ++bands;
       };
