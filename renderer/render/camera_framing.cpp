@@ -84,17 +84,25 @@ CameraSpec frame_camera(const CameraRequest& request, const Box3& framed, int wi
 
 CameraSpec frame_camera(const CameraRequest& request, const std::vector<Vec3>& framed_points, int width, int height,
                         const PictureReserve& reserve) {
-  // Something to frame even when nothing is drawn.
+  // Something to frame even when nothing is drawn: a unit box's corners.
   Box3 box = bounding_box(framed_points);
-  std::vector<Vec3> points;
-  for (const Vec3& p : framed_points)
-    if (p.allFinite()) points.push_back(p);
-  if (!(box.diagonal() > 0.0) || !box.lo.allFinite() || !box.hi.allFinite()) {
+  std::array<Vec3, 8> stand_in;
+  const bool nothing = !(box.diagonal() > 0.0) || !box.lo.allFinite() || !box.hi.allFinite();
+  if (nothing) {
     const Vec3 c = box.centre().allFinite() ? box.centre() : Vec3::Zero();
     box = {c - Vec3::Constant(0.5), c + Vec3::Constant(0.5)};
-    const std::array<Vec3, 8> k = box.corners();
-    points.assign(k.begin(), k.end());
+    stand_in = box.corners();
   }
+  // Every finite point, where they stand: a glyph field's are 14 a glyph
+  // (11 MB for 33,768), which a copy would take again from the system.
+  const auto each_point = [&](auto&& use) {
+    if (nothing) {
+      for (const Vec3& p : stand_in) use(p);
+      return;
+    }
+    for (const Vec3& p : framed_points)
+      if (p.allFinite()) use(p);
+  };
   CameraSpec camera;
   camera.projection = request.projection;
   camera.fov_degrees = request.fov_degrees;
@@ -122,10 +130,10 @@ CameraSpec frame_camera(const CameraRequest& request, const std::vector<Vec3>& f
 
   if (camera.projection == Projection::orthographic) {
     double x_lo = INFINITY, x_hi = -INFINITY, y_lo = INFINITY, y_hi = -INFINITY;
-    for (const Vec3& p : points) {
+    each_point([&](const Vec3& p) {
       x_lo = std::min(x_lo, (p - target).dot(right)), x_hi = std::max(x_hi, (p - target).dot(right));
       y_lo = std::min(y_lo, (p - target).dot(up)), y_hi = std::max(y_hi, (p - target).dot(up));
-    }
+    });
     // The view's half-height h: the window is [u_lo, u_hi]·h·aspect by
     // [v_lo, v_hi]·h in the view plane.
     double half;
@@ -157,13 +165,14 @@ CameraSpec frame_camera(const CameraRequest& request, const std::vector<Vec3>& f
 
   // Corners in the camera's frame about the target: r along `right`, u
   // along `up`, f along `forward`; the camera stands at (P_r, P_u, P_f).
-  std::vector<Vec3> c(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Vec3 q = points[i] - target;
-    c[i] = Vec3(q.dot(right), q.dot(up), q.dot(forward));
-  }
+  const auto each_corner = [&](auto&& use) {
+    each_point([&](const Vec3& p) {
+      const Vec3 q = p - target;
+      use(Vec3(q.dot(right), q.dot(up), q.dot(forward)));
+    });
+  };
   double p_f = INFINITY;
-  for (const Vec3& corner : c) p_f = std::min(p_f, corner.z() - clearance);
+  each_corner([&](const Vec3& corner) { p_f = std::min(p_f, corner.z() - clearance); });
   double p_r = 0.0, p_u = 0.0;
   if (recentre) {
     // Corner i is seen at (c_r − P_r)/(c_f − P_f) ∈ [lo, hi]: linear in P.
@@ -176,18 +185,18 @@ CameraSpec frame_camera(const CameraRequest& request, const std::vector<Vec3>& f
     // a few.
     const auto closest = [&](int axis, double lo, double hi) {
       double min_j = INFINITY, max_i = -INFINITY;
-      for (const Vec3& p : c) {
+      each_corner([&](const Vec3& p) {
         min_j = std::min(min_j, p[axis] - lo * p.z());
         max_i = std::max(max_i, p[axis] - hi * p.z());
-      }
+      });
       return (min_j - max_i) / (hi - lo);
     };
     const auto middle = [&](int axis, double lo, double hi) {
       double from = -INFINITY, to = INFINITY;
-      for (const Vec3& i : c) {
+      each_corner([&](const Vec3& i) {
         from = std::max(from, i[axis] - hi * (i.z() - p_f));
         to = std::min(to, i[axis] - lo * (i.z() - p_f));
-      }
+      });
       return 0.5 * (from + to);
     };
     p_f = std::min({p_f, closest(0, x_lo, x_hi), closest(1, y_lo, y_hi)});
@@ -195,10 +204,10 @@ CameraSpec frame_camera(const CameraRequest& request, const std::vector<Vec3>& f
     p_u = middle(1, y_lo, y_hi);
   } else {
     // The view passes through the given look_at: only the distance is free.
-    for (const Vec3& corner : c) {
+    each_corner([&](const Vec3& corner) {
       const double x = corner.x(), y = corner.y();
       p_f = std::min({p_f, corner.z() - (x > 0.0 ? x / x_hi : x / x_lo), corner.z() - (y > 0.0 ? y / y_hi : y / y_lo)});
-    }
+    });
   }
   camera.position = target + p_r * right + p_u * up + p_f * forward;
   camera.look_at = camera.position - p_f * forward;  // on the axis, level with the target
