@@ -460,9 +460,20 @@ std::pair<std::vector<double>, ValueLocation> named_scalar_values(vtkDataSet* da
   return scalar_values(chosen, path, vectors);
 }
 
-// Where the values of point data (or cell data) stand: the points, or the
-// cells' parametric centres.
-std::vector<Vec3> site_positions(vtkDataSet* data, bool on_points) {
+// Where the values of point data (or cell data) stand: the points (an
+// image's as its grid), or the cells' parametric centres.
+SitePositions site_positions(vtkDataSet* data, bool on_points) {
+  if (auto* image = vtkImageData::SafeDownCast(data); image && on_points) {
+    const int* extent = image->GetExtent();
+    const int* dims = image->GetDimensions();
+    const double* spacing = image->GetSpacing();
+    const double* origin = image->GetOrigin();
+    Mat3 direction;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) direction(i, j) = image->GetDirectionMatrix()->GetElement(i, j);
+    return SitePositions(Vec3(origin[0], origin[1], origin[2]), Vec3(spacing[0], spacing[1], spacing[2]), direction,
+                         {extent[0], extent[2], extent[4]}, {dims[0], dims[1], dims[2]});
+  }
   std::vector<Vec3> sites;
   double p[3];
   if (on_points) {
@@ -489,12 +500,12 @@ std::vector<Vec3> site_positions(vtkDataSet* data, bool on_points) {
 
 // The colour array at the sites: its own values where they stand there
 // too, else sampled at each site where there is volume (NaN: none).
-std::vector<double> site_colors(const std::vector<Vec3>& sites, bool on_points, const std::vector<double>& values,
+std::vector<double> site_colors(const SitePositions& sites, bool on_points, const std::vector<double>& values,
                                 ValueLocation where, const ScalarField* color) {
   if ((where == ValueLocation::points) == on_points) return values;
   std::vector<double> colors;
   colors.reserve(sites.size());
-  for (const Vec3& p : sites) colors.push_back(color ? color->sample(p).value_or(NAN) : NAN);
+  for (std::size_t i = 0; i < sites.size(); ++i) colors.push_back(color ? color->sample(sites[i]).value_or(NAN) : NAN);
   return colors;
 }
 

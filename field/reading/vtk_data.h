@@ -10,6 +10,7 @@
 
 #include "base/shared_values.h"
 #include "field/glyphs/triangle_mesh.h"
+#include "field/reading/site_positions.h"
 #include "field/sampling/field.h"
 
 namespace hsb {
@@ -54,7 +55,7 @@ struct VtkFileSpec {
 // The drawn array's values where they stand: its points, or its cells'
 // centres for cell data. For a glyph at each (glyphs.placement = "points").
 struct DataSites {
-  std::vector<Vec3> positions;
+  SitePositions positions;
   SharedValues<Sym3> tensors;  // tensor data (the field's own, not a copy); or
   std::vector<Vec3> vectors;   // vector data
   std::vector<double> colors;  // VtkFileSpec::color_array at each, when named (NaN: none there)
