@@ -18,6 +18,7 @@
 // any is read, so the file is parsed in this process (FormatReader::in_process).
 
 #include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkFieldData.h>
 #include <vtkMatrix3x3.h>
@@ -35,6 +36,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <type_traits>
 #include <limits>
 #include <map>
 #include <optional>
@@ -467,7 +469,13 @@ vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path, bool scalar) {
 
   const DecodedValues values = read_values(h, path, count, type);
   const vtkIdType voxels = vtkIdType(count / std::uint64_t(layout.values));
-  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  // Floats where the file's numbers are (or fit in them exactly): the
+  // array is read once more, into the field's doubles, and a double copy
+  // beside those was the read's peak (33 MB twice for Teem's helix at 88³).
+  const bool as_float = values.bytes && (type.kind == NumberType::floating ? type.bytes == 4 : type.bytes <= 2);
+  vtkSmartPointer<vtkDataArray> array;
+  if (as_float) array = vtkSmartPointer<vtkFloatArray>::New();
+  else array = vtkSmartPointer<vtkDoubleArray>::New();
   array->SetName(layout.kind == VoxelLayout::scalar   ? "values"
                  : layout.kind == VoxelLayout::vector ? "vectors"
                                                       : "tensors");
@@ -477,46 +485,52 @@ vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path, bool scalar) {
                                                                   : 6;
   array->SetNumberOfComponents(out_components);
   array->SetNumberOfTuples(voxels);
-  advise_huge_pages(array->GetPointer(0), std::size_t(voxels) * std::size_t(out_components) * sizeof(double));
+  advise_huge_pages(array->GetVoidPointer(0), std::size_t(voxels) * std::size_t(out_components) * array->GetDataTypeSize());
   const ComponentOrder& teem_order = *component_order("teem");
   const ComponentOrder& vtk_order = *component_order("vtk");
   const bool in_space_frame = frame == Mat3::Identity();
   // Written in place: VTK's per-tuple setters cost a third of the read.
   // Each voxel is its own: in bands on every core.
-  double* out = array->GetPointer(0);
-  const auto convert = [&](const auto& at, vtkIdType i) {
+  const auto convert = [&](const auto& at, auto* out, vtkIdType i) {
+    using Out = std::remove_pointer_t<decltype(out)>;  // float or double: the array's
     double v[10];  // the voxel's values (at most a masked 3×3 matrix's ten)
     for (int k = 0; k < layout.values; ++k) v[k] = at(std::uint64_t(i) * std::uint64_t(layout.values) + std::uint64_t(k));
-    double* o = out + std::size_t(i) * std::size_t(out_components);
+    Out* o = out + std::size_t(i) * std::size_t(out_components);
+    const auto put = [&](const double* from, int n) {
+      for (int c = 0; c < n; ++c) o[c] = Out(from[c]);
+    };
     if (layout.kind == VoxelLayout::scalar) {
-      o[0] = v[0];
+      put(v, 1);
       return;
     }
     if (layout.kind == VoxelLayout::vector) {
-      const Vec3 w = frame * Vec3(v[0], v[1], v[2]);
-      o[0] = w.x(), o[1] = w.y(), o[2] = w.z();
+      put((frame * Vec3(v[0], v[1], v[2])).eval().data(), 3);
       return;
     }
     const double* t = v + (layout.masked ? 1 : 0);
     const bool outside = layout.masked && !(v[0] >= 0.5);  // Teem: below 0.5 is outside the mask
     if (out_components == 9) {
-      Mat3 m = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(t);
+      Eigen::Matrix<double, 3, 3, Eigen::RowMajor> m = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(t);
       if (!in_space_frame) m = frame * m * frame.transpose();
       if (outside) m.setConstant(std::nan(""));
-      for (int c = 0; c < 9; ++c) o[c] = m(c / 3, c % 3);
+      put(m.data(), 9);
       return;
     }
     Sym3 sym = tensor_in_order(t, teem_order);
     if (!in_space_frame) sym = Sym3::symmetric_part(frame * sym.matrix() * frame.transpose());
-    const std::array<double, 6> six = components_in_order(sym, vtk_order);
-    if (outside) std::fill(o, o + 6, std::nan(""));
-    else std::copy(six.begin(), six.end(), o);
+    std::array<double, 6> six = components_in_order(sym, vtk_order);
+    if (outside) six.fill(std::nan(""));
+    put(six.data(), 6);
   };
-  with_values(values, [&](const auto& at) {
-    tbb::parallel_for(tbb::blocked_range<vtkIdType>(0, voxels, 8192), [&](const tbb::blocked_range<vtkIdType>& band) {
-      for (vtkIdType i = band.begin(); i < band.end(); ++i) convert(at, i);
+  const auto convert_all = [&](auto* out) {
+    with_values(values, [&](const auto& at) {
+      tbb::parallel_for(tbb::blocked_range<vtkIdType>(0, voxels, 8192), [&](const tbb::blocked_range<vtkIdType>& band) {
+        for (vtkIdType i = band.begin(); i < band.end(); ++i) convert(at, out, i);
+      });
     });
-  });
+  };
+  if (as_float) convert_all(static_cast<float*>(array->GetVoidPointer(0)));
+  else convert_all(static_cast<double*>(array->GetVoidPointer(0)));
 
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(dims[0], dims[1], dims[2]);
