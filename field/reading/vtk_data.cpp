@@ -357,6 +357,14 @@ ChosenArray averaged_onto_points(vtkDataSet* data, const ChosenArray& cells, con
 
 // Image data a uniform grid can stand for: a volume (two nodes or more on
 // every axis) with an invertible direction matrix, turned or not.
+// An image's direction matrix: the directions of its i, j and k axes.
+Mat3 direction_of(vtkImageData* image) {
+  Mat3 direction;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) direction(i, j) = image->GetDirectionMatrix()->GetElement(i, j);
+  return direction;
+}
+
 bool is_image_volume(vtkDataSet* data) {
   auto* image = vtkImageData::SafeDownCast(data);
   if (!image) return false;
@@ -376,9 +384,7 @@ std::unique_ptr<Field<T>> sampled_field(vtkDataSet* data, SharedValues<T> values
   const int* extent = image->GetExtent();
   const double* origin = image->GetOrigin();
   const double* spacing = image->GetSpacing();
-  Mat3 direction;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) direction(i, j) = image->GetDirectionMatrix()->GetElement(i, j);
+  const Mat3 direction = direction_of(image);
   // The first node: the extent may start away from index 0.
   const Vec3 first = Vec3(origin[0], origin[1], origin[2]) +
                      direction * Vec3(extent[0] * spacing[0], extent[2] * spacing[1], extent[4] * spacing[2]);
@@ -468,11 +474,8 @@ SitePositions site_positions(vtkDataSet* data, bool on_points) {
     const int* dims = image->GetDimensions();
     const double* spacing = image->GetSpacing();
     const double* origin = image->GetOrigin();
-    Mat3 direction;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) direction(i, j) = image->GetDirectionMatrix()->GetElement(i, j);
-    return SitePositions(Vec3(origin[0], origin[1], origin[2]), Vec3(spacing[0], spacing[1], spacing[2]), direction,
-                         {extent[0], extent[2], extent[4]}, {dims[0], dims[1], dims[2]});
+    return SitePositions(Vec3(origin[0], origin[1], origin[2]), Vec3(spacing[0], spacing[1], spacing[2]),
+                         direction_of(image), {extent[0], extent[2], extent[4]}, {dims[0], dims[1], dims[2]});
   }
   std::vector<Vec3> sites;
   double p[3];
