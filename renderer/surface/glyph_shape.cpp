@@ -194,7 +194,7 @@ double shape_u_rate(GlyphShape shape, const ShapeParams& params, const Vec3& q_s
 
 double shape_entry(GlyphShape shape, const ShapeParams& params, const Vec3& q0, const Vec3& v, double u_level,
                    double lo, double hi) {
-  double t = lo;
+  double t = lo, last_step = INFINITY;
   for (int i = 0; i < 60; ++i) {
     double slope;
     const double excess = shape_u_rate(shape, params, q0 + t * v, v, slope) - u_level;
@@ -202,9 +202,17 @@ double shape_entry(GlyphShape shape, const ShapeParams& params, const Vec3& q0, 
     if (slope >= 0.0) return -1.0;
     const double next = t - excess / slope;
     if (next > hi) return -1.0;
-    // Converged: the root lies within round-off of next.
-    if (next - t <= 1e-13 * (std::fabs(t) + std::fabs(next)) || excess <= 1e-13 * u_level) return next;
+    // Converged: the root lies within round-off of next. Or Newton's own
+    // regime has begun, each error about K times the last one squared:
+    // a step below a hundredth of the one before says K e ≤ 1/100, so
+    // next's error, K e², is a ten-thousandth of a step that is itself
+    // below 10⁻⁸ of t, and the gauge evaluation that would confirm it
+    // (a quarter of a union of superquadrics' entries) is left out.
+    const double step = next - t, scale = std::fabs(t) + std::fabs(next);
+    if (step <= 1e-13 * scale || excess <= 1e-13 * u_level || (step <= 1e-8 * scale && step <= 1e-2 * last_step))
+      return next;
     t = next;
+    last_step = step;
   }
   return -1.0;  // not settled: no bound from this source, which is always safe
 }
