@@ -145,6 +145,23 @@ double FieldRay::group_crossing(const BlobField& field, const Vec3& origin, cons
   // the sources' values at tmin and their peaks, which bound a blend, are
   // not needed.
   if (quadric_ && field.blend == Blend::max) return upper;
+  // The exact entry into a shape's own level surface, at or before the
+  // ball's (or at the ball's, should round-off put Newton's a hair past):
+  // the whole answer for a union, and for an `any` query an answer that
+  // ends the ray, both found before the spans' peaks are summed or their
+  // rays made and put in order, which neither needs. A blend's first
+  // crossing lies at or before it, and
+  // the walk below finds that crossing with the same probes whether or
+  // not it knows the entry (the same kernel evaluations on fig05 and
+  // fig08), so the Newton iterations, one glyph at a time and a twelfth
+  // of fig08's camera rays, are left out there.
+  const auto exact_entry = [&] {
+    return first_shape_entry(field, origin, direction, g_level, tmin, upper >= 0.0 ? upper : tmax, stats);
+  };
+  if (!quadric_ && field.blend == Blend::max) {
+    const double exact = exact_entry();
+    return exact >= 0.0 ? exact : upper;
+  }
   double at_start = 0.0, peaks = 0.0, last_peak = tmin;
   peaks_.resize(spans.size());
   for (std::uint32_t i = 0; i < spans.size(); ++i) {
@@ -160,26 +177,11 @@ double FieldRay::group_crossing(const BlobField& field, const Vec3& origin, cons
     // Blended sources whose peaks (from g_e, upper bounds) sum below C
     // leave F below it: nothing of the shapes is needed.
     if (field.blend == Blend::sum && upper < 0.0 && peaks < c) return -1.0;
-    prepare_shape_rays(field, origin, direction);
-    // The exact entry into a shape's own level surface, at or before the
-    // ball's (or at the ball's, should round-off put Newton's a hair past):
-    // the whole answer for a union, and for an `any` query an answer that
-    // ends the ray. A blend's first crossing lies at or before it, and the
-    // walk below finds that crossing with the same probes whether or not
-    // it knows the entry (the same kernel evaluations on fig05 and fig08),
-    // so the Newton iterations, one glyph at a time and a twelfth of
-    // fig08's camera rays, are left out there.
-    if (field.blend == Blend::max || query == CrossingQuery::any) {
-      // Entering the bounding ellipsoid's level surface g_e = g_level is
-      // the earliest a shape's own (inside that one) can be entered.
-      entries_.clear();
-      for (std::uint32_t i = 0; i < spans.size(); ++i) {
-        const double t = single_source_entry(spans[i], g_level, tmin, upper >= 0.0 ? upper : tmax);
-        if (t >= 0.0) entries_.push_back({t, i});
-      }
-      const double exact = first_shape_entry(field, g_level, upper >= 0.0 ? upper : tmax, stats);
-      if (exact >= 0.0) upper = exact;
+    if (query == CrossingQuery::any) {
+      const double exact = exact_entry();
+      if (exact >= 0.0) return exact;
     }
+    prepare_shape_rays(field, origin, direction);
   }
   // For a union the single sources are the whole answer.
   if (field.blend == Blend::max || (upper >= 0.0 && query == CrossingQuery::any)) return upper;

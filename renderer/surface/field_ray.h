@@ -109,6 +109,14 @@ class FieldRay {
   // active source, and F < C not proven. False when none is left.
   bool next_segment(const BlobField& field, double tmax, double& start, double& end, TraceStats& stats);
 
+  // Each span's ray in its source's stored frame, q_s(t) = q0 + t v; only
+  // for shapes other than the ellipsoid.
+  // rate: Lσ√a, the most u changes per unit along the ray (glyph_shape.h).
+  struct ShapeRay {
+    Vec3 q0, v;
+    double rate;
+  };
+
   // Shapes other than the ellipsoid (shape_trace.cpp). Their g is not
   // quadratic along the ray; u = √g is convex along it.
   //  - Each span's ray in its source's stored frame (shape_rays_), and
@@ -116,8 +124,15 @@ class FieldRay {
   //    supports, ray_span.h) put in the order the ray enters them.
   void prepare_shape_rays(const BlobField& field, const Vec3& origin, const Vec3& direction);
   //  - The earliest exact entry into one source's own level surface u =
-  //    √g_level among entries_ (each span's outer bound), or −1.
-  double first_shape_entry(const BlobField& field, double g_level, double tmax, TraceStats& stats);
+  //    √g_level in [tmin, tmax], or −1: Newton's method from each span's
+  //    outer bound (the bounding ellipsoid's entry), nearest first, each
+  //    span's ray made for it alone. Needs neither the spans in order nor
+  //    their prepared rays: a union, and an `any` query that enters a
+  //    source, are answered without them.
+  double first_shape_entry(const BlobField& field, const Vec3& origin, const Vec3& direction, double g_level,
+                           double tmin, double tmax, TraceStats& stats);
+  //  - A span's ray in its source's stored frame.
+  ShapeRay shape_ray(const BlobField& field, const RaySpan& span, const Vec3& origin, const Vec3& direction) const;
   //  - F at t, over the spans whose interval holds t; keeps each one's u and
   //    du/dt there for proven_below_until(), and F's slope dF/dt.
   //    A Probe::bound skips the sources whose last tangent rises from
@@ -158,13 +173,6 @@ class FieldRay {
   SupportSweep sweep_;
   FieldUpperBound bound_;
   std::vector<double> peaks_;  // each span's largest value on its interval
-  // Each span's ray in its source's stored frame, q_s(t) = q0 + t v; only
-  // for shapes other than the ellipsoid.
-  // rate: Lσ√a, the most u changes per unit along the ray (glyph_shape.h).
-  struct ShapeRay {
-    Vec3 q0, v;
-    double rate;
-  };
   bool quadric_ = true;  // the field's shape is the ellipsoid (shape_is_quadric)
   std::vector<ShapeRay> shape_rays_;
   // Each span's u and du/dt where shape_value_at() last evaluated it.

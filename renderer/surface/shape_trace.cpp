@@ -21,6 +21,7 @@
 #include <limits>
 
 #include "renderer/surface/field_ray.h"
+#include "renderer/surface/single_source.h"
 
 namespace hsb {
 
@@ -30,16 +31,19 @@ namespace {
 constexpr double kSliver = 1.0 / 32.0;
 }  // namespace
 
+FieldRay::ShapeRay FieldRay::shape_ray(const BlobField& field, const RaySpan& span, const Vec3& origin,
+                                       const Vec3& direction) const {
+  const BlobSource& source = field.sources[span.source];
+  const Mat3 w = shape_matrix(source);
+  const ShapeParams& shape = shape_params(field, span.source);
+  return {scaled_offset(source, w, origin), w * direction,
+          std::sqrt(span.a) * double(shape.bound_scale) * double(shape.lipschitz)};
+}
+
 void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, const Vec3& direction) {
   const std::size_t count = spans.size();
   shape_rays_.clear();
-  for (const RaySpan& s : spans) {
-    const BlobSource& source = field.sources[s.source];
-    const Mat3 w = shape_matrix(source);
-    const ShapeParams& shape = shape_params(field, s.source);
-    shape_rays_.push_back({scaled_offset(source, w, origin), w * direction,
-                           std::sqrt(s.a) * double(shape.bound_scale) * double(shape.lipschitz)});
-  }
+  for (const RaySpan& s : spans) shape_rays_.push_back(shape_ray(field, s, origin, direction));
   // In the order the ray enters them, ties in spatial rank order: every
   // sum over the spans is then the same to the bit whatever order the BVH
   // handed them over in, and a sum up to some t stops at the first span
@@ -62,9 +66,18 @@ void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, co
   proof_step_ = 0.0;
 }
 
-double FieldRay::first_shape_entry(const BlobField& field, double g_level, double tmax, TraceStats& stats) {
+double FieldRay::first_shape_entry(const BlobField& field, const Vec3& origin, const Vec3& direction,
+                                   double g_level, double tmin, double tmax, TraceStats& stats) {
+  // Entering the bounding ellipsoid's level surface g_e = g_level is the
+  // earliest a shape's own (inside that one) can be entered.
+  entries_.clear();
+  for (std::uint32_t i = 0; i < spans.size(); ++i) {
+    const double t = single_source_entry(spans[i], g_level, tmin, tmax);
+    if (t >= 0.0) entries_.push_back({t, i});
+  }
   // Nearest first: a source whose outer entry is past the best exact entry
-  // so far cannot improve on it.
+  // so far cannot improve on it. (The least exact entry is the same
+  // whatever order equal outer entries come in.)
   std::sort(entries_.begin(), entries_.end(), [](const Entry& a, const Entry& b) {
     return a.t < b.t || (a.t == b.t && a.span < b.span);
   });
@@ -72,7 +85,7 @@ double FieldRay::first_shape_entry(const BlobField& field, double g_level, doubl
   double upper = -1.0;
   for (const Entry& e : entries_) {
     if (upper >= 0.0 && e.t >= upper) break;
-    const ShapeRay& r = shape_rays_[e.span];
+    const ShapeRay r = shape_ray(field, spans[e.span], origin, direction);
     const double t = shape_entry(field.shape, shape_params(field, spans[e.span].source), r.q0, r.v, u_level, e.t,
                                  upper >= 0.0 ? upper : tmax);
     ++stats.field_evaluations;
