@@ -60,10 +60,9 @@ void preload_image_io();
 void finish_image_io_preload();
 
 // What the module's load may still add to this process's resident memory:
-// 0 once it is loaded (or before it is asked for); else what its
-// libraries' files have yet to take, against a whole load's (the files
-// paged in since it began counted as its), and what their relocations
-// and constructors take as it ends. A render counts it
+// 0 once it is loaded (or before it is asked for); else the share of a
+// whole load's memory that its libraries' files have yet to take (the
+// files paged in since it began counted as its). A render counts it
 // into its estimate instead of waiting for the load, which would hold
 // the render back a tenth of a second; the picture is written after it.
 double image_io_pending_bytes();
