@@ -3,9 +3,10 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include <algorithm>
 #include <cstdlib>
 #include <sstream>
+
+#include "renderer/image/pixel_rows.h"
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -62,11 +63,8 @@ Rgb ColorManagement::to_picking(const Rgb& linear) const {
 
 void ColorManagement::apply_display(std::vector<float>& rgba, int width, int height) const {
   // The processor works pixel by pixel and keeps no state: bands of rows
-  // on every core give the same values as the whole image on one. A band
-  // of some 8,000 pixels: a picture written as it is made comes a few rows
-  // at a time, and those too go to every core.
-  const int grain = std::max(1, 8192 / std::max(1, width));
-  tbb::parallel_for(tbb::blocked_range<int>(0, height, grain), [&](const tbb::blocked_range<int>& rows) {
+  // on every core give the same values as the whole image on one.
+  tbb::parallel_for(tbb::blocked_range<int>(0, height, rows_per_task(width)), [&](const tbb::blocked_range<int>& rows) {
     float* band = rgba.data() + std::size_t(rows.begin()) * std::size_t(width) * 4;
     if (!display_tables_) {
       OCIO::PackedImageDesc image(band, width, long(rows.size()), 4);

@@ -50,8 +50,7 @@ void dithered_8bit(const PixelRows& rows, int alpha_channel, std::vector<unsigne
   const std::size_t out_row = std::size_t(rows.width) * std::size_t(rows.channels);
   bytes.resize(out_row * std::size_t(rows.rows));
   const std::array<float, kTile * kTile>& tile = noise_tile();
-  const int grain = std::max(1, 8192 / std::max(1, rows.width));  // some 8,000 pixels a task
-  tbb::parallel_for(tbb::blocked_range<int>(0, rows.rows, grain), [&](const tbb::blocked_range<int>& band) {
+  tbb::parallel_for(tbb::blocked_range<int>(0, rows.rows, rows_per_task(rows.width)), [&](const tbb::blocked_range<int>& band) {
     for (int r = band.begin(); r < band.end(); ++r) {
       const int y = rows.first_row + r;
       const float* in = rows.pixels + std::size_t(r) * in_row;
@@ -59,8 +58,7 @@ void dithered_8bit(const PixelRows& rows, int alpha_channel, std::vector<unsigne
       for (int c = 0; c < rows.channels; ++c) {
         const float* noise = tile_row(tile, y, c);
         for (int x = 0; x < rows.width; ++x) {
-          const float value = in[std::size_t(x) * std::size_t(rows.in_channels) + std::size_t(c)];
-          const float v = value > 0.0f ? std::min(value, 1.0f) : 0.0f;  // NaN too becomes 0
+          const float v = clamped_to_unit(in[std::size_t(x) * std::size_t(rows.in_channels) + std::size_t(c)]);
           const float offset = c == alpha_channel ? 0.5f : noise[tile_column(x, c)];
           out[std::size_t(x) * std::size_t(rows.channels) + std::size_t(c)] =
               (unsigned char)std::min(255.0f, v * 255.0f + offset);

@@ -3,7 +3,6 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include <algorithm>
 #include <stdexcept>
 
 #include "base/file_extension.h"
@@ -19,15 +18,17 @@ void rounded_16bit(const PixelRows& rows, std::vector<std::uint16_t>& shorts) {
   const std::size_t in_row = std::size_t(rows.width) * std::size_t(rows.in_channels);
   const std::size_t out_row = std::size_t(rows.width) * std::size_t(rows.channels);
   shorts.resize(out_row * std::size_t(rows.rows));
-  tbb::parallel_for(0, rows.rows, [&](int r) {
-    const float* in = rows.pixels + std::size_t(r) * in_row;
-    std::uint16_t* out = shorts.data() + std::size_t(r) * out_row;
-    for (int x = 0; x < rows.width; ++x)
-      for (int c = 0; c < rows.channels; ++c) {
-        const float value = in[std::size_t(x) * std::size_t(rows.in_channels) + std::size_t(c)];
-        const float v = value > 0.0f ? std::min(value, 1.0f) : 0.0f;  // NaN too becomes 0
-        out[std::size_t(x) * std::size_t(rows.channels) + std::size_t(c)] = std::uint16_t(v * 65535.0f + 0.5f);
-      }
+  const tbb::blocked_range<int> all(0, rows.rows, rows_per_task(rows.width));
+  tbb::parallel_for(all, [&](const tbb::blocked_range<int>& band) {
+    for (int r = band.begin(); r < band.end(); ++r) {
+      const float* in = rows.pixels + std::size_t(r) * in_row;
+      std::uint16_t* out = shorts.data() + std::size_t(r) * out_row;
+      for (int x = 0; x < rows.width; ++x)
+        for (int c = 0; c < rows.channels; ++c) {
+          const float v = clamped_to_unit(in[std::size_t(x) * std::size_t(rows.in_channels) + std::size_t(c)]);
+          out[std::size_t(x) * std::size_t(rows.channels) + std::size_t(c)] = std::uint16_t(v * 65535.0f + 0.5f);
+        }
+    }
   });
 }
 

@@ -141,24 +141,22 @@ double FieldRay::group_crossing(const BlobField& field, const Vec3& origin, cons
   const double g_level = level_g(field.kernel, c);
   double upper = drop_spans_beyond_first_entry(field, tmin, tmax);
   if (upper >= 0.0 && query == CrossingQuery::any) return upper;  // an `any` query has its answer
-  // A union of ellipsoids: that earliest entry is the whole answer, and
-  // the sources' values at tmin and their peaks, which bound a blend, are
-  // not needed.
-  if (quadric_ && field.blend == Blend::max) return upper;
   // The exact entry into a shape's own level surface, at or before the
-  // ball's (or at the ball's, should round-off put Newton's a hair past):
-  // the whole answer for a union, and for an `any` query an answer that
-  // ends the ray, both found before the spans' peaks are summed or their
-  // rays made and put in order, which neither needs. A blend's first
-  // crossing lies at or before it, and
-  // the walk below finds that crossing with the same probes whether or
-  // not it knows the entry (the same kernel evaluations on fig05 and
-  // fig08), so the Newton iterations, one glyph at a time and a twelfth
-  // of fig08's camera rays, are left out there.
+  // ball's (or at the ball's, should round-off put Newton's a hair past),
+  // found before the spans' peaks are summed or their rays made and put in
+  // order, which it does not need. A blend's first crossing lies at or
+  // before it, and the walk below finds that crossing with the same probes
+  // whether or not it knows the entry (the same kernel evaluations on
+  // fig05 and fig08), so the Newton iterations, one glyph at a time and a
+  // twelfth of fig08's camera rays, are left out there.
   const auto exact_entry = [&] {
     return first_shape_entry(field, origin, direction, g_level, tmin, upper >= 0.0 ? upper : tmax, stats);
   };
-  if (!quadric_ && field.blend == Blend::max) {
+  // A union: the earliest entry is the whole answer (an ellipsoid's is
+  // the one above), and the sources' values at tmin and their peaks, which
+  // bound a blend, are not needed.
+  if (field.blend == Blend::max) {
+    if (quadric_) return upper;
     const double exact = exact_entry();
     return exact >= 0.0 ? exact : upper;
   }
@@ -167,7 +165,7 @@ double FieldRay::group_crossing(const BlobField& field, const Vec3& origin, cons
   for (std::uint32_t i = 0; i < spans.size(); ++i) {
     const RaySpan& s = spans[i];
     // (Another shape's value at tmin is shape_trace's first probe.)
-    if (quadric_ && s.t0 <= tmin) at_start = blended(field.blend, at_start, kernel_value(field.kernel, s.g(tmin)));
+    if (quadric_ && s.t0 <= tmin) at_start += kernel_value(field.kernel, s.g(tmin));  // a sum: a union has its answer
     peaks_[i] = kernel_value(field.kernel, s.g(peak_t(s)));
     peaks += peaks_[i];
     last_peak = std::max(last_peak, peak_t(s));
@@ -176,15 +174,14 @@ double FieldRay::group_crossing(const BlobField& field, const Vec3& origin, cons
   if (!quadric_) {
     // Blended sources whose peaks (from g_e, upper bounds) sum below C
     // leave F below it: nothing of the shapes is needed.
-    if (field.blend == Blend::sum && upper < 0.0 && peaks < c) return -1.0;
+    if (upper < 0.0 && peaks < c) return -1.0;
+    // An `any` query ends at an exact entry.
     if (query == CrossingQuery::any) {
       const double exact = exact_entry();
       if (exact >= 0.0) return exact;
     }
     prepare_shape_rays(field, origin, direction);
   }
-  // For a union the single sources are the whole answer.
-  if (field.blend == Blend::max || (upper >= 0.0 && query == CrossingQuery::any)) return upper;
   if (at_start >= c) return tmin;
   if (peaks < c) return -1.0;
   // A crowd of sources that no single one reaches C in (a blended cap)
@@ -198,7 +195,7 @@ double FieldRay::group_crossing(const BlobField& field, const Vec3& origin, cons
     double f = 0.0;
     for (std::uint32_t i = 0; i < spans.size(); ++i)
       if (spans[i].t0 <= t_crowd && t_crowd <= spans[i].t1)
-        f = blended(field.blend, f, kernel_value(field.kernel, spans[i].g(t_crowd)));
+        f += kernel_value(field.kernel, spans[i].g(t_crowd));
     stats.kernel_evaluations += spans.size();
     if (f >= c) {
       if (query == CrossingQuery::any) return t_crowd;
