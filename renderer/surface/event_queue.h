@@ -3,7 +3,9 @@
 // taken in order of t. They are binned by t into as many equal stretches as
 // there are events, and each bin is sorted only when it is reached: about
 // O(k) for k events spread along the ray, O(k log k) at worst, and a walk
-// that stops early pays only for the bins it reached.
+// that stops early pays only for the bins it reached. A few events (most
+// rays cross a dozen or two supports) are sorted at once instead: binning
+// them costs more than an insertion sort.
 
 #include <algorithm>
 #include <cstdint>
@@ -20,7 +22,8 @@ struct RayEvent {
 
 class RayEventQueue {
  public:
-  // Takes the events (any order); all must lie at or after `lo`.
+  // Takes the events (any order); all must lie at or after `lo`. Leaves
+  // `events` with unspecified contents (its buffer may be swapped in).
   void assign(std::vector<RayEvent>& events, double lo);
 
   // The next event, false when none is left.
@@ -42,6 +45,7 @@ class RayEventQueue {
   std::vector<std::uint32_t> bin_start_;  // bin b holds events_[bin_start_[b], bin_start_[b + 1])
   std::vector<std::uint32_t> bin_fill_;   // where each bin is being filled (assign() only)
   std::size_t next_ = 0, sorted_until_ = 0, next_bin_ = 0;
+  static constexpr std::size_t kSortedAtOnce = 24;  // up to this many, one sorted bin
 };
 
 }  // namespace hsb

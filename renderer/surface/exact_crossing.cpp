@@ -21,17 +21,16 @@
 namespace hsb {
 namespace {
 
-// de Casteljau at u: the value, and the two halves' coefficients.
-double de_casteljau(const RayPolynomial& b, int n, double u, RayPolynomial* left, RayPolynomial* right) {
+// de Casteljau at ½: the two halves' coefficients.
+void split_in_half(const RayPolynomial& b, int n, RayPolynomial& left, RayPolynomial& right) {
   RayPolynomial w = b;
-  if (left) (*left)[0] = w[0];
-  if (right) (*right)[std::size_t(n)] = w[std::size_t(n)];
+  left[0] = w[0];
+  right[std::size_t(n)] = w[std::size_t(n)];
   for (int r = 1; r <= n; ++r) {
-    for (int i = 0; i <= n - r; ++i) w[std::size_t(i)] = (1 - u) * w[std::size_t(i)] + u * w[std::size_t(i + 1)];
-    if (left) (*left)[std::size_t(r)] = w[0];
-    if (right) (*right)[std::size_t(n - r)] = w[std::size_t(n - r)];
+    for (int i = 0; i <= n - r; ++i) w[std::size_t(i)] = 0.5 * (w[std::size_t(i)] + w[std::size_t(i + 1)]);
+    left[std::size_t(r)] = w[0];
+    right[std::size_t(n - r)] = w[std::size_t(n - r)];
   }
-  return w[0];
 }
 
 int sign_changes(const RayPolynomial& b, int n) {
@@ -64,18 +63,24 @@ double first_entry(const RayPolynomial& bernstein, int n, TraceStats& stats) {
     if ((changes == 1 && ends_inside) || piece.hi - piece.lo < 1e-14 || top + 2 > int(stack.size())) {
       if (!ends_inside) continue;  // an even number of crossings too close to tell apart: a touch
       // Exactly one root in (lo, hi): Illinois on the piece's own
-      // coefficients, to 1e-13 of the segment (far below the 1e-5 of the
-      // scene asked for) or until F − C is at round-off level.
+      // polynomial, to 1e-13 of the segment (far below the 1e-5 of the
+      // scene asked for) or until F − C is at round-off level. In powers
+      // of u a value is n steps of Horner's rule, where de Casteljau's
+      // takes n(n + 1)/2 (most segments hold their root in the first piece,
+      // and this is where they spend their time); on a piece whose
+      // Bernstein coefficients are of order one the power coefficients are
+      // at most 2ⁿ larger, a rounding far below the tolerance.
+      const RayPolynomial p = from_bernstein(b, n);
       const double u = illinois(
           [&](double x) {
             ++stats.field_evaluations;
-            return de_casteljau(b, n, x, nullptr, nullptr);
+            return power_value(p, n, x);
           },
           0.0, 1.0, b[0], b[std::size_t(n)], 1e-13 / (piece.hi - piece.lo), 1e-15, 60);
       return piece.lo + u * (piece.hi - piece.lo);
     }
     Piece left{{}, piece.lo, 0.5 * (piece.lo + piece.hi)}, right{{}, left.hi, piece.hi};
-    de_casteljau(b, n, 0.5, &left.b, &right.b);
+    split_in_half(b, n, left.b, right.b);
     stack[top++] = right;
     stack[top++] = left;
   }
@@ -93,14 +98,15 @@ bool exact_crossing_supported(KernelKind kernel, Blend blend, GlyphShape shape) 
   return shape_is_quadric(shape) && (blend == Blend::max || kernel_traits(kernel).exact);
 }
 
-double FieldRay::exact_crossing(const BlobField& field, double tmin, double tmax, TraceStats& stats) {
+double FieldRay::exact_crossing(const BlobField& field, double tmin, double tmax, bool ends_on_surface,
+                                TraceStats& stats) {
   // (blend = "max" never gets here: first_crossing() answers it from the
   // single sources alone.)
   const KernelTraits& kernel = kernel_traits(field.kernel);
   const int degree = 2 * kernel.degree_in_g;
   const double c = field.isovalue;
   const double g_level = level_g(field.kernel, c);
-  begin_segments(field, tmin, tmax);
+  begin_segments(field, tmin, tmax, ends_on_surface);
   double start, end;
   while (next_segment(field, tmax, start, end, stats)) {
     const std::vector<std::uint32_t>& active = sweep_.active();

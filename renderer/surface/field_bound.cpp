@@ -24,15 +24,16 @@ constexpr double kStaleFraction = 1e-3;
 }  // namespace
 
 void FieldUpperBound::reset(const KernelTraits& kernel, const std::vector<RaySpan>& spans,
-                            const std::vector<double>& peaks, double tmin) {
+                            const std::vector<double>& peaks, double tmin, bool ends_on_surface) {
   kernel_ = &kernel;
+  ends_on_surface_ = ends_on_surface;
   degree_ = 2 * kernel.degree_in_g;
   engaged_ = false;
   segments_ = 0;
   peaks_ = &peaks;
   ahead_scratch_.clear();
   ahead_sum_ = 0.0;
-  for (std::size_t i = 0; i < spans.size(); ++i) {
+  for (std::size_t i = 0; i < (ends_on_surface ? 0 : spans.size()); ++i) {
     const RaySpan& s = spans[i];
     const double t = peak_t(s);
     if (t > tmin) {
@@ -134,6 +135,7 @@ bool FieldUpperBound::proves_below(double level, double start, double end, const
 
 bool FieldUpperBound::proves_rest_below(double level, double start, const std::vector<RaySpan>& spans,
                                         const std::vector<std::uint32_t>& active) {
+  if (ends_on_surface_) return false;
   for (RayEvent passed; ahead_.peek(passed) && passed.t <= start; ahead_.pop()) {
     ahead_sum_ -= (*peaks_)[passed.index];
     ++ahead_updates_;

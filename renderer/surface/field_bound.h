@@ -38,9 +38,11 @@ namespace hsb {
 class FieldUpperBound {
  public:
   // Starts a walk from `tmin` over `spans`; peaks[i] is span i's largest
-  // value on its interval.
+  // value on its interval. A walk that ends where F ≥ C is known (a single
+  // source's entry) cannot be proven below C to its end, and keeps no
+  // peaks ahead for proves_rest_below().
   void reset(const KernelTraits& kernel, const std::vector<RaySpan>& spans, const std::vector<double>& peaks,
-             double tmin);
+             double tmin, bool ends_on_surface);
 
   // A source joins or leaves the active set.
   void add(const RaySpan& s) {
@@ -59,7 +61,8 @@ class FieldUpperBound {
   // kept and its rounding is below `tolerance`: then it stands for F itself,
   // and the exact intersector needs no sum from scratch. False otherwise.
   bool bernstein_form(double start, double end, double tolerance, RayPolynomial& bernstein, int& degree) const;
-  // True when F < level everywhere from `start` to the end of the walk.
+  // True when F < level everywhere from `start` to the end of the walk
+  // (never for a walk that ends on the surface).
   bool proves_rest_below(double level, double start, const std::vector<RaySpan>& spans,
                          const std::vector<std::uint32_t>& active);
 
@@ -92,6 +95,7 @@ class FieldUpperBound {
   double ahead_sum_ = 0.0;     // the peak values there
   double ahead_total_ = 0.0;   // the sum at the start, for its rounding
   std::uint32_t ahead_updates_ = 0;
+  bool ends_on_surface_ = false;
 };
 
 }  // namespace hsb

@@ -56,11 +56,15 @@ double FieldRay::crowd_peak(double tmin, double last_peak) const {
   constexpr double unit = 0x1p40;  // each term ≤ 2⁴⁰: 2²³ of them fit in 64 bits
   const double length = last_peak - tmin;
   if (!(length > 0.0)) return tmin;
+  // x in [0, 2⁴⁰] to the nearest integer (ties to even): adding 2⁵²
+  // leaves no fraction bits, and taking it away again is exact. Plain
+  // arithmetic, where llround is a library call a span.
+  const auto fixed = [](double x) { return std::uint64_t((x + 0x1p52) - 0x1p52); };
   std::uint64_t height = 0, moment = 0;
   for (std::size_t i = 0; i < spans.size(); ++i) {
     const double p = std::clamp(peaks_[i], 0.0, 1.0);
-    height += std::uint64_t(std::llround(p * unit));
-    moment += std::uint64_t(std::llround(p * ((peak_t(spans[i]) - tmin) / length) * unit));
+    height += fixed(p * unit);
+    moment += fixed(p * std::clamp((peak_t(spans[i]) - tmin) / length, 0.0, 1.0) * unit);
   }
   if (height == 0) return tmin;
   return tmin + std::min(1.0, double(moment) / double(height)) * length;
@@ -205,16 +209,18 @@ double FieldRay::group_crossing(const BlobField& field, const Vec3& origin, cons
 
   const double end = upper >= 0.0 ? upper : tmax;
   // The exact intersector needs g quadratic along the ray.
+  const bool ends_on_surface = upper >= 0.0;
   const double t = !quadric_ ? shape_trace(field, tmin, end, settings, stats, query)
-                   : settings.intersector == Intersector::exact ? exact_crossing(field, tmin, end, stats)
-                                                                : sphere_trace(field, tmin, end, settings, stats, query);
+                   : settings.intersector == Intersector::exact
+                       ? exact_crossing(field, tmin, end, ends_on_surface, stats)
+                       : sphere_trace(field, tmin, end, ends_on_surface, settings, stats, query);
   // Short of the bound only by round-off: the bound itself is on the surface.
   return t >= 0.0 ? t : upper;
 }
 
-void FieldRay::begin_segments(const BlobField& field, double tmin, double tmax) {
+void FieldRay::begin_segments(const BlobField& field, double tmin, double tmax, bool ends_on_surface) {
   sweep_.begin(spans, tmin, tmax);
-  bound_.reset(kernel_traits(field.kernel), spans, peaks_, tmin);
+  bound_.reset(kernel_traits(field.kernel), spans, peaks_, tmin, ends_on_surface);
 }
 
 bool FieldRay::next_segment(const BlobField& field, double tmax, double& start, double& end, TraceStats& stats) {
@@ -235,9 +241,9 @@ bool FieldRay::next_segment(const BlobField& field, double tmax, double& start, 
   return false;
 }
 
-double FieldRay::sphere_trace(const BlobField& field, double tmin, double tmax,
+double FieldRay::sphere_trace(const BlobField& field, double tmin, double tmax, bool ends_on_surface,
                               const TraceSettings& settings, TraceStats& stats, CrossingQuery query) {
-  begin_segments(field, tmin, tmax);
+  begin_segments(field, tmin, tmax, ends_on_surface);
   const double c = field.isovalue;
   int steps = 0;
   double start, end;

@@ -95,16 +95,17 @@ class FieldRay {
   std::vector<std::uint8_t> group_of_, groups_met_;
 
   // For an `any` query, the first step at or above C is the answer.
-  double sphere_trace(const BlobField& field, double tmin, double tmax, const TraceSettings& settings,
-                      TraceStats& stats, CrossingQuery query);
+  // `ends_on_surface`: F ≥ C at tmax is known (a single source's entry).
+  double sphere_trace(const BlobField& field, double tmin, double tmax, bool ends_on_surface,
+                      const TraceSettings& settings, TraceStats& stats, CrossingQuery query);
   // Exact for `wyvill` and `quartic` under blend = "sum", and for every
   // kernel under blend = "max" (a union of ellipsoids). Only crossings where
   // F − C changes sign count: a surface the ray merely touches is no hit.
-  double exact_crossing(const BlobField& field, double tmin, double tmax, TraceStats& stats);
+  double exact_crossing(const BlobField& field, double tmin, double tmax, bool ends_on_surface, TraceStats& stats);
 
   // The walk over segments shared by both methods (support_sweep.h), with
   // the running bound kept up to date.
-  void begin_segments(const BlobField& field, double tmin, double tmax);
+  void begin_segments(const BlobField& field, double tmin, double tmax, bool ends_on_surface);
   // The next segment [start, end] that may hold a crossing: at least one
   // active source, and F < C not proven. False when none is left.
   bool next_segment(const BlobField& field, double tmax, double& start, double& end, TraceStats& stats);

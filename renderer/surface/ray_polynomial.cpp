@@ -11,13 +11,18 @@ double binomial(int n, int k) {
   return r;
 }
 
-// C(j, k) / C(n, k) for every degree n ≤ 6, computed once.
+// For every degree n ≤ 6, computed once: w, C(j, k) / C(n, k), takes power
+// coefficients to Bernstein ones; v, (−1)^(k−i) C(n, k) C(k, i), back.
 struct BernsteinWeights {
   double w[kMaxRayDegree + 1][kMaxRayDegree + 1][kMaxRayDegree + 1];
+  double v[kMaxRayDegree + 1][kMaxRayDegree + 1][kMaxRayDegree + 1];
   BernsteinWeights() {
     for (int n = 0; n <= kMaxRayDegree; ++n)
       for (int j = 0; j <= n; ++j)
-        for (int k = 0; k <= j; ++k) w[n][j][k] = binomial(j, k) / binomial(n, k);
+        for (int k = 0; k <= j; ++k) {
+          w[n][j][k] = binomial(j, k) / binomial(n, k);
+          v[n][j][k] = ((j - k) % 2 ? -1.0 : 1.0) * binomial(n, j) * binomial(j, k);
+        }
   }
 };
 const BernsteinWeights bernstein_weights;
@@ -26,15 +31,19 @@ const BernsteinWeights bernstein_weights;
 
 namespace {
 
-// The coefficients of g, g² and g³ for g(s) = q0 + q1 s + q2 s².
+// The coefficients of g, g² and g³ for g(s) = q0 + q1 s + q2 s², those a
+// kernel of `degree` in g needs (the quartic stops at g²: the polynomial
+// sums of a ray's crowd are where its segments spend their time).
 struct QuadraticPowers {
   double g[3], g2[5], g3[7];
-  QuadraticPowers(double q0, double q1, double q2) : g{q0, q1, q2} {
+  QuadraticPowers(double q0, double q1, double q2, int degree) : g{q0, q1, q2} {
+    if (degree < 2) return;
     g2[0] = q0 * q0;
     g2[1] = 2.0 * q0 * q1;
     g2[2] = q1 * q1 + 2.0 * q0 * q2;
     g2[3] = 2.0 * q1 * q2;
     g2[4] = q2 * q2;
+    if (degree < 3) return;
     g3[0] = g2[0] * q0;
     g3[1] = g2[0] * q1 + g2[1] * q0;
     g3[2] = g2[0] * q2 + g2[1] * q1 + g2[2] * q0;
@@ -59,11 +68,12 @@ struct QuadraticPowers {
 
 void add_kernel_along_ray(const KernelTraits& kernel, double q0, double q1, double q2, double sign,
                           RayPolynomial& p, RayPolynomial* magnitude) {
-  QuadraticPowers(q0, q1, q2).add(kernel.polynomial, kernel.degree_in_g, sign, p);
+  QuadraticPowers(q0, q1, q2, kernel.degree_in_g).add(kernel.polynomial, kernel.degree_in_g, sign, p);
   if (!magnitude) return;
   const std::array<double, 4>& k = kernel.polynomial;
   const std::array<double, 4> k_abs{std::fabs(k[0]), std::fabs(k[1]), std::fabs(k[2]), std::fabs(k[3])};
-  QuadraticPowers(std::fabs(q0), std::fabs(q1), std::fabs(q2)).add(k_abs, kernel.degree_in_g, 1.0, *magnitude);
+  QuadraticPowers(std::fabs(q0), std::fabs(q1), std::fabs(q2), kernel.degree_in_g)
+      .add(k_abs, kernel.degree_in_g, 1.0, *magnitude);
 }
 
 RayPolynomial to_bernstein(const RayPolynomial& p, int n) {
@@ -72,6 +82,14 @@ RayPolynomial to_bernstein(const RayPolynomial& p, int n) {
   for (int j = 0; j <= n; ++j)
     for (int k = 0; k <= j; ++k) b[std::size_t(j)] += w[j][k] * p[std::size_t(k)];
   return b;
+}
+
+RayPolynomial from_bernstein(const RayPolynomial& b, int n) {
+  RayPolynomial p{};
+  const auto& v = bernstein_weights.v[n];
+  for (int k = 0; k <= n; ++k)
+    for (int i = 0; i <= k; ++i) p[std::size_t(k)] += v[k][i] * b[std::size_t(i)];
+  return p;
 }
 
 void taylor_shift(RayPolynomial& p, int n, double delta) {

@@ -27,6 +27,16 @@ void add_kernel_along_ray(const KernelTraits& kernel, double q0, double q1, doub
 // bound of its values, and their sign changes bound its roots.
 RayPolynomial to_bernstein(const RayPolynomial& p, int n);
 
+// Bernstein coefficients of degree n on u ∈ [0, 1] back to power ones.
+RayPolynomial from_bernstein(const RayPolynomial& b, int n);
+
+// p(u) by Horner's rule.
+inline double power_value(const RayPolynomial& p, int n, double u) {
+  double value = p[std::size_t(n)];
+  for (int i = n - 1; i >= 0; --i) value = value * u + p[std::size_t(i)];
+  return value;
+}
+
 // p(s) → p(s + delta), in place (repeated synthetic division).
 void taylor_shift(RayPolynomial& p, int n, double delta);
 

@@ -8,6 +8,7 @@
 
 #include "field/glyph_pipeline.h"
 #include "renderer/render/ray_scene.h"
+#include "renderer/surface/ray_polynomial.h"
 #include "tests/renderer/blob_pair.h"
 #include "tests/renderer/sampled_crossing.h"
 
@@ -262,6 +263,28 @@ TEST(ExactCrossing, CrowdOfOverlappingSourcesMatchesBruteForce) {
 
 TEST(SphereAgainstExact, CrowdOfOverlappingSources) {
   expect_sphere_matches_exact(crowd(150, 30.0, KernelKind::wyvill), 4000, 19);
+}
+
+
+// The root finder evaluates a piece in powers of u: the conversion back
+// from Bernstein form must give the polynomial that was converted, for
+// every degree the kernels make.
+TEST(RayPolynomial, BernsteinFormConvertsBack) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> coefficient(-2.0, 2.0);
+  for (int n = 1; n <= kMaxRayDegree; ++n) {
+    RayPolynomial p{};
+    for (int i = 0; i <= n; ++i) p[std::size_t(i)] = coefficient(rng);
+    const RayPolynomial back = from_bernstein(to_bernstein(p, n), n);
+    for (int i = 0; i <= n; ++i) EXPECT_NEAR(back[std::size_t(i)], p[std::size_t(i)], 1e-13) << "degree " << n;
+    for (int i = n + 1; i <= kMaxRayDegree; ++i) EXPECT_EQ(back[std::size_t(i)], 0.0);
+    // Horner's value against the sum of powers.
+    for (const double u : {0.0, 0.3, 1.0}) {
+      double sum = 0.0;
+      for (int i = 0; i <= n; ++i) sum += p[std::size_t(i)] * std::pow(u, i);
+      EXPECT_NEAR(power_value(p, n, u), sum, 1e-14);
+    }
+  }
 }
 
 }  // namespace

@@ -126,7 +126,7 @@ void expect_bounds_are_sound(KernelKind kind, unsigned seed) {
     SupportSweep sweep;
     FieldUpperBound bound;
     sweep.begin(spans, 0.0, 10.0);
-    bound.reset(kernel_traits(kind), spans, peaks, 0.0);
+    bound.reset(kernel_traits(kind), spans, peaks, 0.0, false);
     double start, end;
     while (sweep.next(
         10.0, start, end, [&](std::uint32_t i) { bound.add(spans[i]); },
@@ -179,7 +179,7 @@ TEST(FieldUpperBound, RoundingOfLongRunsIsCountedAgainstTheProof) {
   SupportSweep sweep;
   FieldUpperBound bound;
   sweep.begin(spans, 0.0, 10.0);
-  bound.reset(kernel_traits(KernelKind::wyvill), spans, peaks, 0.0);
+  bound.reset(kernel_traits(KernelKind::wyvill), spans, peaks, 0.0, false);
   double start, end;
   bool walked_past_peak = false;
   while (sweep.next(
