@@ -43,18 +43,26 @@ struct SpanQueryContext {
 // ray enters at or before t. So the query's ray is shortened to t (rounded
 // up to the next float, as the window's own end is) and Embree visits no
 // box beyond it: a ray through a pile of glyphs collects the sources in
-// front of its first hit, not all it passes behind.
-void prune_beyond_entry(const SpanQueryContext& query, const RaySpan& span, unsigned k, RTCRayN* rays, unsigned n,
-                        unsigned lane) {
-  // Most spans pass wide of their source's level surface, and so of the
-  // ball inside it: those are settled before the shape is looked up.
-  if (span.g_min >= query.g_level) return;
-  const double t = single_source_entry(span, inner_level_g(*query.field, span.source, query.g_level),
-                                       query.rays.tmin[k], query.rays.tmax[k]);
+// front of its first hit, not all it passes behind. `g_inner` is the
+// source's level of g_e (inner_level_g).
+void prune_beyond_entry(const SpanQueryContext& query, const RaySpan& span, double g_inner, unsigned k, RTCRayN* rays,
+                        unsigned n, unsigned lane) {
+  const double t = single_source_entry(span, g_inner, query.rays.tmin[k], query.rays.tmax[k]);
   if (t < 0.0) return;
   constexpr float inf = std::numeric_limits<float>::infinity();
   float& tfar = RTCRayN_tfar(rays, n, lane);
   tfar = query.stop_at_entry ? -inf : std::min(tfar, std::nextafter(float(t), inf));
+}
+
+// The lanes [first, first + count) of `spans` whose closest approach lies
+// inside g_e = g_inner, as bits from bit 0: only those can enter their
+// source's level surface. Most spans pass wide of it; this settles them
+// all at once from the lanes as the span kernel left them, where reading
+// each one back after it is stored stalled on the store.
+unsigned lanes_reaching(const SpanLanes& spans, int first, int count, double g_inner) {
+  unsigned bits = 0;
+  for (int i = 0; i < count; ++i) bits |= unsigned(spans.g_min[first + i] < g_inner) << i;
+  return bits;
 }
 
 void check_device(RTCDevice device, const char* what) {
@@ -188,15 +196,16 @@ void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
   RTCRayN* embree_rays = RTCRayHitN_RayN(args->rayhit, n);
   const BlobSource& source = query->field->sources[args->primID];
   const double box = source_box(*query->field, args->primID);
+  const double g_inner = inner_level_g(*query->field, args->primID, query->g_level);
+  const std::uint32_t rank = query->rank[args->primID];
   const RayLanes& r = query->rays;
   if (n == 1) {  // a lone ray (rtcIntersect1): no lanes to gather
     ++query->candidates;
     const unsigned k = checked_ray_index(embree_rays, 1, 0);
     RaySpan span;
-    if (ray_span(source, args->primID, query->rank[args->primID], r.origin(int(k)), r.direction(int(k)), r.tmin[k],
-                 r.tmax[k], span, box)) {
+    if (ray_span(source, args->primID, rank, r.origin(int(k)), r.direction(int(k)), r.tmin[k], r.tmax[k], span, box)) {
       query->tracers[k].spans.push_back(span);
-      prune_beyond_entry(*query, span, k, embree_rays, 1, 0);
+      if (span.g_min < g_inner) prune_beyond_entry(*query, span, g_inner, k, embree_rays, 1, 0);
     }
     return;
   }
@@ -220,26 +229,29 @@ void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
     const unsigned i = unsigned(__builtin_ctz(rest));
     in_place = index[i] == unsigned(first) + i;
   }
+  // Lane i of the packet is lane i + offset of the spans computed.
   SpanLanes spans;
+  unsigned entered;
+  int offset;
   if (in_place) {
-    const unsigned entered = (ray_spans(source, box, r, first, int(n), spans) >> first) & valid;
-    for (unsigned rest = entered; rest; rest &= rest - 1) {
-      const unsigned i = unsigned(__builtin_ctz(rest)), k = unsigned(first) + i;
-      query->tracers[k].spans.push_back(spans.span(int(k), args->primID, query->rank[args->primID]));
-      prune_beyond_entry(*query, query->tracers[k].spans.back(), k, embree_rays, n, i);
+    entered = (ray_spans(source, box, r, first, int(n), spans) >> first) & valid;
+    offset = first;
+  } else {
+    RayLanes gathered;
+    for (unsigned i = 0; i < n; ++i) {
+      const unsigned k = valid & (1u << i) ? index[i] : index[lowest];  // idle lanes repeat a real ray
+      gathered.set(int(i), r.origin(int(k)), r.direction(int(k)), r.tmin[k], r.tmax[k]);
     }
-    return;
+    entered = ray_spans(source, box, gathered, 0, int(n), spans) & valid;
+    offset = 0;
   }
-  RayLanes gathered;
-  for (unsigned i = 0; i < n; ++i) {
-    const unsigned k = valid & (1u << i) ? index[i] : index[lowest];  // idle lanes repeat a real ray
-    gathered.set(int(i), r.origin(int(k)), r.direction(int(k)), r.tmin[k], r.tmax[k]);
-  }
-  const unsigned entered = ray_spans(source, box, gathered, 0, int(n), spans) & valid;
   for (unsigned rest = entered; rest; rest &= rest - 1) {
     const unsigned i = unsigned(__builtin_ctz(rest));
-    query->tracers[index[i]].spans.push_back(spans.span(int(i), args->primID, query->rank[args->primID]));
-    prune_beyond_entry(*query, query->tracers[index[i]].spans.back(), index[i], embree_rays, n, i);
+    query->tracers[index[i]].spans.push_back(spans.span(int(i) + offset, args->primID, rank));
+  }
+  for (unsigned rest = entered & lanes_reaching(spans, offset, int(n), g_inner); rest; rest &= rest - 1) {
+    const unsigned i = unsigned(__builtin_ctz(rest));
+    prune_beyond_entry(*query, spans.span(int(i) + offset, args->primID, rank), g_inner, index[i], embree_rays, n, i);
   }
   // No hit is reported: traversal goes on and visits every crossed box it
   // has not pruned.
