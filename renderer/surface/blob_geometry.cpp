@@ -247,7 +247,7 @@ void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
   }
   for (unsigned rest = entered; rest; rest &= rest - 1) {
     const unsigned i = unsigned(__builtin_ctz(rest));
-    query->tracers[index[i]].spans.push_back(spans.span(int(i) + offset, args->primID, rank));
+    spans.append(int(i) + offset, args->primID, rank, query->tracers[index[i]].spans);
   }
   for (unsigned rest = entered & lanes_reaching(spans, offset, int(n), g_inner); rest; rest &= rest - 1) {
     const unsigned i = unsigned(__builtin_ctz(rest));

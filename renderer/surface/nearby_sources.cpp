@@ -41,7 +41,7 @@ void NearbySources::collect_spans(const Vec3& o, const Vec3& d, double tmin, dou
     const SourceLanes& chunk = chunks_[c];
     for (unsigned entered = source_spans(chunk, o, d, tmin, tmax, lanes); entered; entered &= entered - 1) {
       const int i = __builtin_ctz(entered);
-      spans.push_back(lanes.span(i, chunk.index[i], chunk.rank[i]));
+      lanes.append(i, chunk.index[i], chunk.rank[i], spans);
     }
   }
 }

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 #include "base/vec3.h"
 #include "renderer/surface/blob_field.h"
@@ -72,6 +73,15 @@ struct SpanLanes {
   // Lane i as the span of source number `source`, of spatial rank `rank`.
   RaySpan span(int i, std::uint32_t source, std::uint32_t rank) const {
     return RaySpan{t0[i], t1[i], a[i], t_c[i], g_min[i], source, rank};
+  }
+  // The same appended to `list`, written there field by field: a span
+  // made on the stack and copied in whole was read back in 16-byte pieces
+  // of what had been stored in 8-byte ones, a store-forwarding stall that
+  // took a third of the span query's callback.
+  void append(int i, std::uint32_t source, std::uint32_t rank, std::vector<RaySpan>& list) const {
+    RaySpan& s = list.emplace_back();
+    s.t0 = t0[i], s.t1 = t1[i], s.a = a[i], s.t_c = t_c[i], s.g_min = g_min[i];
+    s.source = source, s.rank = rank;
   }
 };
 // `box`: the source's, or kNoBox.
