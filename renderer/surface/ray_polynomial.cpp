@@ -31,49 +31,42 @@ const BernsteinWeights bernstein_weights;
 
 namespace {
 
-// The coefficients of g, g² and g³ for g(s) = q0 + q1 s + q2 s², those a
-// kernel of `degree` in g needs (the quartic stops at g²: the polynomial
-// sums of a ray's crowd are where its segments spend their time).
-struct QuadraticPowers {
-  double g[3], g2[5], g3[7];
-  QuadraticPowers(double q0, double q1, double q2, int degree) : g{q0, q1, q2} {
-    if (degree < 2) return;
-    g2[0] = q0 * q0;
-    g2[1] = 2.0 * q0 * q1;
-    g2[2] = q1 * q1 + 2.0 * q0 * q2;
-    g2[3] = 2.0 * q1 * q2;
-    g2[4] = q2 * q2;
-    if (degree < 3) return;
-    g3[0] = g2[0] * q0;
-    g3[1] = g2[0] * q1 + g2[1] * q0;
-    g3[2] = g2[0] * q2 + g2[1] * q1 + g2[2] * q0;
-    g3[3] = g2[1] * q2 + g2[2] * q1 + g2[3] * q0;
-    g3[4] = g2[2] * q2 + g2[3] * q1 + g2[4] * q0;
-    g3[5] = g2[3] * q2 + g2[4] * q1;
-    g3[6] = g2[4] * q2;
+// Σ_j k_j g^j for g(s) = q0 + q1 s + q2 s², the powers a kernel of
+// `degree` in g needs, times `sign`, added to `p`. Every coefficient is a
+// scalar of its own and `p` is updated in one pass over all seven, the
+// same loads and stores every call: kept in small arrays, the powers and
+// the sum went through the stack and were read back in 16-byte pieces of
+// 8-byte stores (store-forwarding stalls, most of this function's time
+// over a ray's crowd of sources).
+void add_powers(const std::array<double, 4>& k, int degree, double q0, double q1, double q2, double sign,
+                RayPolynomial& p) {
+  double t0 = k[0] + k[1] * q0, t1 = k[1] * q1, t2 = k[1] * q2, t3 = 0.0, t4 = 0.0, t5 = 0.0, t6 = 0.0;
+  if (degree >= 2) {
+    const double a0 = q0 * q0, a1 = 2.0 * q0 * q1, a2 = q1 * q1 + 2.0 * q0 * q2, a3 = 2.0 * q1 * q2, a4 = q2 * q2;
+    t0 += k[2] * a0, t1 += k[2] * a1, t2 += k[2] * a2, t3 += k[2] * a3, t4 += k[2] * a4;
+    if (degree >= 3) {
+      t0 += k[3] * (a0 * q0);
+      t1 += k[3] * (a0 * q1 + a1 * q0);
+      t2 += k[3] * (a0 * q2 + a1 * q1 + a2 * q0);
+      t3 += k[3] * (a1 * q2 + a2 * q1 + a3 * q0);
+      t4 += k[3] * (a2 * q2 + a3 * q1 + a4 * q0);
+      t5 += k[3] * (a3 * q2 + a4 * q1);
+      t6 += k[3] * (a4 * q2);
+    }
   }
-  // Adds Σ_j k_j g^j, scaled by `sign`, to `p`.
-  void add(const std::array<double, 4>& k, int degree, double sign, RayPolynomial& p) const {
-    p[0] += sign * k[0];
-    const double k1 = sign * k[1], k2 = sign * k[2], k3 = sign * k[3];
-    for (int i = 0; i < 3; ++i) p[std::size_t(i)] += k1 * g[i];
-    if (degree < 2) return;
-    for (int i = 0; i < 5; ++i) p[std::size_t(i)] += k2 * g2[i];
-    if (degree < 3) return;
-    for (int i = 0; i < 7; ++i) p[std::size_t(i)] += k3 * g3[i];
-  }
-};
+  p[0] += sign * t0, p[1] += sign * t1, p[2] += sign * t2, p[3] += sign * t3;
+  p[4] += sign * t4, p[5] += sign * t5, p[6] += sign * t6;
+}
 
 }  // namespace
 
 void add_kernel_along_ray(const KernelTraits& kernel, double q0, double q1, double q2, double sign,
                           RayPolynomial& p, RayPolynomial* magnitude) {
-  QuadraticPowers(q0, q1, q2, kernel.degree_in_g).add(kernel.polynomial, kernel.degree_in_g, sign, p);
+  add_powers(kernel.polynomial, kernel.degree_in_g, q0, q1, q2, sign, p);
   if (!magnitude) return;
   const std::array<double, 4>& k = kernel.polynomial;
   const std::array<double, 4> k_abs{std::fabs(k[0]), std::fabs(k[1]), std::fabs(k[2]), std::fabs(k[3])};
-  QuadraticPowers(std::fabs(q0), std::fabs(q1), std::fabs(q2), kernel.degree_in_g)
-      .add(k_abs, kernel.degree_in_g, 1.0, *magnitude);
+  add_powers(k_abs, kernel.degree_in_g, std::fabs(q0), std::fabs(q1), std::fabs(q2), 1.0, *magnitude);
 }
 
 RayPolynomial to_bernstein(const RayPolynomial& p, int n) {
