@@ -47,16 +47,6 @@ BlobField make_blob_field(const std::vector<GlyphSource>& glyphs,
   return field;
 }
 
-Mat3 shape_matrix(const BlobSource& s) {
-  Mat3 w;
-  for (int i = 0; i < 9; ++i) w(i / 3, i % 3) = s.w[std::size_t(i)];
-  return w;
-}
-
-Vec3 scaled_offset(const BlobSource& s, const Mat3& w, const Vec3& x) {
-  return w * (x - Vec3(s.centre[0], s.centre[1], s.centre[2]));
-}
-
 Box3 influence_bounds(const BlobField& field, std::size_t i) {
   // The ellipsoid's semi-axis k is row k of W_s divided by its squared
   // length (W_s's rows are orthogonal), so its half-extent along world

@@ -78,9 +78,18 @@ BlobSource make_blob_source(const Vec3& centre, const Mat3& axes, const Vec3& ra
                             double influence_radius, const std::array<float, 3>& color, double scalar = 0.0);
 
 // W as a matrix, and W (x − c): the point in the source's scaled frame,
-// where g(x) is its squared length.
-Mat3 shape_matrix(const BlobSource& s);
-Vec3 scaled_offset(const BlobSource& s, const Mat3& w, const Vec3& x);
+// where g(x) is its squared length. Inline: returned from a call, the
+// matrix went through the stack and was read back in pieces other than
+// those it was stored in (a store-forwarding stall that held up the
+// shading of every hit).
+inline Mat3 shape_matrix(const BlobSource& s) {
+  Mat3 w;
+  for (int i = 0; i < 9; ++i) w(i / 3, i % 3) = s.w[std::size_t(i)];
+  return w;
+}
+inline Vec3 scaled_offset(const BlobSource& s, const Mat3& w, const Vec3& x) {
+  return w * (x - Vec3(s.centre[0], s.centre[1], s.centre[2]));
+}
 
 // An axis-aligned box holding source i's influence: the box of its
 // bounding ellipsoid g_e ≤ 1, narrowed to the box of the cube that holds
