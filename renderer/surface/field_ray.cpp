@@ -193,9 +193,12 @@ double FieldRay::group_crossing(const BlobField& field, const Vec3& origin, cons
   // if it is C or more, bounds the first crossing too.
   // (Not for another shape: its g costs tens of times the quadratic's, the
   // check paid off on about one ray in eight, and its proofs find such
-  // crowds anyway.)
-  const double t_crowd = crowd_peak(tmin, last_peak);
-  if (quadric_ && (upper < 0.0 || t_crowd < upper)) {
+  // crowds anyway. Nor where a single source's entry already bounds the
+  // crossing: on fig09 the crowd's peak then came before it too seldom
+  // to pay for the sums, 26.8 -> 25.6 kernel evaluations a camera ray
+  // without it, the same segments walked.)
+  if (quadric_ && upper < 0.0) {
+    const double t_crowd = crowd_peak(tmin, last_peak);
     double f = 0.0;
     for (std::uint32_t i = 0; i < spans.size(); ++i)
       if (spans[i].t0 <= t_crowd && t_crowd <= spans[i].t1)
