@@ -14,7 +14,6 @@
 #include <cmath>
 
 #include "renderer/surface/field_ray.h"
-#include "renderer/surface/illinois.h"
 #include "renderer/surface/ray_polynomial.h"
 #include "renderer/surface/single_source.h"
 
@@ -44,6 +43,39 @@ int sign_changes(const RayPolynomial& b, int n) {
   return changes;
 }
 
+// The root of p in [0, 1] given p(0) = f_lo < 0 ≤ p(1) = f_hi: Newton's
+// method from the secant's point, each step kept inside the bracket (one
+// that leaves it bisects instead), until the bracket is within
+// `tolerance` or p at its upper end within `f_tolerance` of 0. Newton
+// nears a root from one side; once its step is below the tolerance, a
+// point just past the root closes the bracket from the other. Returns the
+// bracket's upper end, where p ≥ 0. Four or five values of p and p' where
+// Illinois took seven or eight values, each after a division that the
+// next depends on.
+double bracketed_newton(const RayPolynomial& p, int n, double f_lo, double f_hi, double tolerance,
+                        double f_tolerance, TraceStats& stats) {
+  double lo = 0.0, hi = 1.0;
+  double x = f_lo / (f_lo - f_hi);
+  for (int i = 0; i < 60 && hi - lo > tolerance && f_hi > f_tolerance; ++i) {
+    double value = p[std::size_t(n)], slope = 0.0;
+    for (int k = n - 1; k >= 0; --k) {
+      slope = slope * x + value;
+      value = value * x + p[std::size_t(k)];
+    }
+    ++stats.field_evaluations;
+    if (value >= 0.0)
+      hi = x, f_hi = value;
+    else
+      lo = x;
+    const double step = -value / slope;
+    double next = x + step;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    else if (std::fabs(step) < 0.5 * tolerance) next = std::clamp(next + std::copysign(0.25 * tolerance, step), lo, hi);
+    x = next;
+  }
+  return hi;
+}
+
 // The first u ∈ [0, 1] where the polynomial goes from < 0 to ≥ 0, or −1.
 double first_entry(const RayPolynomial& bernstein, int n, TraceStats& stats) {
   struct Piece {
@@ -62,21 +94,16 @@ double first_entry(const RayPolynomial& bernstein, int n, TraceStats& stats) {
     const bool ends_inside = b[std::size_t(n)] >= 0.0;
     if ((changes == 1 && ends_inside) || piece.hi - piece.lo < 1e-14 || top + 2 > int(stack.size())) {
       if (!ends_inside) continue;  // an even number of crossings too close to tell apart: a touch
-      // Exactly one root in (lo, hi): Illinois on the piece's own
-      // polynomial, to 1e-13 of the segment (far below the 1e-5 of the
-      // scene asked for) or until F − C is at round-off level. In powers
-      // of u a value is n steps of Horner's rule, where de Casteljau's
-      // takes n(n + 1)/2 (most segments hold their root in the first piece,
-      // and this is where they spend their time); on a piece whose
-      // Bernstein coefficients are of order one the power coefficients are
-      // at most 2ⁿ larger, a rounding far below the tolerance.
-      const RayPolynomial p = from_bernstein(b, n);
-      const double u = illinois(
-          [&](double x) {
-            ++stats.field_evaluations;
-            return power_value(p, n, x);
-          },
-          0.0, 1.0, b[0], b[std::size_t(n)], 1e-13 / (piece.hi - piece.lo), 1e-15, 60);
+      // Exactly one root in (lo, hi), to 1e-13 of the segment (far below
+      // the 1e-5 of the scene asked for) or until F − C is at round-off
+      // level. In powers of u a value is n steps of Horner's rule, where
+      // de Casteljau's takes n(n + 1)/2 (most segments hold their root in
+      // the first piece, and this is where they spend their time); on a
+      // piece whose Bernstein coefficients are of order one the power
+      // coefficients are at most 2ⁿ larger, a rounding far below the
+      // tolerance.
+      const double u = bracketed_newton(from_bernstein(b, n), n, b[0], b[std::size_t(n)],
+                                        1e-13 / (piece.hi - piece.lo), 1e-15, stats);
       return piece.lo + u * (piece.hi - piece.lo);
     }
     Piece left{{}, piece.lo, 0.5 * (piece.lo + piece.hi)}, right{{}, left.hi, piece.hi};
