@@ -329,7 +329,7 @@ std::vector<std::size_t> sites_to_draw(const DataSites& sites, const RegionSpec&
   tbb::parallel_for(std::size_t{0}, inside.size(), [&](std::size_t i) {
     const Sym3& t = sites.tensors[i];
     if (!t.is_finite() || region.surely_below(t)) return;
-    inside[i] = region.holds(sites.positions[i], decompose(t).values);
+    inside[i] = region.holds(sites.positions[i], eigenvalues(t));
   });
   for (std::size_t i = 0; i < inside.size(); ++i)
     if (inside[i]) which.push_back(i);
@@ -409,7 +409,7 @@ constexpr double kDiffusionRegion = 0.3;
 std::vector<Vec3> eigenvalues_at(const std::vector<Vec3>& points, const TensorField& tensors) {
   std::vector<Vec3> values(points.size(), Vec3::Constant(std::numeric_limits<double>::quiet_NaN()));
   tbb::parallel_for(std::size_t{0}, values.size(), [&](std::size_t i) {
-    if (const std::optional<Sym3> t = tensors.sample(points[i])) values[i] = decompose(*t).values;
+    if (const std::optional<Sym3> t = tensors.sample(points[i])) values[i] = eigenvalues(*t);
   });
   return values;
 }
@@ -507,7 +507,7 @@ EvenTrajectories trace_evenly(GlyphScene& scene, const BodyLattice& body, const 
       trajectory.min_family_value = kFamilyFloor * *options.reference_magnitude;
       own = [&, family](const Vec3& x) -> std::optional<double> {
         const std::optional<Sym3> t = tensors->sample(x);
-        return t ? std::optional<double>(std::fabs(decompose(*t).values(int(family)))) : std::nullopt;
+        return t ? std::optional<double>(std::fabs(eigenvalues(*t)(int(family)))) : std::nullopt;
       };
       for (std::size_t i = 0; i < pool.points.size(); ++i) {
         const double m = std::fabs(body_eigenvalues[i](int(family)));
@@ -598,7 +598,7 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
     }
     const std::optional<Sym3> t = tensors->sample(x);
     if (!t || region.surely_below(*t)) return std::nullopt;
-    const Vec3 l = decompose(*t).values;
+    const Vec3 l = eigenvalues(*t);
     return region.holds(x, l) ? std::optional<double>(l.cwiseAbs().maxCoeff()) : std::nullopt;
   };
   BodyLattice body;

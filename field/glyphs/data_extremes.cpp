@@ -40,7 +40,7 @@ std::optional<std::array<double, 2>> data_color_extremes(const TensorField& fiel
         for (std::size_t i = block.begin(); i < block.end(); ++i) {
           const Sym3& t = (*values)[i];
           if (!t.holds_data()) continue;
-          const Vec3 l = decompose(t).values;
+          const Vec3 l = eigenvalues(t);
           range[0] = std::min(range[0], color_scalar(l, low));
           range[1] = std::max(range[1], color_scalar(l, high));
         }

@@ -34,4 +34,13 @@ Eigensystem decompose(const Sym3& s) {
   return result;
 }
 
+Vec3 eigenvalues(const Sym3& s) {
+  const Mat3 m = s.matrix();
+  if (m.isZero(0.0)) return Vec3::Zero();
+  const Eigen::SelfAdjointEigenSolver<Mat3> solver(m, Eigen::EigenvaluesOnly);
+  if (solver.info() != Eigen::Success) return Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+  const Vec3 ascending = solver.eigenvalues();
+  return {ascending(2), ascending(1), ascending(0)};
+}
+
 }  // namespace hsb

@@ -17,4 +17,10 @@ struct Eigensystem {
 
 Eigensystem decompose(const Sym3& s);
 
+// decompose(s).values alone, the same bits, without the vectors: the same
+// iterations on the same tridiagonal matrix, without accumulating the
+// rotations (about half the work, where only eigenvalues are asked for:
+// every node of a data set, for the colour bar's data extremes).
+Vec3 eigenvalues(const Sym3& s);
+
 }  // namespace hsb

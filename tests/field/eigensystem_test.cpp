@@ -104,6 +104,24 @@ TEST(Eigensystem, EigenvaluesMatchWithinScaleAtRepeatedValues) {
   EXPECT_LE((es.values - Vec3::Constant(2)).cwiseAbs().maxCoeff(), 1e-15);
 }
 
+// The eigenvalues alone are decompose()'s to the bit: random tensors of
+// every scale, repeated eigenvalues, zero.
+TEST(Eigensystem, EigenvaluesAloneAreTheDecompositionsBits) {
+  std::mt19937 rng(99);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), e(-12.0, 12.0);
+  std::vector<Sym3> tensors{Sym3{}, with_eigenvalues({2.0, 2.0, -1.0}, random_rotation(rng)),
+                            with_eigenvalues({3.0, 3.0, 3.0}, random_rotation(rng))};
+  for (int i = 0; i < 2000; ++i) {
+    const double scale = std::pow(10.0, e(rng));
+    tensors.push_back(Sym3{scale * u(rng), scale * u(rng), scale * u(rng), scale * u(rng), scale * u(rng),
+                           scale * u(rng)});
+  }
+  for (const Sym3& s : tensors) {
+    const Vec3 alone = eigenvalues(s), decomposed = decompose(s).values;
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(alone(k), decomposed(k));
+  }
+}
+
 TEST(Sym3, SymmetricPartOfGeneralTensor) {
   std::mt19937 rng(2024);
   std::uniform_real_distribution<double> u(-5.0, 5.0);
