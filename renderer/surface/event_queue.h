@@ -63,7 +63,7 @@ class RayEventQueue {
   std::vector<std::uint32_t> bin_start_;  // bin b holds events_[bin_start_[b], bin_start_[b + 1])
   std::vector<std::uint32_t> bin_fill_;   // where each bin is being filled (assign() only)
   std::size_t next_ = 0, sorted_until_ = 0, next_bin_ = 0;
-  static constexpr std::size_t kSortedAtOnce = 24;  // up to this many, one sorted bin
+  static constexpr std::size_t kSortedAtOnce = 40;  // up to this many, one sorted bin
 };
 
 }  // namespace hsb
