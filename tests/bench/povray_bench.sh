@@ -58,10 +58,17 @@ while (($# >= 2)); do
   # mask_agreement reads where its pixel filter blurs the colour test.
   sets+=(--set 'render.background="transparent"' --set output.file=hsb.png)
   line=$(./build/hsb render "$scene" -o "$out" "${sets[@]}")
-  read -r hsb_s hsb_mb <<< "$(measure build/bench/povray/time.txt ./build/hsb render "$scene" -o "$out" "${sets[@]}")"
-  read -r povray_s povray_mb <<< "$(measure build/bench/povray/time.txt povray +WT2 "$out/$name.ini")"
+  read -r hsb_s hsb_mb <<< "$(measure build/bench/povray/hsb_time.txt ./build/hsb render "$scene" -o "$out" "${sets[@]}")"
+  read -r povray_s povray_mb <<< "$(measure build/bench/povray/povray_time.txt povray +WT2 "$out/$name.ini")"
 
   sources=$(sed -n 's/.*sources=\([0-9]*\).*/\1/p' <<< "$line")
+  if [[ $hsb_s == failed || $povray_s == failed ]]; then
+    who=POV-Ray err=build/bench/povray/povray_time.txt.err
+    [[ $hsb_s == failed ]] && who=hsb err=build/bench/povray/hsb_time.txt.err
+    printf '%-42s %8d  %s failed: %s\n' "$name$label" "${sources:-0}" "$who" \
+      "$(grep -m1 -iE 'error|limit|fail' "$err" || tail -1 "$err")"
+    continue
+  fi
   agreement=$(./build/tests/bench/mask_agreement "$out/hsb.png" "$out/$name.povray.png" | awk '{print $2}')
   awk -v n="$name$label" -v s="$sources" -v h="$hsb_s" -v p="$povray_s" -v g="$agreement" -v hm="$hsb_mb" -v pm="$povray_mb" \
     'BEGIN { printf "%-42s %8d %9.2f %9.2f %6.1fx %7d %7d %10s\n", n, s, h, p, p / h, hm, pm, g }'
