@@ -6,7 +6,8 @@
 # Runs, on this machine, each comparison of issue 22 (installing the peers
 # that are missing; ParaView only into a private root, paraview_bench.sh):
 #   - POV-Ray 3.7's exact `blob` (povray_bench.sh): fig09 at 800² with
-#     10³, 10⁴ and 10⁵ sources (below), under this processor's best
+#     10³, 10⁴ and 10⁵ sources (below), and Teem's helix at 136³ as
+#     123,888 blended ellipsoids, under this processor's best
 #     instruction set and, where that is AVX-512, again with AVX2 forced
 #     (HSB_ISA);
 #   - Teem's `tend glyph -rt` on its own helix at 2000², ellipsoids and
@@ -42,6 +43,29 @@ for n in ${SWEEP:-2 7 21}; do
   sed "s/^n = 7$/n = $n/; s/^m = 7$/m = $n/" scenes/fig09_point_load_hyperstreamsurface.toml > "$scene"
   scenes+=("$scene" "")
 done
+# 10⁵ sources POV-Ray can take: Teem's helix at 136³ as a blended field of
+# ellipsoid glyphs (123,888 with FA ≥ 0.3, a few supports a ray).
+helix=$log/helix136.nrrd
+if ! command -v teem-tend > /dev/null; then
+  sudo=(); [[ $(id -u) -eq 0 ]] || sudo=(sudo)
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -q --no-install-recommends teem-apps > /dev/null
+fi
+[[ -f $helix ]] || teem-tend helix -s 136 136 136 -o "$helix" 2> /dev/null
+cat > "$log/helix136_glyphs.toml" << 'SCENE'
+# Teem's helix at 136³, one ellipsoid glyph a voxel with FA ≥ 0.3, blended.
+[data]
+file = "helix136.nrrd"
+[glyphs]
+placement = "points"
+stride = 1
+shape = "ellipsoid"
+mapping = "linear"
+scale = 150
+floor = 0.01
+[region]
+above = 0.3
+SCENE
+scenes+=("$log/helix136_glyphs.toml" "")
 for isa in "${isas[@]}"; do
   echo "POV-Ray, hsb with $isa ..." >&2
   HSB_ISA=$isa tests/bench/povray_bench.sh 800 "${scenes[@]}" > "$log/povray_$isa.txt"
@@ -57,11 +81,11 @@ printf '%-50s %8s %8s %7s %7s %7s %9s %7s\n' work hsb_s peer_s ratio hsb_MB peer
 for isa in "${isas[@]}"; do
   # povray_bench: name [(override)] sources hsb_s povray_s ratio hsb_MB pov_MB agreement
   awk -v isa="$isa" '$NF ~ /^[0-9.]+$/ && NF >= 8 && $1 != "scene" {
-      printf "%-50s %8.2f %8.2f %6.1fx %7d %7d %9s %7s\n", "POV-Ray blob, " $(NF-6) " sources", $(NF-5), $(NF-4),
+      printf "%-50s %8.2f %8.2f %6.1fx %7d %7d %9s %7s\n", "POV-Ray blob, " $1 ", " $(NF-6), $(NF-5), $(NF-4),
              $(NF-4) / $(NF-5), $(NF-2), $(NF-1), $NF, isa }
     # a run that failed: name sources "WHO failed: why"
-    / failed: / { sub(/^[^ ]+ +/, ""); sources = $1; sub(/^[0-9]+ +/, "");
-                  printf "%-50s %s (%s)\n", "POV-Ray blob, " sources " sources", $0, isa }' "$log/povray_$isa.txt"
+    / failed: / { name = $1; sub(/^[^ ]+ +/, ""); sources = $1; sub(/^[0-9]+ +/, "");
+                  printf "%-50s %s (%s)\n", "POV-Ray blob, " name ", " sources, $0, isa }' "$log/povray_$isa.txt"
 done
 # teem_bench: shape size glyphs hsb_s teem_s hsb_MB teem_MB ratio agreement
 awk -v isa="$best" '$1 == "ellipsoid" || $1 == "superquadric" {
