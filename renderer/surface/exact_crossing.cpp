@@ -57,11 +57,8 @@ double bracketed_newton(const RayPolynomial& p, int n, double f_lo, double f_hi,
   double lo = 0.0, hi = 1.0;
   double x = f_lo / (f_lo - f_hi);
   for (int i = 0; i < 60 && hi - lo > tolerance && f_hi > f_tolerance; ++i) {
-    double value = p[std::size_t(n)], slope = 0.0;
-    for (int k = n - 1; k >= 0; --k) {
-      slope = slope * x + value;
-      value = value * x + p[std::size_t(k)];
-    }
+    double slope;
+    const double value = power_value(p, n, x, slope);
     ++stats.field_evaluations;
     if (value >= 0.0)
       hi = x, f_hi = value;

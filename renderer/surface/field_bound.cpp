@@ -33,12 +33,14 @@ void FieldUpperBound::reset(const KernelTraits& kernel, const std::vector<RaySpa
   peaks_ = &peaks;
   ahead_scratch_.clear();
   ahead_sum_ = 0.0;
-  for (std::size_t i = 0; i < (ends_on_surface ? 0 : spans.size()); ++i) {
-    const RaySpan& s = spans[i];
-    const double t = peak_t(s);
-    if (t > tmin) {
-      ahead_scratch_.push_back({t, std::uint32_t(i)});
-      ahead_sum_ += peaks[i];
+  if (!ends_on_surface) {
+    for (std::size_t i = 0; i < spans.size(); ++i) {
+      const RaySpan& s = spans[i];
+      const double t = peak_t(s);
+      if (t > tmin) {
+        ahead_scratch_.push_back({t, std::uint32_t(i)});
+        ahead_sum_ += peaks[i];
+      }
     }
   }
   ahead_total_ = ahead_sum_;

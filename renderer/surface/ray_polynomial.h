@@ -30,10 +30,14 @@ RayPolynomial to_bernstein(const RayPolynomial& p, int n);
 // Bernstein coefficients of degree n on u ∈ [0, 1] back to power ones.
 RayPolynomial from_bernstein(const RayPolynomial& b, int n);
 
-// p(u) by Horner's rule.
-inline double power_value(const RayPolynomial& p, int n, double u) {
+// p(u) and p'(u) by Horner's rule, side by side.
+inline double power_value(const RayPolynomial& p, int n, double u, double& slope) {
   double value = p[std::size_t(n)];
-  for (int i = n - 1; i >= 0; --i) value = value * u + p[std::size_t(i)];
+  slope = 0.0;
+  for (int i = n - 1; i >= 0; --i) {
+    slope = slope * u + value;
+    value = value * u + p[std::size_t(i)];
+  }
   return value;
 }
 

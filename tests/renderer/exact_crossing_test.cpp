@@ -278,11 +278,14 @@ TEST(RayPolynomial, BernsteinFormConvertsBack) {
     const RayPolynomial back = from_bernstein(to_bernstein(p, n), n);
     for (int i = 0; i <= n; ++i) EXPECT_NEAR(back[std::size_t(i)], p[std::size_t(i)], 1e-13) << "degree " << n;
     for (int i = n + 1; i <= kMaxRayDegree; ++i) EXPECT_EQ(back[std::size_t(i)], 0.0);
-    // Horner's value against the sum of powers.
+    // Horner's value and slope against the sums of powers.
     for (const double u : {0.0, 0.3, 1.0}) {
-      double sum = 0.0;
+      double sum = 0.0, derivative = 0.0;
       for (int i = 0; i <= n; ++i) sum += p[std::size_t(i)] * std::pow(u, i);
-      EXPECT_NEAR(power_value(p, n, u), sum, 1e-14);
+      for (int i = 1; i <= n; ++i) derivative += double(i) * p[std::size_t(i)] * std::pow(u, i - 1);
+      double slope;
+      EXPECT_NEAR(power_value(p, n, u, slope), sum, 1e-14);
+      EXPECT_NEAR(slope, derivative, 1e-13);
     }
   }
 }
