@@ -22,6 +22,7 @@
 #include <thread>
 
 #include "base/process_memory.h"
+#include "renderer/image/spare_threads.h"
 
 namespace hsb {
 namespace {
@@ -153,6 +154,7 @@ double file_resident_at_start = 0.0;  // when the load began
 void start_loading() {
   std::call_once(started, [] {
     start_thread_pool();
+    make_spare_thread();  // for the picture's writer, which starts while the module loads
     file_resident_at_start = file_resident_bytes();
     loading = std::async(std::launch::async, load).share();
     // fork() copies only its own thread: one taken while the loader holds

@@ -8,6 +8,7 @@
 #include "base/file_extension.h"
 #include "renderer/image/dither.h"
 #include "renderer/image/image_io_module.h"
+#include "renderer/image/spare_threads.h"
 
 namespace hsb {
 namespace {
@@ -48,7 +49,7 @@ RasterStream::RasterStream(const std::string& path, const Format& format, Metada
     : path_(checked_path(path, format)),
       format_(format),
       file_(path),
-      writer_([this, metadata = std::move(metadata)] { encode_bands(metadata); }) {}
+      writer_(run_on_spare_thread([this, metadata = std::move(metadata)] { encode_bands(metadata); })) {}
 
 RasterStream::~RasterStream() {
   {
@@ -56,7 +57,7 @@ RasterStream::~RasterStream() {
     abandoned_ = true;
   }
   changed_.notify_all();
-  if (writer_.joinable()) writer_.join();
+  writer_.wait();
 }
 
 void RasterStream::rethrow_failure() {
@@ -98,7 +99,7 @@ void RasterStream::finish() {
     (whole ? closing_ : abandoned_) = true;
   }
   changed_.notify_all();
-  writer_.join();
+  writer_.wait();
   rethrow_failure();
   if (!whole)
     throw std::logic_error(path_ + ": " + std::to_string(next_row_) + " of " + std::to_string(format_.height) +

@@ -22,7 +22,7 @@
 #include <map>
 #include <mutex>
 #include <string>
-#include <thread>
+#include <future>
 #include <vector>
 
 #include "base/partial_file.h"
@@ -77,7 +77,7 @@ class RasterStream {
   std::vector<Band> spare_;  // written, their buffers kept for the bands to come
   bool closing_ = false, abandoned_ = false;
   std::exception_ptr failure_;
-  std::thread writer_;  // last: it starts once the rest is made
+  std::future<void> writer_;  // last: it starts once the rest is made
 };
 
 }  // namespace hsb
