@@ -110,15 +110,18 @@ struct RegionSpec {
   bool holds(const Vec3& x, const Vec3& eigenvalues) const {
     return in_mask(x) && (!above || color_scalar(eigenvalues, measure) >= *above);
   }
-  // Whether the tensor's components alone show it below the threshold,
-  // before any decomposition: most of a diffusion volume lies well below
-  // its FA threshold. Near it (within 1e-9, far beyond the round-off
-  // between the components' FA and the eigenvalues') holds() decides, so
-  // the region is the same either way. Other measures: never.
-  bool surely_below(const Sym3& tensor) const {
-    constexpr double kFaMargin = 1e-9;
-    return above && measure == ColorScalar::fa && fractional_anisotropy(tensor) < *above - kFaMargin;
-  }
+  // Whether the tensor's components alone show it below (above) the
+  // threshold, before any decomposition: most of a diffusion volume lies
+  // well below its FA threshold, and a tract's voxels well above it. Near
+  // it (within 1e-9, far beyond the round-off between the components' FA
+  // and the eigenvalues') holds() decides, so the region is the same
+  // either way. Other measures: never.
+  bool surely_below(const Sym3& tensor) const { return fa_threshold() && fractional_anisotropy(tensor) < *above - kFaMargin; }
+  bool surely_above(const Sym3& tensor) const { return fa_threshold() && fractional_anisotropy(tensor) > *above + kFaMargin; }
+
+ private:
+  static constexpr double kFaMargin = 1e-9;
+  bool fa_threshold() const { return above && measure == ColorScalar::fa; }
 };
 
 // The scene's [trajectories]; what it leaves out is automatic.

@@ -259,3 +259,42 @@ TEST(Region, AMaskThatIsNoneIsSaidSo) {
 
 }  // namespace
 }  // namespace hsb
+
+namespace hsb {
+namespace {
+
+// The threshold decided from the tensor's components (surely_below,
+// surely_above) never disagrees with the eigenvalues' FA, and leaves
+// holds() only a thin band about the threshold: tensors made with FA
+// just under, at and just over it, and far from it on either side.
+TEST(Region, ComponentsDecideTheThresholdAsTheEigenvaluesDo) {
+  RegionSpec region;
+  region.above = 0.3;
+  int undecided = 0, tensors = 0;
+  for (double offset : {-0.2, -1e-6, -1e-12, 0.0, 1e-12, 1e-6, 0.2})
+    for (int turn = 0; turn < 20; ++turn) {
+      // Eigenvalues (1 + 2a, 1 − a, 1 − a) have FA 3|a| / √(3 + 6a²)
+      // (solved here for a), in a frame turned by `turn`.
+      const double fa = 0.3 + offset;
+      const double a = fa / std::sqrt(3.0 - 2.0 * fa * fa);
+      const Vec3 axis = Vec3(std::sin(turn * 1.3), std::cos(turn * 0.7), 0.4 + 0.1 * turn).normalized();
+      const Mat3 r = Eigen::AngleAxisd(0.37 * turn, axis).toRotationMatrix();
+      const Sym3 t = Sym3::symmetric_part(r * Vec3(1.0 + 2.0 * a, 1.0 - a, 1.0 - a).asDiagonal() * r.transpose());
+      const bool holds = region.holds(Vec3::Zero(), eigenvalues(t));
+      ++tensors;
+      if (region.surely_below(t)) {
+        EXPECT_FALSE(holds) << fa;
+      } else if (region.surely_above(t)) {
+        EXPECT_TRUE(holds) << fa;
+      } else {
+        ++undecided;
+      }
+      if (std::fabs(offset) > 1e-6) {
+        EXPECT_TRUE(region.surely_below(t) || region.surely_above(t)) << fa;
+      }
+    }
+  EXPECT_LT(undecided, tensors / 2);
+}
+
+}  // namespace
+}  // namespace hsb
