@@ -35,12 +35,13 @@ const ComponentOrder* component_order(const std::string& name) {
 }
 
 Sym3 tensor_in_order(const double* six, const ComponentOrder& order) {
-  Mat3 m = Mat3::Zero();
-  for (int k = 0; k < 6; ++k) {
-    const auto [i, j] = order.entries[std::size_t(k)];
-    m(i, j) = m(j, i) = six[k];
-  }
-  return Sym3::symmetric_part(m);
+  // Each component straight to its place (a symmetric matrix's (i, j) and
+  // (j, i) are one): what the symmetric part of the full matrix gives, to
+  // the bit, without making it, for every voxel of a volume.
+  Sym3 s;
+  double* const place[3][3] = {{&s.xx, &s.xy, &s.xz}, {&s.xy, &s.yy, &s.yz}, {&s.xz, &s.yz, &s.zz}};
+  for (std::size_t k = 0; k < 6; ++k) *place[order.entries[k][0]][order.entries[k][1]] = six[k];
+  return s;
 }
 
 std::array<double, 6> components_in_order(const Sym3& t, const ComponentOrder& order) {

@@ -6,6 +6,8 @@
 #include <vtkCellDataToPointData.h>
 #include <vtkCellTypes.h>
 #include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
 #include <vtkDataSet.h>
 #include <vtkDataSetReader.h>
 #include <vtkDataSetSurfaceFilter.h>
@@ -24,6 +26,8 @@
 #include <vtkTriangleFilter.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLGenericDataObjectReader.h>
+
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -258,8 +262,64 @@ std::vector<T> read_values(const ChosenArray& chosen, const std::string& path) {
   return out;
 }
 
+// What reading a band of an array's tuples found: where its first
+// non-finite value is, how many tuples are NaN (no data), and the largest
+// asymmetry of a 9-component tensor (its first tuple where equal).
+struct TensorBand {
+  vtkIdType bad_at = -1;
+  int bad_component = 0;
+  double bad_value = 0.0;
+  vtkIdType missing = 0;
+  double worst = 0.0, worst_norm = 0.0;
+  vtkIdType worst_at = -1;
+};
+
+// Reads tuples [first, last) of an array of `components` (6 or 9) into
+// `tensors` through `tuple(i, t)`; stops at a non-finite value.
+template <class Tuple>
+TensorBand read_tensor_band(const Tuple& tuple, int components, const ComponentOrder& order, vtkIdType first,
+                            vtkIdType last, Sym3* tensors) {
+  TensorBand band;
+  double t[9];
+  for (vtkIdType i = first; i < last; ++i) {
+    tuple(i, t);
+    // NaN is "no data" (outside a brain mask, a failed fit): the tensor is
+    // kept as NaN and the fields sample nothing where it counts.
+    if (std::any_of(t, t + components, [](double v) { return std::isnan(v); })) {
+      tensors[i] = Sym3{NAN, NAN, NAN, NAN, NAN, NAN};
+      ++band.missing;
+      continue;
+    }
+    for (int c = 0; c < components; ++c)
+      if (!std::isfinite(t[c])) {
+        band.bad_at = i;
+        band.bad_component = c;
+        band.bad_value = t[c];
+        return band;
+      }
+    if (components == 6) {
+      tensors[i] = tensor_in_order(t, order);
+      continue;
+    }
+    // Row- or column-major does not matter: the symmetric part is the same.
+    Mat3 m;
+    for (int k = 0; k < 9; ++k) m(k / 3, k % 3) = t[k];
+    tensors[i] = Sym3::symmetric_part(m);
+    const double asymmetry = (m - m.transpose()).cwiseAbs().maxCoeff();
+    if (asymmetry > band.worst) {
+      band.worst = asymmetry;
+      band.worst_at = i;
+      band.worst_norm = m.norm();
+    }
+  }
+  return band;
+}
+
 // Tensors of `array`, checked for finiteness, symmetrised when given as 9
-// components (with one warning for the largest asymmetry found).
+// components (with one warning for the largest asymmetry found). Read in
+// bands on every core, straight from the array's memory where it is a
+// plain float or double array (VTK's per-tuple getter is a virtual call
+// and a conversion): a diffusion volume has millions of voxels.
 std::vector<Sym3> read_tensors(const ChosenArray& chosen, const std::string& path, const ComponentOrder& order,
                                std::vector<std::string>& warnings) {
   vtkDataArray* array = chosen.array;
@@ -268,56 +328,52 @@ std::vector<Sym3> read_tensors(const ChosenArray& chosen, const std::string& pat
   const int components = array->GetNumberOfComponents();
   std::vector<Sym3> tensors;
   assign_on_huge_pages(tensors, std::size_t(n), Sym3{});
-  double worst = 0.0, worst_norm = 0.0;
-  vtkIdType worst_at = -1;
-  double t[9];
-  vtkIdType missing = 0;
-  for (vtkIdType i = 0; i < n; ++i) {
-    array->GetTuple(i, t);
-    // NaN is "no data" (outside a brain mask, a failed fit): the tensor is
-    // kept as NaN and the fields sample nothing where it counts.
-    if (std::any_of(t, t + components, [](double v) { return std::isnan(v); })) {
-      tensors[std::size_t(i)] = Sym3{NAN, NAN, NAN, NAN, NAN, NAN};
-      ++missing;
-      continue;
+  constexpr vtkIdType kBand = 1 << 15;
+  std::vector<TensorBand> bands(std::size_t((n + kBand - 1) / kBand));
+  const auto read_all = [&](const auto& tuple) {
+    tbb::parallel_for(std::size_t{0}, bands.size(), [&](std::size_t b) {
+      const vtkIdType first = vtkIdType(b) * kBand;
+      bands[b] = read_tensor_band(tuple, components, order, first, std::min(n, first + kBand), tensors.data());
+    });
+  };
+  const auto from = [&](const auto* values) {
+    return [values, components](vtkIdType i, double* t) {
+      const auto* tuple = values + std::size_t(i) * std::size_t(components);
+      for (int c = 0; c < components; ++c) t[c] = double(tuple[c]);
+    };
+  };
+  if (auto* floats = vtkFloatArray::FastDownCast(array)) read_all(from(floats->GetPointer(0)));
+  else if (auto* doubles = vtkDoubleArray::FastDownCast(array)) read_all(from(doubles->GetPointer(0)));
+  else read_all([array](vtkIdType i, double* t) { array->GetTuple(i, t); });
+
+  TensorBand all;
+  for (const TensorBand& band : bands) {
+    if (band.bad_at >= 0) {
+      std::ostringstream message;
+      message << path << ": array \"" << chosen.name << "\" has a non-finite value (" << band.bad_value << ") at "
+              << item << " " << band.bad_at << ", component " << band.bad_component;
+      throw DataError(message.str());
     }
-    for (int c = 0; c < components; ++c) {
-      if (!std::isfinite(t[c])) {
-        std::ostringstream message;
-        message << path << ": array \"" << chosen.name << "\" has a non-finite value (" << t[c] << ") at "
-                << item << " " << i << ", component " << c;
-        throw DataError(message.str());
-      }
-    }
-    Sym3& s = tensors[std::size_t(i)];
-    if (components == 6) {
-      s = tensor_in_order(t, order);
-      continue;
-    }
-    // Row- or column-major does not matter: the symmetric part is the same.
-    Mat3 m;
-    for (int k = 0; k < 9; ++k) m(k / 3, k % 3) = t[k];
-    s = Sym3::symmetric_part(m);
-    const double asymmetry = (m - m.transpose()).cwiseAbs().maxCoeff();
-    if (asymmetry > worst) {
-      worst = asymmetry;
-      worst_at = i;
-      worst_norm = m.norm();
+    all.missing += band.missing;
+    if (band.worst > all.worst) {
+      all.worst = band.worst;
+      all.worst_at = band.worst_at;
+      all.worst_norm = band.worst_norm;
     }
   }
-  if (missing == n)
+  if (all.missing == n)
     throw DataError(path + ": array \"" + chosen.name + "\" holds no data: every " + item + "'s tensor is NaN");
-  if (missing > 0) {
+  if (all.missing > 0) {
     std::ostringstream message;
-    message << path << ": " << missing << " of " << n << " " << item << "s have no tensor (NaN in array \""
+    message << path << ": " << all.missing << " of " << n << " " << item << "s have no tensor (NaN in array \""
             << chosen.name << "\"): no data there, as outside the data set";
     warnings.push_back(message.str());
   }
-  if (worst_at >= 0) {
+  if (all.worst_at >= 0) {
     std::ostringstream message;
     message << path << ": array \"" << chosen.name << "\" is not symmetric; using its symmetric part "
-            << "(T + Tᵀ)/2. Largest asymmetry |T_ij − T_ji| = " << worst << " at " << item << " "
-            << worst_at << " (where |T| = " << worst_norm << ")";
+            << "(T + Tᵀ)/2. Largest asymmetry |T_ij − T_ji| = " << all.worst << " at " << item << " "
+            << all.worst_at << " (where |T| = " << all.worst_norm << ")";
     warnings.push_back(message.str());
   }
   return tensors;
