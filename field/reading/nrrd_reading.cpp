@@ -44,6 +44,7 @@
 #include <sstream>
 
 #include "base/huge_pages.h"
+#include "base/mapped_file.h"
 #include "base/input_file.h"
 #include "field/reading/component_arrays.h"
 #include "field/reading/component_order.h"
@@ -232,7 +233,8 @@ double load_number(const unsigned char* bytes, bool swap) {
 // first: for Teem's helix at 88³ that copy was 38 MB, and most of its
 // cost was the kernel's page faults.
 struct DecodedValues {
-  std::vector<char> raw;               // the file's bytes after the header
+  MappedFile mapped;                   // the data file, where it can be mapped
+  std::vector<char> raw;               // else the file's bytes after the header, read
   std::vector<unsigned char> inflated; // gzip's output
   const unsigned char* bytes = nullptr;
   NumberType type;
@@ -278,14 +280,21 @@ DecodedValues read_values(const Header& h, const std::string& path, std::uint64_
   for (long long skip = h.integer("line skip"); skip > 0 && in; --skip) in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
   DecodedValues d;
   d.type = type;
-  std::vector<char>& raw = d.raw;
-  raw = rest_of(in);
+  const bool text = encoding == "txt" || encoding == "text" || encoding == "ascii";
+  // The bytes after the header: mapped (raw and gzip data), else read.
+  const std::streamoff here = in.tellg();
+  if (!text && here >= 0) d.mapped = MappedFile(data_path);
+  if (d.mapped.size() == 0) d.raw = rest_of(in);
+  const unsigned char* rest = d.mapped.size() > 0 ? d.mapped.data() + std::min<std::size_t>(std::size_t(here), d.mapped.size())
+                                                  : reinterpret_cast<const unsigned char*>(d.raw.data());
+  const std::size_t rest_size = d.mapped.size() > 0 ? d.mapped.size() - std::size_t(rest - d.mapped.data()) : d.raw.size();
   const long long byte_skip = h.integer("byte skip");
 
   // Nothing is reserved for what the header declares before the data
   // shows it holds that much: a corrupt size must not take all memory.
   std::vector<double>& values = d.text;
-  if (encoding == "txt" || encoding == "text" || encoding == "ascii") {
+  if (text) {
+    std::vector<char>& raw = d.raw;
     raw.push_back('\0');
     const char* at = raw.data();
     for (char* end = nullptr; values.size() < count; at = end) {
@@ -303,16 +312,16 @@ DecodedValues read_values(const Header& h, const std::string& path, std::uint64_
   std::vector<unsigned char>& inflated = d.inflated;
   const unsigned char* decoded = nullptr;
   if (encoding == "raw") {
-    const std::uint64_t start = byte_skip == -1 ? (raw.size() >= bytes ? raw.size() - bytes : 0) : std::uint64_t(std::max(0LL, byte_skip));
-    if (raw.size() < start + bytes)
-      throw DataError(path + ": its raw data has " + std::to_string(raw.size() - std::min<std::uint64_t>(raw.size(), start)) +
+    const std::uint64_t start = byte_skip == -1 ? (rest_size >= bytes ? rest_size - bytes : 0) : std::uint64_t(std::max(0LL, byte_skip));
+    if (rest_size < start + bytes)
+      throw DataError(path + ": its raw data has " + std::to_string(rest_size - std::min<std::uint64_t>(rest_size, start)) +
                       " bytes; the header declares " + std::to_string(bytes));
-    decoded = reinterpret_cast<const unsigned char*>(raw.data()) + start;
+    decoded = rest + start;
   } else if (encoding == "gzip" || encoding == "gz") {
     z_stream z{};
     if (inflateInit2(&z, 15 + 32) != Z_OK) throw DataError(path + ": cannot start zlib");
-    z.next_in = reinterpret_cast<unsigned char*>(raw.data());
-    z.avail_in = uInt(std::min<std::size_t>(raw.size(), std::numeric_limits<uInt>::max()));
+    z.next_in = const_cast<unsigned char*>(rest);  // zlib only reads it
+    z.avail_in = uInt(std::min<std::size_t>(rest_size, std::numeric_limits<uInt>::max()));
     std::uint64_t done = 0;
     int status = Z_OK;
     while (done < bytes && status == Z_OK) {
