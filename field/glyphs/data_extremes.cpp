@@ -22,6 +22,20 @@ const std::vector<Sym3>* held_values(const TensorField& field) {
   return nullptr;
 }
 
+// Bounds [lo, hi] of the largest (λ1) or least (λ3) eigenvalue of t
+// without decomposing it: a symmetric matrix's eigenvalues lie in its
+// Gershgorin discs, and λ1 is at least, λ3 at most, each diagonal entry
+// (Rayleigh's quotient of a coordinate axis). Other scalars: none.
+std::optional<std::array<double, 2>> eigenvalue_bounds(const Sym3& t, ColorScalar which) {
+  const double rx = std::fabs(t.xy) + std::fabs(t.xz), ry = std::fabs(t.xy) + std::fabs(t.yz),
+               rz = std::fabs(t.xz) + std::fabs(t.yz);
+  if (which == ColorScalar::lambda1)
+    return std::array<double, 2>{std::max({t.xx, t.yy, t.zz}), std::max({t.xx + rx, t.yy + ry, t.zz + rz})};
+  if (which == ColorScalar::lambda3)
+    return std::array<double, 2>{std::min({t.xx - rx, t.yy - ry, t.zz - rz}), std::min({t.xx, t.yy, t.zz})};
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<std::array<double, 2>> data_color_extremes(const TensorField& field, ColorScalar color) {
@@ -34,19 +48,49 @@ std::optional<std::array<double, 2>> data_color_extremes(const TensorField& fiel
   const ColorScalar low = families ? ColorScalar::lambda3 : color, high = families ? ColorScalar::lambda1 : color;
   using Range = std::array<double, 2>;
   const Range none{INFINITY, -INFINITY};
-  const Range r = tbb::parallel_reduce(
-      tbb::blocked_range<std::size_t>(0, values->size(), 4096), none,
+  const auto each_block = [&](auto&& body, auto&& join) {
+    return tbb::parallel_reduce(tbb::blocked_range<std::size_t>(0, values->size(), 4096), none, body, join);
+  };
+  const auto joined = [](const Range& a, const Range& b) { return Range{std::min(a[0], b[0]), std::max(a[1], b[1])}; };
+  // For λ1 and λ3 most tensors are decided by their bounds alone (on a
+  // body's mesh or a sampled grid, all but the few near the extremes):
+  // the largest lower bound of the high scalar is at most its maximum, so
+  // a tensor whose upper bound stays below it cannot hold the maximum;
+  // likewise for the minimum. With a margin far beyond the decomposition's
+  // round-off, the extremes are the same to the bit as from every tensor.
+  const bool bounded = eigenvalue_bounds(Sym3{}, low) && eigenvalue_bounds(Sym3{}, high);
+  Range reached = none;  // [least upper bound of low, largest lower bound of high]
+  if (bounded)
+    reached = each_block(
+        [&](const tbb::blocked_range<std::size_t>& block, Range range) {
+          for (std::size_t i = block.begin(); i < block.end(); ++i) {
+            const Sym3& t = (*values)[i];
+            if (!t.holds_data()) continue;
+            range[0] = std::min(range[0], (*eigenvalue_bounds(t, low))[1]);
+            range[1] = std::max(range[1], (*eigenvalue_bounds(t, high))[0]);
+          }
+          return range;
+        },
+        joined);
+  const auto margin = [](double a, double b) { return 1e-9 * (std::fabs(a) + std::fabs(b)); };
+  const Range r = each_block(
       [&](const tbb::blocked_range<std::size_t>& block, Range range) {
         for (std::size_t i = block.begin(); i < block.end(); ++i) {
           const Sym3& t = (*values)[i];
           if (!t.holds_data()) continue;
+          if (bounded) {
+            const double low_least = (*eigenvalue_bounds(t, low))[0], high_most = (*eigenvalue_bounds(t, high))[1];
+            if (low_least > reached[0] + margin(low_least, reached[0]) &&
+                high_most < reached[1] - margin(high_most, reached[1]))
+              continue;
+          }
           const Vec3 l = eigenvalues(t);
           range[0] = std::min(range[0], color_scalar(l, low));
           range[1] = std::max(range[1], color_scalar(l, high));
         }
         return range;
       },
-      [](const Range& a, const Range& b) { return Range{std::min(a[0], b[0]), std::max(a[1], b[1])}; });
+      joined);
   if (!(r[0] <= r[1])) return std::nullopt;
   return r;
 }
