@@ -2,7 +2,7 @@
 // OpenImageIO's part of hsb, kept in a module of its own
 // (libhsb_image_io.so beside the binary) and loaded when a raster image is
 // first read or written. Debian's libOpenImageIO brings 261 libraries with
-// it (GDAL, OpenVDB, OpenCV, poppler): loading them takes 0.2 s and 90 MB
+// it (GDAL, OpenVDB, OpenCV, poppler): loading them takes 0.1 s and 90 MB
 // before anything else, which `hsb info`, `hsb keys`, a PDF or SVG figure
 // and every child process need not pay, and which a render can pay while
 // it reads its data (preload_image_io).
