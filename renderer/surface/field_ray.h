@@ -216,7 +216,6 @@ class FieldRay {
   };
   std::vector<SpanKey> keys_;
   std::vector<RaySpan> sorted_spans_;
-  std::vector<ShapeRay> sorted_rays_;
   // The length of the last step proven_below_until() proved: where the
   // next one's search starts.
   mutable double proof_step_ = 0.0;

@@ -42,24 +42,20 @@ FieldRay::ShapeRay FieldRay::shape_ray(const BlobField& field, const RaySpan& sp
 
 void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, const Vec3& direction) {
   const std::size_t count = spans.size();
-  shape_rays_.clear();
-  for (const RaySpan& s : spans) shape_rays_.push_back(shape_ray(field, s, origin, direction));
   // In the order the ray enters them, ties in spatial rank order: every
   // sum over the spans is then the same to the bit whatever order the BVH
   // handed them over in, and a sum up to some t stops at the first span
-  // that starts beyond it. The keys are sorted, then both lists gathered.
+  // that starts beyond it. The keys are sorted and the spans gathered,
+  // then each one's ray made in its place.
   keys_.resize(count);
   for (std::size_t i = 0; i < count; ++i) keys_[i] = {spans[i].t0, spans[i].rank, std::uint32_t(i)};
   std::sort(keys_.begin(), keys_.end(),
             [](const SpanKey& a, const SpanKey& b) { return a.t0 < b.t0 || (a.t0 == b.t0 && a.rank < b.rank); });
   sorted_spans_.resize(count);
-  sorted_rays_.resize(count);
-  for (std::size_t i = 0; i < count; ++i) {
-    sorted_spans_[i] = spans[keys_[i].index];
-    sorted_rays_[i] = shape_rays_[keys_[i].index];
-  }
+  for (std::size_t i = 0; i < count; ++i) sorted_spans_[i] = spans[keys_[i].index];
   spans.swap(sorted_spans_);
-  shape_rays_.swap(sorted_rays_);
+  shape_rays_.resize(count);
+  for (std::size_t i = 0; i < count; ++i) shape_rays_[i] = shape_ray(field, spans[i], origin, direction);
   u_.assign(count, 1.0);
   du_dt_.assign(count, 0.0);
   tangent_at_.assign(count, -std::numeric_limits<double>::infinity());
