@@ -116,8 +116,12 @@ struct RegionSpec {
   // it (within 1e-9, far beyond the round-off between the components' FA
   // and the eigenvalues') holds() decides, so the region is the same
   // either way. Other measures: never.
-  bool surely_below(const Sym3& tensor) const { return fa_threshold() && fractional_anisotropy(tensor) < *above - kFaMargin; }
-  bool surely_above(const Sym3& tensor) const { return fa_threshold() && fractional_anisotropy(tensor) > *above + kFaMargin; }
+  bool surely_below(const Sym3& tensor) const {
+    return fa_threshold() && fractional_anisotropy(tensor) < *above - kFaMargin;
+  }
+  bool surely_above(const Sym3& tensor) const {
+    return fa_threshold() && fractional_anisotropy(tensor) > *above + kFaMargin;
+  }
 
  private:
   static constexpr double kFaMargin = 1e-9;

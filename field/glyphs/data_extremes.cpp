@@ -22,18 +22,22 @@ const std::vector<Sym3>* held_values(const TensorField& field) {
   return nullptr;
 }
 
+// Whether eigenvalue_bounds() bounds `which`: the largest and the least
+// eigenvalue.
+bool bounded_without_decomposing(ColorScalar which) {
+  return which == ColorScalar::lambda1 || which == ColorScalar::lambda3;
+}
+
 // Bounds [lo, hi] of the largest (λ1) or least (λ3) eigenvalue of t
 // without decomposing it: a symmetric matrix's eigenvalues lie in its
 // Gershgorin discs, and λ1 is at least, λ3 at most, each diagonal entry
-// (Rayleigh's quotient of a coordinate axis). Other scalars: none.
-std::optional<std::array<double, 2>> eigenvalue_bounds(const Sym3& t, ColorScalar which) {
+// (Rayleigh's quotient of a coordinate axis).
+std::array<double, 2> eigenvalue_bounds(const Sym3& t, ColorScalar which) {
   const double rx = std::fabs(t.xy) + std::fabs(t.xz), ry = std::fabs(t.xy) + std::fabs(t.yz),
                rz = std::fabs(t.xz) + std::fabs(t.yz);
   if (which == ColorScalar::lambda1)
-    return std::array<double, 2>{std::max({t.xx, t.yy, t.zz}), std::max({t.xx + rx, t.yy + ry, t.zz + rz})};
-  if (which == ColorScalar::lambda3)
-    return std::array<double, 2>{std::min({t.xx - rx, t.yy - ry, t.zz - rz}), std::min({t.xx, t.yy, t.zz})};
-  return std::nullopt;
+    return {std::max({t.xx, t.yy, t.zz}), std::max({t.xx + rx, t.yy + ry, t.zz + rz})};
+  return {std::min({t.xx - rx, t.yy - ry, t.zz - rz}), std::min({t.xx, t.yy, t.zz})};
 }
 
 }  // namespace
@@ -58,7 +62,7 @@ std::optional<std::array<double, 2>> data_color_extremes(const TensorField& fiel
   // a tensor whose upper bound stays below it cannot hold the maximum;
   // likewise for the minimum. With a margin far beyond the decomposition's
   // round-off, the extremes are the same to the bit as from every tensor.
-  const bool bounded = eigenvalue_bounds(Sym3{}, low) && eigenvalue_bounds(Sym3{}, high);
+  const bool bounded = bounded_without_decomposing(low) && bounded_without_decomposing(high);
   Range reached = none;  // [least upper bound of low, largest lower bound of high]
   if (bounded)
     reached = each_block(
@@ -66,8 +70,8 @@ std::optional<std::array<double, 2>> data_color_extremes(const TensorField& fiel
           for (std::size_t i = block.begin(); i < block.end(); ++i) {
             const Sym3& t = (*values)[i];
             if (!t.holds_data()) continue;
-            range[0] = std::min(range[0], (*eigenvalue_bounds(t, low))[1]);
-            range[1] = std::max(range[1], (*eigenvalue_bounds(t, high))[0]);
+            range[0] = std::min(range[0], eigenvalue_bounds(t, low)[1]);
+            range[1] = std::max(range[1], eigenvalue_bounds(t, high)[0]);
           }
           return range;
         },
@@ -79,7 +83,7 @@ std::optional<std::array<double, 2>> data_color_extremes(const TensorField& fiel
           const Sym3& t = (*values)[i];
           if (!t.holds_data()) continue;
           if (bounded) {
-            const double low_least = (*eigenvalue_bounds(t, low))[0], high_most = (*eigenvalue_bounds(t, high))[1];
+            const double low_least = eigenvalue_bounds(t, low)[0], high_most = eigenvalue_bounds(t, high)[1];
             if (low_least > reached[0] + margin(low_least, reached[0]) &&
                 high_most < reached[1] - margin(high_most, reached[1]))
               continue;

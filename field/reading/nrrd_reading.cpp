@@ -284,10 +284,17 @@ DecodedValues read_values(const Header& h, const std::string& path, std::uint64_
   // The bytes after the header: mapped (raw and gzip data), else read.
   const std::streamoff here = in.tellg();
   if (!text && here >= 0) d.mapped = MappedFile(data_path);
-  if (d.mapped.size() == 0) d.raw = rest_of(in);
-  const unsigned char* rest = d.mapped.size() > 0 ? d.mapped.data() + std::min<std::size_t>(std::size_t(here), d.mapped.size())
-                                                  : reinterpret_cast<const unsigned char*>(d.raw.data());
-  const std::size_t rest_size = d.mapped.size() > 0 ? d.mapped.size() - std::size_t(rest - d.mapped.data()) : d.raw.size();
+  const unsigned char* rest = nullptr;
+  std::size_t rest_size = 0;
+  if (d.mapped.size() > 0) {
+    const std::size_t at = std::min(std::size_t(here), d.mapped.size());
+    rest = d.mapped.data() + at;
+    rest_size = d.mapped.size() - at;
+  } else {
+    d.raw = rest_of(in);
+    rest = reinterpret_cast<const unsigned char*>(d.raw.data());
+    rest_size = d.raw.size();
+  }
   const long long byte_skip = h.integer("byte skip");
 
   // Nothing is reserved for what the header declares before the data

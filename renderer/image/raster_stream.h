@@ -2,7 +2,8 @@
 // A PNG or TIFF written a band of rows at a time, as the picture is made.
 //
 // Each band is quantised where it is handed over (dithered to 8 bits, or
-// rounded to 16) and encoded on a thread of the stream's own, in order,
+// rounded to 16) and encoded on a thread of the stream's own (a spare one,
+// made before the image module began loading: spare_threads.h), in order,
 // while the caller goes on: the picture's floats are never held whole (a
 // 2000² film is 64 MB, its bytes 12), and deflating, the one step of the
 // output that runs on a single core, runs beside the render instead of
@@ -19,10 +20,10 @@
 #include <deque>
 #include <exception>
 #include <functional>
+#include <future>
 #include <map>
 #include <mutex>
 #include <string>
-#include <future>
 #include <vector>
 
 #include "base/partial_file.h"
