@@ -58,11 +58,6 @@ TEST(DataExtremes, NoneWhereTheDataHasNoValuesOrTheColourIsNotTheTensors) {
   EXPECT_FALSE(data_color_extremes(empty, ColorScalar::lambda1));  // all zero: no data
 }
 
-}  // namespace
-}  // namespace hsb
-
-namespace hsb {
-namespace {
 
 // The extremes from every tensor's eigenvalues, as the colour bar takes
 // them without any bound.

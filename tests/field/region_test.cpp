@@ -257,11 +257,6 @@ TEST(Region, AMaskThatIsNoneIsSaidSo) {
   }
 }
 
-}  // namespace
-}  // namespace hsb
-
-namespace hsb {
-namespace {
 
 // The threshold decided from the tensor's components (surely_below,
 // surely_above) never disagrees with the eigenvalues' FA, and leaves
