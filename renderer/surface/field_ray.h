@@ -208,7 +208,6 @@ class FieldRay {
   mutable std::size_t first_unbegun_ = 0;
   // proven_below_until()'s scratch: the bound's rows and their values.
   mutable SpanBoundRows rows_;
-  mutable std::vector<double> row_bounds_;
   // prepare_shape_rays()'s scratch for putting the spans in order.
   struct SpanKey {
     double t0;

@@ -222,6 +222,8 @@ double FieldRay::refine_shape(const BlobField& field, double lo, double hi, doub
 
 double FieldRay::proven_below_until(const BlobField& field, double tmax, double min_step) const {
   const double t = probed_at_, c = field.isovalue;
+  // F is a sum here: a union's crossing is its first entry, which
+  // group_crossing finds without a walk.
   // A span live at t that is past its closest approach by both its
   // tangent and its bounding ellipsoid has its largest value at t, whatever
   // s: those are summed once. (One a probe skipped before its first
@@ -231,7 +233,7 @@ double FieldRay::proven_below_until(const BlobField& field, double tmax, double 
   rows_.clear();
   for (std::uint32_t i : live_) {
     if (has_tangent(i) && du_dt_[i] >= 0.0 && spans[i].t_c <= t)
-      fixed = blended(field.blend, fixed, term_bound(field, i, t, t));
+      fixed += term_bound(field, i, t, t);
     else rows_.push(bound_row(i, t));
   }
   const std::size_t rising = rows_.size();
@@ -244,11 +246,7 @@ double FieldRay::proven_below_until(const BlobField& field, double tmax, double 
     for (; next < spans.size() && spans[next].t0 <= s; ++next) rows_.push(bound_row(next, spans[next].t0));
     std::size_t count = rows_.size();
     while (count > rising && spans[first_unbegun_ + (count - rising) - 1].t0 > s) --count;
-    row_bounds_.resize(count);
-    span_bounds(rows_, count, s, field.kernel, row_bounds_.data());
-    double b = fixed;
-    for (std::size_t k = 0; k < count; ++k) b = blended(field.blend, b, row_bounds_[k]);
-    return b;
+    return fixed + span_bounds_sum(rows_, count, s, field.kernel);
   };
   // Out by doubling steps, from the last proof's length, to the first s
   // the bound does not clear (a sum up to s costs only the spans begun by

@@ -62,7 +62,13 @@ class SpanBoundRows {
   std::size_t rows_ = 0;
 };
 
-// out[k] for rows [0, count): the bound of row k's K over [from, s].
-void span_bounds(const SpanBoundRows& rows, std::size_t count, double s, KernelKind kernel, double* out);
+// The sum over rows [0, count) of each row's bound of K over [from, s]:
+// the proofs' bound of F. Summed in kSumLanes running sums, row k into
+// sum k mod kSumLanes, then the sums pairwise ((0+1)+(2+3))+((4+5)+(6+7)),
+// the same order under every instruction set, so the same bits; one
+// running sum chained each row's addition to the one before, and the
+// chain, not the bounds, set the loop's pace.
+constexpr std::size_t kSumLanes = 8;
+double span_bounds_sum(const SpanBoundRows& rows, std::size_t count, double s, KernelKind kernel);
 
 }  // namespace hsb

@@ -1,5 +1,6 @@
 // The shape tracer's bounds of many spans at once (renderer/surface/span_bounds.h):
-// the SIMD rows give each span alone's bits, for every kernel, under the
+// the SIMD rows sum to the bits of each span alone's bound added in the
+// documented order, for every kernel and every count of rows, under the
 // instruction set in force (run again under each by the isa.* tests), and
 // a bound never falls as the interval grows.
 
@@ -14,7 +15,7 @@
 namespace hsb {
 namespace {
 
-TEST(SpanBounds, RowsInLanesGiveEachSpanAlonesBits) {
+TEST(SpanBounds, RowsInLanesSumToTheBitsOfEachSpanAlone) {
   std::mt19937 rng(17);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   SpanBoundRows rows;
@@ -34,19 +35,27 @@ TEST(SpanBounds, RowsInLanesGiveEachSpanAlonesBits) {
                 a.t_c == b.t_c && a.a == b.a && a.g_min == b.g_min)
         << "row " << k;
   }
-  std::vector<double> out(rows.size());
   int nonzero = 0;
   for (const KernelKind kernel : {KernelKind::wyvill, KernelKind::quartic, KernelKind::blinn})
-    for (const double s : {0.5, 2.0, 3.7, 9.0}) {
-      span_bounds(rows, rows.size(), s, kernel, out.data());
-      for (std::size_t k = 0; k < rows.size(); ++k) {
-        const double alone = span_bound(rows.row(k), s, kernel);
-        ASSERT_EQ(std::memcmp(&alone, &out[k], sizeof alone), 0)
-            << isa_name(active_isa()) << " row " << k << " s " << s << ": " << out[k] << " against " << alone;
-        ASSERT_GE(span_bound(rows.row(k), s + 1.0, kernel), alone);
-        nonzero += alone > 0.0;
+    for (const double s : {0.5, 2.0, 3.7, 9.0})
+      // Every prefix the proofs ask for: fewer rows than one group, whole
+      // groups, and groups with a rest.
+      for (const std::size_t count : {std::size_t{0}, std::size_t{5}, std::size_t{8}, std::size_t{64},
+                                      std::size_t{197}, rows.size()}) {
+        // Row k into running sum k mod 8, the sums added pairwise.
+        double sums[kSumLanes] = {};
+        for (std::size_t k = 0; k < count; ++k) {
+          const double alone = span_bound(rows.row(k), s, kernel);
+          sums[k % kSumLanes] += alone;
+          ASSERT_GE(span_bound(rows.row(k), s + 1.0, kernel), alone);
+          nonzero += alone > 0.0;
+        }
+        const double expected =
+            ((sums[0] + sums[1]) + (sums[2] + sums[3])) + ((sums[4] + sums[5]) + (sums[6] + sums[7]));
+        const double got = span_bounds_sum(rows, count, s, kernel);
+        ASSERT_EQ(std::memcmp(&expected, &got, sizeof got), 0)
+            << isa_name(active_isa()) << " rows " << count << " s " << s << ": " << got << " against " << expected;
       }
-    }
   EXPECT_GT(nonzero, 300);
 }
 
