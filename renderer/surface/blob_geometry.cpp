@@ -24,16 +24,16 @@ namespace {
 struct SpanQueryContext {
   RTCIntersectContext embree;  // first member, see FieldRayContext
   const BlobField* field;
-  const std::uint32_t* rank;  // each source's spatial rank
+  // The span kernel for the field's shape under the active instruction set.
+  SpanKernels::RaySpans ray_spans;
   RayLanes rays;
   FieldRay* tracers;
   std::size_t candidates;
-  // g at a source's own level surface K = C: a span that enters it (for a
-  // shape other than the ellipsoid, the ball inside it, single_source.h)
-  // ends the search beyond that point.
-  double g_level;
-  // An `any` query (shadow rays): one such entry is the answer, and the
-  // traversal ends there.
+  // A span that enters its source's own level surface K = C (for a shape
+  // other than the ellipsoid, the ball inside it: ListedSource::g_inner,
+  // single_source.h) ends the search beyond that point. An `any` query
+  // (shadow rays): one such entry is the answer, and the traversal ends
+  // there.
   bool stop_at_entry;
 };
 
@@ -121,6 +121,15 @@ double mean_influence_diagonal(const BlobField& field) {
 
 }  // namespace
 
+std::vector<BlobGeometry::ListedSource> BlobGeometry::listed_sources(const BlobField& field,
+                                                                     const std::vector<std::uint32_t>& ranks) {
+  const double g_level = level_g(field.kernel, field.isovalue);
+  std::vector<ListedSource> listed(field.sources.size());
+  for (std::size_t i = 0; i < listed.size(); ++i)
+    listed[i] = {source_box(field, i), inner_level_g(field, std::uint32_t(i), g_level), ranks[i]};
+  return listed;
+}
+
 BlobGeometry::BlobGeometry(RTCDevice device, const BlobField& field, const TraceSettings& settings)
     : field_(field),
       settings_(settings),
@@ -133,7 +142,7 @@ BlobGeometry::BlobGeometry(RTCDevice device, const BlobField& field, const Trace
       first_window_(field.blend == Blend::max ? std::numeric_limits<double>::infinity()
                                               : 2.0 * mean_influence_diagonal(field)),
       listed_scale_(field.blend == Blend::max ? kernel_level_radius(field.kernel, field.isovalue) : 1.0),
-      rank_(spatial_ranks(field, bounds_)),
+      listed_(listed_sources(field, spatial_ranks(field, bounds_))),
       device_(device),
       packet_width_(native_packet_width(device)) {
   span_scene_ = rtcNewScene(device_);
@@ -191,13 +200,14 @@ Box3 BlobGeometry::listed_bounds(std::size_t i) const {
 }
 
 void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
+  const auto* self = static_cast<const BlobGeometry*>(args->geometryUserPtr);
   auto* query = reinterpret_cast<SpanQueryContext*>(args->context);
   const unsigned n = args->N;
   RTCRayN* embree_rays = RTCRayHitN_RayN(args->rayhit, n);
   const BlobSource& source = query->field->sources[args->primID];
-  const double box = source_box(*query->field, args->primID);
-  const double g_inner = inner_level_g(*query->field, args->primID, query->g_level);
-  const std::uint32_t rank = query->rank[args->primID];
+  const ListedSource& listed = self->listed_[args->primID];
+  const double box = listed.box, g_inner = listed.g_inner;
+  const std::uint32_t rank = listed.rank;
   const RayLanes& r = query->rays;
   if (n == 1) {  // a lone ray (rtcIntersect1): no lanes to gather
     ++query->candidates;
@@ -213,15 +223,16 @@ void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
   // device's width reaches here whole, lane i holding ray first + i, and
   // the query's own lanes serve as they are; any other arrangement is
   // gathered into lanes [0, n) first.
-  unsigned valid = 0;
+  unsigned valid = 0, candidates = 0;
   std::array<unsigned, kMaxPacket> index;
   for (unsigned i = 0; i < n; ++i) {
     if (!args->valid[i]) continue;
     valid |= 1u << i;
+    ++candidates;  // (a popcount is a library call without -mpopcnt)
     index[i] = checked_ray_index(embree_rays, n, i);
   }
   if (!valid) return;
-  query->candidates += unsigned(__builtin_popcount(valid));
+  query->candidates += candidates;
   const unsigned lowest = unsigned(__builtin_ctz(valid));
   const int first = int(index[lowest]) - int(lowest);
   bool in_place = first >= 0 && first + int(n) <= kMaxPacket;
@@ -234,7 +245,7 @@ void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
   unsigned entered;
   int offset;
   if (in_place) {
-    entered = (ray_spans(source, box, r, first, int(n), spans) >> first) & valid;
+    entered = (query->ray_spans(source, box, r, first, int(n), spans) >> first) & valid;
     offset = first;
   } else {
     RayLanes gathered;
@@ -242,7 +253,7 @@ void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
       const unsigned k = valid & (1u << i) ? index[i] : index[lowest];  // idle lanes repeat a real ray
       gathered.set(int(i), r.origin(int(k)), r.direction(int(k)), r.tmin[k], r.tmax[k]);
     }
-    entered = ray_spans(source, box, gathered, 0, int(n), spans) & valid;
+    entered = query->ray_spans(source, box, gathered, 0, int(n), spans) & valid;
     offset = 0;
   }
   for (unsigned rest = entered; rest; rest &= rest - 1) {
@@ -268,10 +279,10 @@ std::size_t BlobGeometry::query_spans(const RayInterval* rays, FieldRay* tracers
   SpanQueryContext query;
   rtcInitIntersectContext(&query.embree);
   query.field = &field_;
-  query.rank = rank_.data();
+  const SpanKernels& kernels = span_kernels(active_isa());
+  query.ray_spans = shape_is_quadric(field_.shape) ? kernels.ray_spans : kernels.ray_spans_boxed;
   query.tracers = tracers;
   query.candidates = 0;
-  query.g_level = level_g(field_.kernel, field_.isovalue);
   query.stop_at_entry = crossing == CrossingQuery::any;
   // Ray i of the query is lane i of `rays` and has Embree id i. For a
   // packet, idle lanes repeat an asked ray so the SIMD lanes stay finite.
@@ -395,8 +406,9 @@ bool BlobGeometry::gather_nearby(const Box3& region, std::size_t limit, NearbySo
   if (q.overflow) return false;
   // Rank order, whatever order the traversal met them in: groups of
   // neighbours for the list's boxes.
-  std::sort(scratch.begin(), scratch.end(), [&](std::uint32_t a, std::uint32_t b) { return rank_[a] < rank_[b]; });
-  for (const std::uint32_t i : scratch) nearby.add(field_, i, rank_[i]);
+  std::sort(scratch.begin(), scratch.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return listed_[a].rank < listed_[b].rank; });
+  for (const std::uint32_t i : scratch) nearby.add(field_, i, listed_[i].rank);
   return true;
 }
 
