@@ -44,7 +44,8 @@ bool AmbientRays::cover(const BlobGeometry& blobs, const Box3& needed, double cr
   return true;
 }
 
-void AmbientRays::trace(const RayScene& scene, const std::vector<RayInterval>& rays, double crowd, FieldRay& tracer,
+void AmbientRays::trace(const RayScene& scene, const std::vector<RayInterval>& rays,
+                        const std::vector<const SupportPlanes*>& planes, double crowd, FieldRay& tracer,
                         TraceStats& stats, std::vector<std::uint8_t>& blocked) {
   const std::size_t count = rays.size();
   blocked.assign(count, 0);
@@ -58,6 +59,7 @@ void AmbientRays::trace(const RayScene& scene, const std::vector<RayInterval>& r
   }
   const bool listed = cover(blobs, needed, crowd);
   for (std::size_t i = 0; i < count; ++i) {
+    tracer.leave_surface(planes[i]);
     const double hit = listed ? blobs.first_crossing_near(nearby_, rays[i], tracer, stats, CrossingQuery::any)
                               : blobs.first_crossing_traversed(rays[i], tracer, stats, CrossingQuery::any);
     blocked[i] = hit >= 0.0 ? 1 : 0;

@@ -25,12 +25,14 @@ namespace hsb {
 class AmbientRays {
  public:
   // Whether each ray is blocked by the field within its interval: blocked[i]
-  // is 1 or 0. `crowd` is how many sources overlap, on average, where the
-  // rays start (SurfaceSample::crowd): a ray crosses about that many
-  // supports, which prices the per-ray way. `tracer` is scratch; `stats`
-  // counts the work.
-  void trace(const RayScene& scene, const std::vector<RayInterval>& rays, double crowd, FieldRay& tracer,
-             TraceStats& stats, std::vector<std::uint8_t>& blocked);
+  // is 1 or 0. planes[i] holds the tangent planes of the glyph hit ray i
+  // leaves, or is nullptr (support_planes.h). `crowd` is how many sources
+  // overlap, on average, where the rays start (SurfaceSample::crowd): a ray
+  // crosses about that many supports, which prices the per-ray way.
+  // `tracer` is scratch; `stats` counts the work.
+  void trace(const RayScene& scene, const std::vector<RayInterval>& rays,
+             const std::vector<const SupportPlanes*>& planes, double crowd, FieldRay& tracer, TraceStats& stats,
+             std::vector<std::uint8_t>& blocked);
 
  private:
   // Lists the sources around `needed`, with room to spare for the next

@@ -25,8 +25,10 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 // sources around them (ambient_rays.h).
 class OcclusionBatch {
  public:
-  void add(const Vec3& origin, const Vec3& direction, double tfar, int lane, double weight, bool ambient) {
-    (ambient ? ambient_ : key_).push_back({origin, direction, tfar, lane, weight});
+  // `planes`: the tangent planes of the glyph hit the ray leaves, or nullptr.
+  void add(const Vec3& origin, const Vec3& direction, double tfar, int lane, double weight, bool ambient,
+           const SupportPlanes* planes) {
+    (ambient ? ambient_ : key_).push_back({origin, direction, tfar, lane, weight, planes});
   }
 
   void trace(const RayScene& scene, SampleTracer& tracer, Visibility* visibility) {
@@ -39,6 +41,7 @@ class OcclusionBatch {
       const Pending* batch = &key_[first];
       unsigned traceable = 0;
       for (int i = 0; i < count; ++i) {
+        context.origin_planes[std::size_t(i)] = batch[i].planes;
         if (embree_can_trace(batch[i].origin, batch[i].direction, 0.0, batch[i].tfar))
           traceable |= 1u << i;
         else
@@ -71,9 +74,13 @@ class OcclusionBatch {
  private:
   void trace_ambient(const RayScene& scene, SampleTracer& tracer, Visibility* visibility) {
     rays_.clear();
-    for (const Pending& r : ambient_) rays_.push_back({r.origin, r.direction, 0.0, r.tfar});
+    planes_.clear();
+    for (const Pending& r : ambient_) {
+      rays_.push_back({r.origin, r.direction, 0.0, r.tfar});
+      planes_.push_back(r.planes);
+    }
     const double crowd = crowd_points_ ? double(crowd_sum_) / double(crowd_points_) : 0.0;
-    tracer.ambient.trace(scene, rays_, crowd, tracer.tracers[0], tracer.shadow_stats, blocked_);
+    tracer.ambient.trace(scene, rays_, planes_, crowd, tracer.tracers[0], tracer.shadow_stats, blocked_);
     for (std::size_t i = 0; i < ambient_.size(); ++i)
       if (!blocked_[i]) visibility[ambient_[i].lane].ambient += ambient_[i].weight;
   }
@@ -83,9 +90,11 @@ class OcclusionBatch {
     double tfar;
     int lane;
     double weight;
+    const SupportPlanes* planes;
   };
   std::vector<Pending> key_, ambient_;
   std::vector<RayInterval> rays_;
+  std::vector<const SupportPlanes*> planes_;
   std::vector<std::uint8_t> blocked_;
   std::uint64_t crowd_sum_ = 0, crowd_points_ = 0;
 };
@@ -100,7 +109,7 @@ void pixel_stratified(const CameraRayJob& job, SamplePurpose purpose, int k, int
 // Key-light shadow rays from `point` (whose visible side faces `facing`):
 // light_samples directions over the light's disc, each worth an equal share.
 void add_key_rays(const ShadingSpec& shading, const CameraRayJob& job, const Vec3& point, const Vec3& facing,
-                  double offset, int lane, OcclusionBatch& batch) {
+                  double offset, int lane, const SupportPlanes* planes, OcclusionBatch& batch) {
   const int n = std::max(1, shading.light_size > 0.0 ? shading.light_samples : 1);
   const double half_angle = 0.5 * shading.light_size * M_PI / 180.0;
   const Vec3 start = point + offset * facing;
@@ -110,18 +119,18 @@ void add_key_rays(const ShadingSpec& shading, const CameraRayJob& job, const Vec
     const Vec3 direction = half_angle > 0.0 ? in_cone(shading.light_from, half_angle, u, v)
                                             : Vec3(shading.light_from.normalized());
     if (direction.dot(facing) <= 0.0) continue;  // below the horizon: that part of the disc is hidden
-    batch.add(start, direction, INFINITY, lane, 1.0 / n, false);
+    batch.add(start, direction, INFINITY, lane, 1.0 / n, false, planes);
   }
 }
 
 void add_ambient_rays(const ShadingSpec& shading, const CameraRayJob& job, const Vec3& point, const Vec3& facing,
-                      double offset, int lane, OcclusionBatch& batch) {
+                      double offset, int lane, const SupportPlanes* planes, OcclusionBatch& batch) {
   const int n = shading.ao_samples;
   const Vec3 start = point + offset * facing;
   for (int k = 0; k < n; ++k) {
     double u, v;
     pixel_stratified(job, SamplePurpose::ambient, k, n, u, v);
-    batch.add(start, cosine_hemisphere(facing, u, v), shading.ao_distance, lane, 1.0 / n, true);
+    batch.add(start, cosine_hemisphere(facing, u, v), shading.ao_distance, lane, 1.0 / n, true, planes);
   }
 }
 
@@ -185,6 +194,7 @@ void trace_camera_samples(const RayScene& scene, const ShadingSpec& shading, dou
                           const CameraRayJob* jobs, int count, SampleTracer& tracer, CameraSample* out) {
   FieldRayContext context(tracer.tracers, tracer.stats);
   context.embree.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  context.hit_planes = tracer.hit_planes.data();
   struct PrimaryHit {
     unsigned geometry;
     float t;
@@ -228,7 +238,7 @@ void trace_camera_samples(const RayScene& scene, const ShadingSpec& shading, dou
       met[i] = background_sample(shading, job, s, ground[i]) ? Met::ground : Met::nothing;
       if (met[i] == Met::ground) {
         visibility[i].key = 0.0;
-        add_key_rays(shading, job, ground[i], Vec3::UnitZ(), shadow_offset, i, batch);
+        add_key_rays(shading, job, ground[i], Vec3::UnitZ(), shadow_offset, i, nullptr, batch);
       }
       continue;
     }
@@ -254,15 +264,16 @@ void trace_camera_samples(const RayScene& scene, const ShadingSpec& shading, dou
     s.scalar = surface.scalar;
     s.id = std::int32_t(surface.source);
     const Vec3 x = ray.origin + t * ray.direction;
+    const SupportPlanes* planes = &tracer.hit_planes[std::size_t(i)];
     facing[i] = facing_normal(surface.normal, -ray.direction);
     visibility[i] = {0.0, shading.ao_samples > 0 ? 0.0 : 1.0};
     // A side facing away from the key light is unlit whatever lies between.
     if (shading.shadows && facing[i].dot(shading.light_from.normalized()) > -std::sin(0.5 * shading.light_size * M_PI / 180.0))
-      add_key_rays(shading, job, x, facing[i], shadow_offset, i, batch);
+      add_key_rays(shading, job, x, facing[i], shadow_offset, i, planes, batch);
     else if (!shading.shadows)
       visibility[i].key = 1.0;
     if (shading.ao_samples > 0) {
-      add_ambient_rays(shading, job, x, facing[i], shadow_offset, i, batch);
+      add_ambient_rays(shading, job, x, facing[i], shadow_offset, i, planes, batch);
       batch.note_crowd(surface.crowd);
     }
   }

@@ -27,6 +27,9 @@ struct CameraSample {
 // Per-thread scratch and counters.
 struct SampleTracer {
   FieldRayLanes tracers;
+  // The tangent planes of each camera ray's glyph hit, for its occlusion
+  // rays (support_planes.h).
+  std::array<SupportPlanes, kMaxPacket> hit_planes;
   AmbientRays ambient;
   TraceStats stats;         // camera rays
   TraceStats shadow_stats;  // key-light shadow and ambient occlusion rays

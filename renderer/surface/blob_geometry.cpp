@@ -462,8 +462,8 @@ void BlobGeometry::field_intersect(const RTCIntersectFunctionNArguments* args) {
     const unsigned i = lanes.lane[j], k = lanes.index[j];
     const RayInterval& ray = lanes.rays[j];
     context->t[k] = t[j];
-    const SurfaceSample& surface = context->surface[k] =
-        (*context->tracers)[j].surface_at(self->field_, ray.origin, ray.direction, t[j]);
+    const SurfaceSample& surface = context->surface[k] = (*context->tracers)[j].surface_at(
+        self->field_, ray.origin, ray.direction, t[j], context->hit_planes ? &context->hit_planes[k] : nullptr);
     RTCRayN_tfar(rays, args->N, i) = static_cast<float>(t[j]);
     RTCHitN_Ng_x(hits, args->N, i) = static_cast<float>(surface.normal.x());
     RTCHitN_Ng_y(hits, args->N, i) = static_cast<float>(surface.normal.y());
@@ -479,9 +479,10 @@ void BlobGeometry::field_occluded(const RTCOccludedFunctionNArguments* args) {
   const auto* self = static_cast<const BlobGeometry*>(args->geometryUserPtr);
   auto* context = reinterpret_cast<FieldRayContext*>(args->context);
   const ValidLanes lanes = gather_lanes(args->valid, args->ray, args->N);
+  FieldRay* tracers = context->tracers->data();
+  for (int j = 0; j < lanes.count; ++j) tracers[j].leave_surface(context->origin_planes[lanes.index[j]]);
   double t[kMaxPacket];
-  self->first_crossings(lanes.rays.data(), lanes.count, context->tracers->data(), *context->stats, t,
-                        CrossingQuery::any);
+  self->first_crossings(lanes.rays.data(), lanes.count, tracers, *context->stats, t, CrossingQuery::any);
   for (int j = 0; j < lanes.count; ++j)
     if (t[j] >= 0.0) RTCRayN_tfar(args->ray, args->N, lanes.lane[j]) = -std::numeric_limits<float>::infinity();
 }

@@ -36,6 +36,12 @@ struct FieldRayContext {
   // (valid while that ray's geomID is the field's).
   std::array<double, kMaxPacket> t{};
   std::array<SurfaceSample, kMaxPacket> surface{};
+  // Camera rays: when set, each accepted hit's tangent planes, by ray id
+  // (for the occlusion rays that will leave it, support_planes.h).
+  SupportPlanes* hit_planes = nullptr;
+  // Occlusion rays: the planes of the hit each one leaves, by ray id, or
+  // nullptr.
+  std::array<const SupportPlanes*, kMaxPacket> origin_planes{};
 
   FieldRayContext(FieldRayLanes& scratch, TraceStats& counters) : tracers(&scratch), stats(&counters) {
     rtcInitIntersectContext(&embree);

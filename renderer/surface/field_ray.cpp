@@ -73,6 +73,14 @@ double FieldRay::crowd_peak(double tmin, double last_peak) const {
 double FieldRay::first_crossing(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin,
                                 double tmax, const TraceSettings& settings, TraceStats& stats,
                                 CrossingQuery query) {
+  const double t = nearest_group_crossing(field, origin, direction, tmin, tmax, settings, stats, query);
+  origin_planes_ = nullptr;  // this call's only
+  return t;
+}
+
+double FieldRay::nearest_group_crossing(const BlobField& field, const Vec3& origin, const Vec3& direction,
+                                        double tmin, double tmax, const TraceSettings& settings, TraceStats& stats,
+                                        CrossingQuery query) {
   if (field.groups.empty()) return group_crossing(field, origin, direction, tmin, tmax, settings, stats, query);
   // Each group's surface on its own, the nearest first crossing of any
   // (an `any` query: the first group that has one). A single source's
@@ -213,7 +221,7 @@ double FieldRay::group_crossing(const BlobField& field, const Vec3& origin, cons
   const double end = upper >= 0.0 ? upper : tmax;
   // The exact intersector needs g quadratic along the ray.
   const bool ends_on_surface = upper >= 0.0;
-  const double t = !quadric_ ? shape_trace(field, tmin, end, settings, stats, query)
+  const double t = !quadric_ ? shape_trace(field, origin, direction, tmin, end, settings, stats, query)
                    : settings.intersector == Intersector::exact
                        ? exact_crossing(field, tmin, end, ends_on_surface, stats)
                        : sphere_trace(field, tmin, end, ends_on_surface, settings, stats, query);
@@ -276,8 +284,8 @@ double FieldRay::sphere_trace(const BlobField& field, double tmin, double tmax, 
   return -1.0;
 }
 
-SurfaceSample FieldRay::surface_at(const BlobField& field, const Vec3& origin,
-                                       const Vec3& direction, double t) const {
+SurfaceSample FieldRay::surface_at(const BlobField& field, const Vec3& origin, const Vec3& direction, double t,
+                                   SupportPlanes* planes) const {
   const Vec3 x = origin + t * direction;
   Vec3 gradient = Vec3::Zero();
   double weight = 0.0, best = -1.0, scalar = 0.0;
@@ -320,14 +328,21 @@ SurfaceSample FieldRay::surface_at(const BlobField& field, const Vec3& origin,
     samples_[k] = {&shape_params(field, span.source), scaled_offset(s, shape_matrix(s), x), Vec3::Zero()};
   }
   shape_g_gradients(field.shape, samples_.data(), int(samples_.size()), sample_g_.data(), sample_gradients_.data());
+  const bool keep_planes = planes && boxed;  // in rank order, as contributing_
+  if (keep_planes) {
+    planes->at = x;
+    planes->planes.clear();
+  }
   for (std::size_t c = 0; c < contributing_.size(); ++c) {
     const RaySpan& span = spans[contributing_[c]];
     const BlobSource& s = field.sources[span.source];
     const double g = sample_g_[c];
+    const Vec3 grad_g = shape_matrix(s).transpose() * sample_gradients_[c];
+    // u = √g, ∇u = ∇g/2u (none at a glyph's centre, where u has no plane).
+    if (keep_planes && g > 0.0) planes->planes.push_back({span.rank, std::sqrt(g), grad_g / (2.0 * std::sqrt(g))});
     const double k = kernel_value(field.kernel, g);
     if (k <= 0.0) continue;
     ++sample.crowd;
-    const Vec3 grad_g = shape_matrix(s).transpose() * sample_gradients_[c];
     const Vec3 source_color(s.color[0], s.color[1], s.color[2]);
     const bool strongest = k > best;
     if (strongest) {

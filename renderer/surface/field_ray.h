@@ -15,6 +15,7 @@
 #include "renderer/surface/field_bound.h"
 #include "renderer/surface/ray_span.h"
 #include "renderer/surface/span_bounds.h"
+#include "renderer/surface/support_planes.h"
 #include "renderer/surface/support_sweep.h"
 #include "renderer/surface/trace_stats.h"
 
@@ -79,10 +80,21 @@ class FieldRay {
 
   // Normal and colour at ray parameter t; uses the spans of the last
   // first_crossing() call, which cover every source that is non-zero there.
-  SurfaceSample surface_at(const BlobField& field, const Vec3& origin, const Vec3& direction,
-                           double t) const;
+  // For a shape other than the ellipsoid, `planes` (when given) gets each
+  // of those sources' tangent plane there, for the occlusion rays that
+  // leave the point.
+  SurfaceSample surface_at(const BlobField& field, const Vec3& origin, const Vec3& direction, double t,
+                           SupportPlanes* planes = nullptr) const;
+
+  // The next first_crossing() is an `any` query for a ray that leaves the
+  // surface `planes` describes (nullptr: one that does not), and starts
+  // its walk from them (support_planes.h). Used by that call only.
+  void leave_surface(const SupportPlanes* planes) { origin_planes_ = planes; }
 
  private:
+  // first_crossing() of every group, the nearest.
+  double nearest_group_crossing(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin,
+                                double tmax, const TraceSettings& settings, TraceStats& stats, CrossingQuery query);
   // first_crossing() of one group's sources, the spans.
   double group_crossing(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin, double tmax,
                         const TraceSettings& settings, TraceStats& stats, CrossingQuery query);
@@ -160,10 +172,16 @@ class FieldRay {
   //    last shape_value_at() found (to within a hundredth of the way, or
   //    min_step).
   double proven_below_until(const BlobField& field, double tmax, double min_step) const;
+  //  - A probe at t from the tangent planes of the surface the ray leaves:
+  //    every live span with a plane skipped, its term bounded by its
+  //    plane's line, and only the others evaluated; an upper bound of F
+  //    that complete_probe() makes exact.
+  double plane_probe(const BlobField& field, const SupportPlanes& planes, const Vec3& origin, const Vec3& direction,
+                     double t, TraceStats& stats) const;
   //  - The first crossing in [tmin, tmax] by stepping from proof to proof.
   //    For an `any` query the first probe at or above C is the answer.
-  double shape_trace(const BlobField& field, double tmin, double tmax, const TraceSettings& settings,
-                     TraceStats& stats, CrossingQuery query);
+  double shape_trace(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin, double tmax,
+                     const TraceSettings& settings, TraceStats& stats, CrossingQuery query);
 
   double crowd_peak(double tmin, double last_peak) const;
   double value_at(const BlobField& field, double t, TraceStats& stats) const;
@@ -175,6 +193,7 @@ class FieldRay {
   FieldUpperBound bound_;
   std::vector<double> peaks_;  // each span's largest value on its interval
   bool quadric_ = true;  // the field's shape is the ellipsoid (shape_is_quadric)
+  const SupportPlanes* origin_planes_ = nullptr;  // leave_surface()
   std::vector<ShapeRay> shape_rays_;
   // Each span's u and du/dt where shape_value_at() last evaluated it.
   mutable std::vector<double> u_, du_dt_;

@@ -161,6 +161,49 @@ double FieldRay::sum_live_terms(const BlobField& field) const {
   return f;
 }
 
+double FieldRay::plane_probe(const BlobField& field, const SupportPlanes& planes, const Vec3& origin,
+                             const Vec3& direction, double t, TraceStats& stats) const {
+  probed_at_ = t;
+  live_.clear();
+  live_terms_.clear();
+  skipped_.clear();
+  evaluated_.clear();
+  // The ray's point at t, from the hit the planes were taken at.
+  const Vec3 offset = origin + t * direction - planes.at;
+  // The spans live where the ray starts all begin there, so they come in
+  // rank order, as the planes do: one pass pairs them. (Were they not, a
+  // span would only miss its plane and be evaluated.)
+  auto plane = planes.planes.begin();
+  const auto no_plane = planes.planes.end();
+  std::size_t i = 0;
+  for (; i < spans.size(); ++i) {
+    const RaySpan& s = spans[i];
+    if (t < s.t0) break;
+    if (t > s.t1) continue;
+    live_.push_back(std::uint32_t(i));
+    while (plane != no_plane && plane->rank < s.rank) ++plane;
+    if (plane == no_plane || plane->rank != s.rank) {
+      // Nonzero at the ray's start but not at the hit (a support's edge
+      // passing between them): the ray starts inside it, where nothing
+      // but its value bounds it.
+      evaluated_.push_back(std::uint32_t(live_terms_.size()));
+      live_terms_.emplace_back(0.0, 0.0);
+      continue;
+    }
+    // Its plane along the ray, a tangent in all but name: u ≥ u0 + t' du/dt
+    // for every t'.
+    u_[i] = plane->u + plane->gradient.dot(offset);
+    du_dt_[i] = plane->gradient.dot(direction);
+    tangent_at_[i] = t;
+    skipped_.push_back(std::uint32_t(live_terms_.size()));
+    live_terms_.emplace_back(term_bound(field, i, t, t), 0.0);
+  }
+  first_unbegun_ = i;
+  evaluate_terms(field, evaluated_, t, stats);
+  ++stats.field_evaluations;
+  return sum_live_terms(field);
+}
+
 double FieldRay::complete_probe(const BlobField& field, TraceStats& stats) const {
   evaluate_terms(field, skipped_, probed_at_, stats);
   skipped_.clear();
@@ -294,14 +337,19 @@ double FieldRay::proven_below_until(const BlobField& field, double tmax, double 
   return lo;
 }
 
-double FieldRay::shape_trace(const BlobField& field, double tmin, double tmax, const TraceSettings& settings,
-                             TraceStats& stats, CrossingQuery query) {
+double FieldRay::shape_trace(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin,
+                             double tmax, const TraceSettings& settings, TraceStats& stats, CrossingQuery query) {
   const double c = field.isovalue;
   // Past the last support F is 0: the search for a proof stays short of it.
   double last = tmin;
   for (const RaySpan& s : spans) last = std::max(last, s.t1);
   tmax = std::min(tmax, last);
-  double t = tmin, f = shape_value_at(field, t, stats);
+  // An occlusion ray that leaves a glyph hit starts from the hit's planes;
+  // only if they do not keep F below C at its start is anything evaluated.
+  double t = tmin, f = origin_planes_ && query == CrossingQuery::any
+                           ? plane_probe(field, *origin_planes_, origin, direction, t, stats)
+                           : shape_value_at(field, t, stats);
+  if (f >= c && !skipped_.empty()) f = complete_probe(field, stats);
   if (f >= c) return t;
   for (int steps = 0;;) {
     const double reach = proven_below_until(field, tmax, settings.min_step);

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <random>
+#include <tuple>
 
 #include "renderer/render/ray_scene.h"
 #include "renderer/surface/blob_geometry.h"
@@ -216,17 +217,31 @@ BlobField superquadric_crowd(int count, double sharpness, Blend blend, GlyphShap
   return make_blob_field(glyphs, colors, 1.0, KernelKind::wyvill, blend, 0.5, shape, sharpness);
 }
 
+// A superquadric_crowd() of 30 glyphs of sharpness 3 and its span BVH,
+// traced by sphere tracing (the only way for these shapes) with steps down
+// to 10⁻⁷.
+struct TracedCrowd {
+  TracedCrowd(Blend blend, GlyphShape shape)
+      : field(superquadric_crowd(30, 3.0, blend, shape)), blobs(device.get(), field, sphere_tracing()) {}
+  static TraceSettings sphere_tracing() {
+    TraceSettings settings;
+    settings.intersector = Intersector::sphere;
+    settings.min_step = 1e-7;
+    return settings;
+  }
+  const BlobField field;
+  const TraceSettings settings = sphere_tracing();
+  const EmbreeDevice device;
+  const BlobGeometry blobs;
+};
+
 TEST(GlyphShapes, TracerFindsEveryCrossingDenseSamplingFinds) {
   for (const auto& [shape, blend] : {std::pair{GlyphShape::superquadric, Blend::sum}, {GlyphShape::superquadric, Blend::max},
                                      {GlyphShape::signed_superquadric, Blend::sum}, {GlyphShape::signed_superquadric, Blend::max}}) {
     SCOPED_TRACE(std::string(shape == GlyphShape::superquadric ? "superquadric " : "signed ") +
                  (blend == Blend::sum ? "sum" : "max"));
-    const BlobField field = superquadric_crowd(30, 3.0, blend, shape);
-    TraceSettings settings;
-    settings.intersector = Intersector::sphere;
-    settings.min_step = 1e-7;
-    const EmbreeDevice device;
-    const BlobGeometry blobs(device.get(), field, settings);
+    const TracedCrowd crowd(blend, shape);
+    const auto& [field, settings, blobs] = std::tie(crowd.field, crowd.settings, crowd.blobs);
     std::mt19937 rng(17);
     std::uniform_real_distribution<double> u(-0.4, 0.4);
     std::normal_distribution<double> n;
@@ -273,6 +288,65 @@ TEST(GlyphShapes, TracerFindsEveryCrossingDenseSamplingFinds) {
     }
     EXPECT_GT(hits, 40);
     EXPECT_GE(agreed, hits - 3);
+  }
+}
+
+// An occlusion ray that leaves a glyph hit starts its walk from the hit's
+// tangent planes (support_planes.h) instead of evaluating the sources
+// around its start: the same answer for every ray, blocked or not, with
+// fewer gauges. A plane placed wrongly (its offset from the hit taken the
+// wrong way, or a gradient not the source's) overstates how far the
+// sources stay below C, and rays that the sources block come out free.
+TEST(GlyphShapes, OcclusionRaysFromAHitAnswerTheSameFromItsPlanes) {
+  for (const GlyphShape shape : {GlyphShape::superquadric, GlyphShape::signed_superquadric}) {
+    SCOPED_TRACE(shape == GlyphShape::superquadric ? "superquadric" : "signed");
+    const TracedCrowd crowd(Blend::sum, shape);
+    const auto& [field, settings, blobs] = std::tie(crowd.field, crowd.settings, crowd.blobs);
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<double> u(-0.4, 0.4);
+    std::normal_distribution<double> n;
+    int hit_points = 0, blocked = 0, free = 0;
+    std::uint64_t gauges_without = 0, gauges_with = 0;
+    for (int r = 0; r < 60; ++r) {
+      const Vec3 o = 3.0 * Vec3(n(rng), n(rng), n(rng)).normalized();
+      const Vec3 d = (Vec3(u(rng), u(rng), u(rng)) - o).normalized();
+      FieldRay camera;
+      TraceStats stats;
+      const RayInterval whole{o, d, 0.0, 1e30};
+      blobs.collect_spans(&whole, 1, &camera);
+      const double t = camera.spans.empty() ? -1.0 : camera.first_crossing(field, o, d, 0.0, 1e30, settings, stats);
+      if (t < 0.0) continue;
+      ++hit_points;
+      SupportPlanes planes;
+      const Vec3 normal = camera.surface_at(field, o, d, t, &planes).normal;
+      ASSERT_FALSE(planes.planes.empty());
+      // From a shadow offset off the surface, in every direction of the
+      // open side: into the crowd and out of it.
+      const Vec3 start = o + t * d + 1e-4 * normal;
+      for (int k = 0; k < 12; ++k) {
+        Vec3 w = Vec3(n(rng), n(rng), n(rng)).normalized();
+        if (w.dot(normal) < 0.0) w = -w;
+        const RayInterval ray{start, w, 0.0, 1e30};
+        FieldRay without, with;
+        blobs.collect_spans(&ray, 1, &without);
+        if (without.spans.empty()) continue;
+        with.spans = without.spans;
+        TraceStats stats_without, stats_with;
+        const bool by_evaluating =
+            without.first_crossing(field, start, w, 0.0, 1e30, settings, stats_without, CrossingQuery::any) >= 0.0;
+        with.leave_surface(&planes);
+        const bool by_planes =
+            with.first_crossing(field, start, w, 0.0, 1e30, settings, stats_with, CrossingQuery::any) >= 0.0;
+        EXPECT_EQ(by_planes, by_evaluating) << "camera ray " << r << ", occlusion ray " << k;
+        (by_evaluating ? blocked : free) += 1;
+        gauges_without += stats_without.kernel_evaluations;
+        gauges_with += stats_with.kernel_evaluations;
+      }
+    }
+    EXPECT_GT(hit_points, 20);
+    EXPECT_GT(blocked, 50);
+    EXPECT_GT(free, 50);
+    EXPECT_LT(gauges_with, gauges_without);
   }
 }
 

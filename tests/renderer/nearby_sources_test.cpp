@@ -185,8 +185,9 @@ TEST_F(CrowdScene, AmbientRaysGiveTheSameAnswersListedOrOneByOne) {
   AmbientRays with_list, one_by_one;
   TraceStats listed_stats, traversed_stats;
   std::vector<std::uint8_t> listed, traversed;
-  with_list.trace(scene, rays, 100.0, tracer, listed_stats, listed);  // a dense crowd: worth a list
-  one_by_one.trace(scene, rays, 0.0, tracer, traversed_stats, traversed);  // nothing there: one by one
+  const std::vector<const SupportPlanes*> no_planes(rays.size(), nullptr);  // the rays leave no glyph hit
+  with_list.trace(scene, rays, no_planes, 100.0, tracer, listed_stats, listed);  // a dense crowd: worth a list
+  one_by_one.trace(scene, rays, no_planes, 0.0, tracer, traversed_stats, traversed);  // nothing there: one by one
   EXPECT_EQ(listed, traversed);
   EXPECT_EQ(listed_stats.span_queries, 0u);                 // no ray traversed the BVH
   EXPECT_EQ(traversed_stats.span_queries, rays.size());     // every ray did
