@@ -194,7 +194,11 @@ class FieldRay {
   std::vector<double> peaks_;  // each span's largest value on its interval
   bool quadric_ = true;  // the field's shape is the ellipsoid (shape_is_quadric)
   const SupportPlanes* origin_planes_ = nullptr;  // leave_surface()
-  std::vector<ShapeRay> shape_rays_;
+  // Each span's ray (its rate from the start, q0 and v once it is first
+  // evaluated: ray_made_), of the ray o + t d prepare_shape_rays() was given.
+  mutable std::vector<ShapeRay> shape_rays_;
+  mutable std::vector<std::uint8_t> ray_made_;
+  Vec3 ray_origin_ = Vec3::Zero(), ray_direction_ = Vec3::Zero();
   // Each span's u and du/dt where shape_value_at() last evaluated it.
   mutable std::vector<double> u_, du_dt_;
   // Where each span's u and du/dt were found (−∞ before its first).

@@ -31,13 +31,19 @@ namespace {
 constexpr double kSliver = 1.0 / 32.0;
 }  // namespace
 
+namespace {
+// The most a span's u changes per unit along the ray, Lσ√a (glyph_shape.h).
+double span_rate(const BlobField& field, const RaySpan& span) {
+  const ShapeParams& shape = shape_params(field, span.source);
+  return std::sqrt(span.a) * double(shape.bound_scale) * double(shape.lipschitz);
+}
+}  // namespace
+
 FieldRay::ShapeRay FieldRay::shape_ray(const BlobField& field, const RaySpan& span, const Vec3& origin,
                                        const Vec3& direction) const {
   const BlobSource& source = field.sources[span.source];
   const Mat3 w = shape_matrix(source);
-  const ShapeParams& shape = shape_params(field, span.source);
-  return {scaled_offset(source, w, origin), w * direction,
-          std::sqrt(span.a) * double(shape.bound_scale) * double(shape.lipschitz)};
+  return {scaled_offset(source, w, origin), w * direction, span_rate(field, span)};
 }
 
 void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, const Vec3& direction) {
@@ -45,8 +51,10 @@ void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, co
   // In the order the ray enters them, ties in spatial rank order: every
   // sum over the spans is then the same to the bit whatever order the BVH
   // handed them over in, and a sum up to some t stops at the first span
-  // that starts beyond it. The keys are sorted and the spans gathered,
-  // then each one's ray made in its place.
+  // that starts beyond it. The keys are sorted and the spans gathered.
+  // Each span's rate is needed by every proof, its ray only where it is
+  // evaluated: a third of the spans never are (beyond a camera ray's hit,
+  // or bounded all along), and their rays are not made.
   keys_.resize(count);
   for (std::size_t i = 0; i < count; ++i) keys_[i] = {spans[i].t0, spans[i].rank, std::uint32_t(i)};
   std::sort(keys_.begin(), keys_.end(),
@@ -55,7 +63,10 @@ void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, co
   for (std::size_t i = 0; i < count; ++i) sorted_spans_[i] = spans[keys_[i].index];
   spans.swap(sorted_spans_);
   shape_rays_.resize(count);
-  for (std::size_t i = 0; i < count; ++i) shape_rays_[i] = shape_ray(field, spans[i], origin, direction);
+  for (std::size_t i = 0; i < count; ++i) shape_rays_[i].rate = span_rate(field, spans[i]);
+  ray_made_.assign(count, 0);
+  ray_origin_ = origin;
+  ray_direction_ = direction;
   u_.assign(count, 1.0);
   du_dt_.assign(count, 0.0);
   tangent_at_.assign(count, -std::numeric_limits<double>::infinity());
@@ -131,6 +142,10 @@ void FieldRay::evaluate_terms(const BlobField& field, const std::vector<std::uin
   sample_rate_.resize(terms.size());
   for (std::size_t k = 0; k < terms.size(); ++k) {
     const std::uint32_t i = live_[terms[k]];
+    if (!ray_made_[i]) {
+      shape_rays_[i] = shape_ray(field, spans[i], ray_origin_, ray_direction_);
+      ray_made_[i] = 1;
+    }
     const ShapeRay& r = shape_rays_[i];
     samples_[k] = {&shape_params(field, spans[i].source), r.q0 + t * r.v, r.v};
   }
