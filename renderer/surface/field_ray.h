@@ -229,6 +229,9 @@ class FieldRay {
   // the first that begins after it.
   mutable std::vector<std::uint32_t> live_;
   mutable std::size_t first_unbegun_ = 0;
+  // Every span before it ended before the walk's last probe, where the
+  // next probe looks from.
+  std::size_t first_open_ = 0;
   // proven_below_until()'s scratch: the bound's rows and their values.
   mutable SpanBoundRows rows_;
   // prepare_shape_rays()'s scratch for putting the spans in order.

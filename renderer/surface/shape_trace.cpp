@@ -65,6 +65,7 @@ void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, co
   shape_rays_.resize(count);
   for (std::size_t i = 0; i < count; ++i) shape_rays_[i].rate = span_rate(field, spans[i]);
   ray_made_.assign(count, 0);
+  first_open_ = 0;
   ray_origin_ = origin;
   ray_direction_ = direction;
   u_.assign(count, 1.0);
@@ -107,7 +108,7 @@ double FieldRay::shape_value_at(const BlobField& field, double t, TraceStats& st
   live_terms_.clear();
   skipped_.clear();
   evaluated_.clear();
-  std::size_t i = 0;
+  std::size_t i = first_open_;
   for (; i < spans.size(); ++i) {
     const RaySpan& s = spans[i];
     if (t < s.t0) break;  // neither this span nor any after it has begun
@@ -380,6 +381,9 @@ double FieldRay::shape_trace(const BlobField& field, const Vec3& origin, const V
     if (f_next >= c) return query == CrossingQuery::any ? next : refine_shape(field, t, next, f, f_next, stats);
     t = next;
     f = f_next;
+    // No probe goes back before t: the spans in front that ended before
+    // it are not looked at again.
+    while (first_open_ < first_unbegun_ && spans[first_open_].t1 < t) ++first_open_;
   }
 }
 
