@@ -9,7 +9,6 @@
 
 #include <cmath>
 #include <random>
-#include <tuple>
 
 #include "renderer/render/ray_scene.h"
 #include "renderer/surface/blob_geometry.h"
@@ -241,7 +240,6 @@ TEST(GlyphShapes, TracerFindsEveryCrossingDenseSamplingFinds) {
     SCOPED_TRACE(std::string(shape == GlyphShape::superquadric ? "superquadric " : "signed ") +
                  (blend == Blend::sum ? "sum" : "max"));
     const TracedCrowd crowd(blend, shape);
-    const auto& [field, settings, blobs] = std::tie(crowd.field, crowd.settings, crowd.blobs);
     std::mt19937 rng(17);
     std::uniform_real_distribution<double> u(-0.4, 0.4);
     std::normal_distribution<double> n;
@@ -259,27 +257,30 @@ TEST(GlyphShapes, TracerFindsEveryCrossingDenseSamplingFinds) {
       FieldRay ray;
       TraceStats stats;
       const RayInterval whole{o, d, 0.0, 1e30};
-      blobs.collect_spans(&whole, 1, &ray);
+      crowd.blobs.collect_spans(&whole, 1, &ray);
       FieldRay occlusion;  // the same spans, for an occlusion query
       occlusion.spans = ray.spans;
-      const double t = ray.spans.empty() ? -1.0 : ray.first_crossing(field, o, d, 0.0, 1e30, settings, stats);
-      const double expected =
-          sampled_crossing([&](double s) { return field_value(field, o + s * d); }, field.isovalue, 6.0, 12000);
+      const double t =
+          ray.spans.empty() ? -1.0 : ray.first_crossing(crowd.field, o, d, 0.0, 1e30, crowd.settings, stats);
+      const double expected = sampled_crossing([&](double s) { return field_value(crowd.field, o + s * d); },
+                                               crowd.field.isovalue, 6.0, 12000);
       if (expected >= 0.0) ++hits;
       // An occlusion query: blocked exactly when the ray crosses, at a
       // point inside the surface.
       TraceStats any_stats;
-      const double any = occlusion.spans.empty() ? -1.0
-                             : occlusion.first_crossing(field, o, d, 0.0, 1e30, settings, any_stats, CrossingQuery::any);
+      const double any = occlusion.spans.empty()
+                             ? -1.0
+                             : occlusion.first_crossing(crowd.field, o, d, 0.0, 1e30, crowd.settings, any_stats,
+                                                        CrossingQuery::any);
       EXPECT_EQ(any >= 0.0, t >= 0.0) << "ray " << r;
       if (any >= 0.0) {
-        EXPECT_GE(field_value(field, o + any * d), field.isovalue * (1.0 - 1e-9)) << "ray " << r;
+        EXPECT_GE(field_value(crowd.field, o + any * d), crowd.field.isovalue * (1.0 - 1e-9)) << "ray " << r;
       }
       // A sliver thinner than a sample step (5e-4) can fall between
       // samples: then the tracer's crossing must be on the surface.
       if ((t < 0.0) != (expected < 0.0)) {
         ASSERT_GE(t, 0.0) << "ray " << r << ": dense sampling crosses at " << expected << ", the tracer misses";
-        EXPECT_NEAR(field_value(field, o + t * d), field.isovalue, 1e-6) << "ray " << r;
+        EXPECT_NEAR(field_value(crowd.field, o + t * d), crowd.field.isovalue, 1e-6) << "ray " << r;
         continue;
       }
       if (t < 0.0) continue;
@@ -301,7 +302,6 @@ TEST(GlyphShapes, OcclusionRaysFromAHitAnswerTheSameFromItsPlanes) {
   for (const GlyphShape shape : {GlyphShape::superquadric, GlyphShape::signed_superquadric}) {
     SCOPED_TRACE(shape == GlyphShape::superquadric ? "superquadric" : "signed");
     const TracedCrowd crowd(Blend::sum, shape);
-    const auto& [field, settings, blobs] = std::tie(crowd.field, crowd.settings, crowd.blobs);
     std::mt19937 rng(23);
     std::uniform_real_distribution<double> u(-0.4, 0.4);
     std::normal_distribution<double> n;
@@ -313,12 +313,13 @@ TEST(GlyphShapes, OcclusionRaysFromAHitAnswerTheSameFromItsPlanes) {
       FieldRay camera;
       TraceStats stats;
       const RayInterval whole{o, d, 0.0, 1e30};
-      blobs.collect_spans(&whole, 1, &camera);
-      const double t = camera.spans.empty() ? -1.0 : camera.first_crossing(field, o, d, 0.0, 1e30, settings, stats);
+      crowd.blobs.collect_spans(&whole, 1, &camera);
+      const double t =
+          camera.spans.empty() ? -1.0 : camera.first_crossing(crowd.field, o, d, 0.0, 1e30, crowd.settings, stats);
       if (t < 0.0) continue;
       ++hit_points;
       SupportPlanes planes;
-      const Vec3 normal = camera.surface_at(field, o, d, t, &planes).normal;
+      const Vec3 normal = camera.surface_at(crowd.field, o, d, t, &planes).normal;
       ASSERT_FALSE(planes.planes.empty());
       // From a shadow offset off the surface, in every direction of the
       // open side: into the crowd and out of it.
@@ -328,15 +329,17 @@ TEST(GlyphShapes, OcclusionRaysFromAHitAnswerTheSameFromItsPlanes) {
         if (w.dot(normal) < 0.0) w = -w;
         const RayInterval ray{start, w, 0.0, 1e30};
         FieldRay without, with;
-        blobs.collect_spans(&ray, 1, &without);
+        crowd.blobs.collect_spans(&ray, 1, &without);
         if (without.spans.empty()) continue;
         with.spans = without.spans;
         TraceStats stats_without, stats_with;
-        const bool by_evaluating =
-            without.first_crossing(field, start, w, 0.0, 1e30, settings, stats_without, CrossingQuery::any) >= 0.0;
+        const auto blocks = [&](FieldRay& tracer, TraceStats& counts) {
+          return tracer.first_crossing(crowd.field, start, w, 0.0, 1e30, crowd.settings, counts, CrossingQuery::any) >=
+                 0.0;
+        };
+        const bool by_evaluating = blocks(without, stats_without);
         with.leave_surface(&planes);
-        const bool by_planes =
-            with.first_crossing(field, start, w, 0.0, 1e30, settings, stats_with, CrossingQuery::any) >= 0.0;
+        const bool by_planes = blocks(with, stats_with);
         EXPECT_EQ(by_planes, by_evaluating) << "camera ray " << r << ", occlusion ray " << k;
         (by_evaluating ? blocked : free) += 1;
         gauges_without += stats_without.kernel_evaluations;
