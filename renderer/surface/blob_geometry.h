@@ -145,8 +145,8 @@ class BlobGeometry {
   double listed_scale_;  // listed_bounds(): the level radius for a union, else 1
   // What the span BVH's callback asks of each source, worked out once: its
   // spatial rank (spatial_rank.h), its box (source_box) and the level of g_e
-  // inside which it alone reaches C (inner_level_g). Each candidate box
-  // took two divisions for the last two, a tenth of the callback's time.
+  // inside which it alone reaches C (inner_level_g), which took a division
+  // each for every candidate box.
   struct ListedSource {
     double box, g_inner;
     std::uint32_t rank;
