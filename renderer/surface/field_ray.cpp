@@ -339,7 +339,10 @@ SurfaceSample FieldRay::surface_at(const BlobField& field, const Vec3& origin, c
     const double g = sample_g_[c];
     const Vec3 grad_g = shape_matrix(s).transpose() * sample_gradients_[c];
     // u = √g, ∇u = ∇g/2u (none at a glyph's centre, where u has no plane).
-    if (keep_planes && g > 0.0) planes->planes.push_back({span.rank, std::sqrt(g), grad_g / (2.0 * std::sqrt(g))});
+    if (keep_planes && g > 0.0) {
+      const double u = std::sqrt(g);
+      planes->planes.push_back({span.rank, u, grad_g / (2.0 * u)});
+    }
     const double k = kernel_value(field.kernel, g);
     if (k <= 0.0) continue;
     ++sample.crowd;

@@ -153,6 +153,11 @@ class FieldRay {
   //    F (skipped_ lists what was skipped), and all the proofs after it need.
   enum class Probe { exact, bound };
   double shape_value_at(const BlobField& field, double t, TraceStats& stats, Probe probe = Probe::exact) const;
+  //  - What every probe does: the spans live at t, each one skipped with
+  //    the bound k that skip_with(i, k) gives when it returns true, and
+  //    evaluated otherwise; then F and dF/dt summed.
+  template <class SkipWith>
+  double probe_at(const BlobField& field, double t, TraceStats& stats, SkipWith&& skip_with) const;
   //  - The last probe made exact: only the sources it skipped are
   //    evaluated, and F has the bits an exact probe there would give.
   double complete_probe(const BlobField& field, TraceStats& stats) const;

@@ -29,9 +29,7 @@ namespace {
 // A source whose bound stays below this share of C is not evaluated at a
 // probe: the proofs carry it by its bound until it matters.
 constexpr double kSliver = 1.0 / 32.0;
-}  // namespace
 
-namespace {
 // The most a span's u changes per unit along the ray, Lσ√a (glyph_shape.h).
 double span_rate(const BlobField& field, const RaySpan& span) {
   const ShapeParams& shape = shape_params(field, span.source);
@@ -102,7 +100,8 @@ double FieldRay::first_shape_entry(const BlobField& field, const Vec3& origin, c
   return upper;
 }
 
-double FieldRay::shape_value_at(const BlobField& field, double t, TraceStats& stats, Probe probe) const {
+template <class SkipWith>
+double FieldRay::probe_at(const BlobField& field, double t, TraceStats& stats, SkipWith&& skip_with) const {
   probed_at_ = t;
   live_.clear();
   live_terms_.clear();
@@ -114,17 +113,11 @@ double FieldRay::shape_value_at(const BlobField& field, double t, TraceStats& st
     if (t < s.t0) break;  // neither this span nor any after it has begun
     if (t > s.t1) continue;  // outside its support K is 0
     live_.push_back(std::uint32_t(i));
-    if (probe == Probe::bound) {
-      // What the proofs already know of its value here. Not evaluated
-      // again where its tangent rises from here on (past its closest
-      // approach: the tangent bounds it for the rest of the ray) or that
-      // bounds its term to a sliver of C.
-      const double k = term_bound(field, i, t, t);
-      if ((has_tangent(i) && du_dt_[i] >= 0.0) || k <= kSliver * field.isovalue) {
-        skipped_.push_back(std::uint32_t(live_terms_.size()));
-        live_terms_.emplace_back(k, 0.0);
-        continue;
-      }
+    double k;
+    if (skip_with(i, k)) {
+      skipped_.push_back(std::uint32_t(live_terms_.size()));
+      live_terms_.emplace_back(k, 0.0);
+      continue;
     }
     evaluated_.push_back(std::uint32_t(live_terms_.size()));
     live_terms_.emplace_back(0.0, 0.0);
@@ -133,6 +126,18 @@ double FieldRay::shape_value_at(const BlobField& field, double t, TraceStats& st
   evaluate_terms(field, evaluated_, t, stats);
   ++stats.field_evaluations;
   return sum_live_terms(field);
+}
+
+double FieldRay::shape_value_at(const BlobField& field, double t, TraceStats& stats, Probe probe) const {
+  return probe_at(field, t, stats, [&](std::size_t i, double& k) {
+    if (probe != Probe::bound) return false;
+    // What the proofs already know of its value here. Not evaluated
+    // again where its tangent rises from here on (past its closest
+    // approach: the tangent bounds it for the rest of the ray) or that
+    // bounds its term to a sliver of C.
+    k = term_bound(field, i, t, t);
+    return (has_tangent(i) && du_dt_[i] >= 0.0) || k <= kSliver * field.isovalue;
+  });
 }
 
 void FieldRay::evaluate_terms(const BlobField& field, const std::vector<std::uint32_t>& terms, double t,
@@ -179,11 +184,6 @@ double FieldRay::sum_live_terms(const BlobField& field) const {
 
 double FieldRay::plane_probe(const BlobField& field, const SupportPlanes& planes, const Vec3& origin,
                              const Vec3& direction, double t, TraceStats& stats) const {
-  probed_at_ = t;
-  live_.clear();
-  live_terms_.clear();
-  skipped_.clear();
-  evaluated_.clear();
   // The ray's point at t, from the hit the planes were taken at.
   const Vec3 offset = origin + t * direction - planes.at;
   // The spans live where the ray starts all begin there, so they come in
@@ -191,33 +191,20 @@ double FieldRay::plane_probe(const BlobField& field, const SupportPlanes& planes
   // span would only miss its plane and be evaluated.)
   auto plane = planes.planes.begin();
   const auto no_plane = planes.planes.end();
-  std::size_t i = 0;
-  for (; i < spans.size(); ++i) {
-    const RaySpan& s = spans[i];
-    if (t < s.t0) break;
-    if (t > s.t1) continue;
-    live_.push_back(std::uint32_t(i));
-    while (plane != no_plane && plane->rank < s.rank) ++plane;
-    if (plane == no_plane || plane->rank != s.rank) {
-      // Nonzero at the ray's start but not at the hit (a support's edge
-      // passing between them): the ray starts inside it, where nothing
-      // but its value bounds it.
-      evaluated_.push_back(std::uint32_t(live_terms_.size()));
-      live_terms_.emplace_back(0.0, 0.0);
-      continue;
-    }
+  return probe_at(field, t, stats, [&](std::size_t i, double& k) {
+    while (plane != no_plane && plane->rank < spans[i].rank) ++plane;
+    // Without a plane, nonzero at the ray's start but not at the hit (a
+    // support's edge passing between them): the ray starts inside it,
+    // where nothing but its value bounds it.
+    if (plane == no_plane || plane->rank != spans[i].rank) return false;
     // Its plane along the ray, a tangent in all but name: u ≥ u0 + t' du/dt
     // for every t'.
     u_[i] = plane->u + plane->gradient.dot(offset);
     du_dt_[i] = plane->gradient.dot(direction);
     tangent_at_[i] = t;
-    skipped_.push_back(std::uint32_t(live_terms_.size()));
-    live_terms_.emplace_back(term_bound(field, i, t, t), 0.0);
-  }
-  first_unbegun_ = i;
-  evaluate_terms(field, evaluated_, t, stats);
-  ++stats.field_evaluations;
-  return sum_live_terms(field);
+    k = term_bound(field, i, t, t);
+    return true;
+  });
 }
 
 double FieldRay::complete_probe(const BlobField& field, TraceStats& stats) const {
