@@ -52,16 +52,24 @@ Box3 influence_bounds(const BlobField& field, std::size_t i) {
   // length (W_s's rows are orthogonal), so its half-extent along world
   // axis j is the length of the j-th components of those semi-axis
   // vectors; the cube's, whose half-edges are the semi-axes over σ, is
-  // their sum.
+  // their sum; the cylinder's (support_cylinder_radius), the axis's
+  // component plus its radius times the length of the other two.
   const BlobSource& s = field.sources[i];
-  Vec3 ellipsoid = Vec3::Zero(), cube = Vec3::Zero();
+  Vec3 semi_axes[3], ellipsoid = Vec3::Zero(), cube = Vec3::Zero();
   for (int k = 0; k < 3; ++k) {
     const Vec3 row(s.w[3 * k], s.w[3 * k + 1], s.w[3 * k + 2]);
-    const Vec3 semi_axis = row / row.squaredNorm();
-    ellipsoid += semi_axis.cwiseAbs2();
-    cube += semi_axis.cwiseAbs();
+    semi_axes[k] = row / row.squaredNorm();
+    ellipsoid += semi_axes[k].cwiseAbs2();
+    cube += semi_axes[k].cwiseAbs();
   }
-  const Vec3 half = ellipsoid.cwiseSqrt().cwiseMin(cube / double(shape_params(field, i).bound_scale));
+  Vec3 half = ellipsoid.cwiseSqrt();
+  if (!shape_is_quadric(field.shape)) {
+    const ShapeParams& shape = field.shapes[i];
+    const int a = (shape.axis + 1) % 3, b = (shape.axis + 2) % 3;
+    const Vec3 across = (semi_axes[a].cwiseAbs2() + semi_axes[b].cwiseAbs2()).cwiseSqrt();
+    const Vec3 cylinder = semi_axes[shape.axis].cwiseAbs() + support_cylinder_radius(shape) * across;
+    half = half.cwiseMin(cube.cwiseMin(cylinder) / double(shape.bound_scale));
+  }
   const Vec3 c(s.centre[0], s.centre[1], s.centre[2]);
   return {c - half, c + half};
 }

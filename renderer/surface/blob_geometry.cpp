@@ -126,7 +126,7 @@ std::vector<BlobGeometry::ListedSource> BlobGeometry::listed_sources(const BlobF
   const double g_level = level_g(field.kernel, field.isovalue);
   std::vector<ListedSource> listed(field.sources.size());
   for (std::size_t i = 0; i < listed.size(); ++i)
-    listed[i] = {source_box(field, i), inner_level_g(field, std::uint32_t(i), g_level), ranks[i]};
+    listed[i] = {source_support(field, i), inner_level_g(field, std::uint32_t(i), g_level), ranks[i]};
   return listed;
 }
 
@@ -206,14 +206,15 @@ void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
   RTCRayN* embree_rays = RTCRayHitN_RayN(args->rayhit, n);
   const BlobSource& source = query->field->sources[args->primID];
   const ListedSource& listed = self->listed_[args->primID];
-  const double box = listed.box, g_inner = listed.g_inner;
+  const ShapeSupport& support = listed.support;
+  const double g_inner = listed.g_inner;
   const std::uint32_t rank = listed.rank;
   const RayLanes& r = query->rays;
   if (n == 1) {  // a lone ray (rtcIntersect1): no lanes to gather
     ++query->candidates;
     const unsigned k = checked_ray_index(embree_rays, 1, 0);
     RaySpan span;
-    if (ray_span(source, args->primID, rank, r.origin(int(k)), r.direction(int(k)), r.tmin[k], r.tmax[k], span, box)) {
+    if (ray_span(source, args->primID, rank, r.origin(int(k)), r.direction(int(k)), r.tmin[k], r.tmax[k], span, support)) {
       query->tracers[k].spans.push_back(span);
       if (span.g_min < g_inner) prune_beyond_entry(*query, span, g_inner, k, embree_rays, 1, 0);
     }
@@ -245,7 +246,7 @@ void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
   unsigned entered;
   int offset;
   if (in_place) {
-    entered = (query->ray_spans(source, box, r, first, int(n), spans) >> first) & valid;
+    entered = (query->ray_spans(source, support, r, first, int(n), spans) >> first) & valid;
     offset = first;
   } else {
     RayLanes gathered;
@@ -253,7 +254,7 @@ void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
       const unsigned k = valid & (1u << i) ? index[i] : index[lowest];  // idle lanes repeat a real ray
       gathered.set(int(i), r.origin(int(k)), r.direction(int(k)), r.tmin[k], r.tmax[k]);
     }
-    entered = query->ray_spans(source, box, gathered, 0, int(n), spans) & valid;
+    entered = query->ray_spans(source, support, gathered, 0, int(n), spans) & valid;
     offset = 0;
   }
   for (unsigned rest = entered; rest; rest &= rest - 1) {

@@ -144,11 +144,12 @@ class BlobGeometry {
   double first_window_;  // length of the first query window along a ray
   double listed_scale_;  // listed_bounds(): the level radius for a union, else 1
   // What the span BVH's callback asks of each source, worked out once: its
-  // spatial rank (spatial_rank.h), its box (source_box) and the level of g_e
-  // inside which it alone reaches C (inner_level_g), which took a division
-  // each for every candidate box.
+  // spatial rank (spatial_rank.h), its box and cylinder (source_support) and
+  // the level of g_e inside which it alone reaches C (inner_level_g), which
+  // took a division each for every candidate box.
   struct ListedSource {
-    double box, g_inner;
+    ShapeSupport support;
+    double g_inner;
     std::uint32_t rank;
   };
   std::vector<ListedSource> listed_;

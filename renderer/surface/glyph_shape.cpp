@@ -218,6 +218,10 @@ double shape_entry(GlyphShape shape, const ShapeParams& params, const Vec3& q0, 
   return -1.0;  // not settled: no bound from this source, which is always safe
 }
 
+double support_cylinder_radius(const ShapeParams& params) {
+  return (1.0 + 1e-6) * std::pow(2.0, 0.5 * std::max(0.0, 1.0 - double(params.alpha)));
+}
+
 ShapeParams signed_params(const Vec3& radii, const Vec3& eigenvalues, double sharpness, SignConvention sign) {
   ShapeParams s = superquadric_params(radii, sharpness);
   add_points(s, eigenvalues, sign);

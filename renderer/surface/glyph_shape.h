@@ -9,8 +9,9 @@
 // boxes, the peaks and the running polynomial bound of F (field_bound.h)
 // are all computed from g_e: they are upper bounds of the influence for
 // every shape, and exact for the ellipsoid; a shape's spans are then
-// narrowed to the box |q_s,k| ≤ 1/σ that holds its support (ray_span.h),
-// and its boxes are that box's where tighter (influence_bounds). What must
+// narrowed to the box |q_s,k| ≤ 1/σ and the cylinder about its symmetry
+// axis that hold its support (ray_span.h, support_cylinder_radius), and
+// its boxes are theirs where tighter (influence_bounds). What must
 // be exact (F itself, its gradient, the slope bound of sphere tracing)
 // asks the shape here.
 //
@@ -81,6 +82,16 @@ struct ShapeParams {
   // with a point.
   float lipschitz = 1.0f;
 };
+// The radius of the cylinder about the symmetry axis that holds a
+// superquadric's support, in the glyph's own frame q = σ q_s: N ≤ 1 needs
+// the equatorial ‖(q_a, q_b)‖_{2/α} ≤ 1, and a 2/α-norm of a pair is at
+// least 2^{α/2 − 1/2} times its length when α ≤ 1 (at least the length
+// when α > 1), so ‖(q_a, q_b)‖₂ ≤ 2^{max(0, 1 − α)/2}. Kindlmann's glyphs
+// are round about their axis (α near 1): a ray past the corners of the
+// cube's cross-section, a fifth of it, meets nothing. A signed glyph's
+// u ≥ N keeps it inside the same cylinder. Rounded up by 10⁻⁶, as σ.
+double support_cylinder_radius(const ShapeParams& params);
+
 // Whether g is the quadratic g_e itself: F is then a polynomial along a ray
 // for the polynomial kernels (the exact intersector), one source alone is
 // entered where g_e reaches its level, and a source past its closest

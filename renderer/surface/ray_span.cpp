@@ -20,6 +20,7 @@ struct ScaledRay {
   double a;        // |W d|²
   double half_b;   // (W d)·(W (o − c))
   double a_g_min;  // a · g at the closest approach
+  double cross[3];  // Wp × Wd: a_g_min is its squared length
   bool line_enters() const { return (a > 0.0) & (a_g_min < a); }  // false for NaN and a = 0
 };
 
@@ -42,7 +43,8 @@ inline ScaledRay scaled_ray(const double (&w)[9], double cx, double cy, double c
           {wd0, wd1, wd2},
           wd0 * wd0 + wd1 * wd1 + wd2 * wd2,
           wd0 * wp0 + wd1 * wp1 + wd2 * wp2,
-          x0 * x0 + x1 * x1 + x2 * x2};
+          x0 * x0 + x1 * x1 + x2 * x2,
+          {x0, x1, x2}};
 }
 
 struct LaneSpan {
@@ -82,12 +84,47 @@ inline void clip_to_box(const ScaledRay& r, double box, LaneSpan& span) {
   span.enters = span.enters & !outside & (span.t0 <= span.t1);
 }
 
+// And the span narrowed to the cylinder ‖q_⊥‖ ≤ radius about the symmetry
+// axis: g's own quadratic in the two components across it (across[k] = 1
+// for those, 0 for the axis's), its closest approach from the axis's
+// component of Wp × Wd as g's is from the whole (Lagrange's identity in
+// the plane across). A ray along the axis is inside everywhere or nowhere.
+inline void clip_to_cylinder(const ScaledRay& r, double radius, const double (&across)[3], LaneSpan& span) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  double a = 0.0, half_b = 0.0, p = 0.0, x = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    a += across[k] * (r.wd[k] * r.wd[k]);
+    half_b += across[k] * (r.wd[k] * r.wp[k]);
+    p += across[k] * (r.wp[k] * r.wp[k]);
+    x += (1.0 - across[k]) * r.cross[k];
+  }
+  const double radius2 = radius * radius;
+  const bool parallel = a == 0.0;
+  const double inv_a = 1.0 / a, tc = -half_b * inv_a, g_min = x * x * inv_a;
+  const double reach = (radius2 - g_min) * inv_a;
+  const double half_width = std::sqrt(reach > 0.0 ? reach : 0.0);
+  const double lo = parallel ? -inf : tc - half_width, hi = parallel ? inf : tc + half_width;
+  const bool outside = (parallel & (p > radius2)) | (!parallel & (g_min > radius2));
+  span.t0 = span.t0 < lo ? lo : span.t0;
+  span.t1 = hi < span.t1 ? hi : span.t1;
+  span.enters = span.enters & !outside & (span.t0 <= span.t1);
+}
+
+// 1 for the components across the symmetry axis, 0 for the axis's.
+inline void components_across(int axis, double (&across)[3]) {
+  for (int k = 0; k < 3; ++k) across[k] = k == axis ? 0.0 : 1.0;
+}
+
 template <bool Boxed>
-inline LaneSpan span_on_lane(const double (&w)[9], double box, double cx, double cy, double cz, double ox, double oy,
-                             double oz, double dx, double dy, double dz, double tmin, double tmax) {
+inline LaneSpan span_on_lane(const double (&w)[9], double box, double radius, const double (&across)[3], double cx,
+                             double cy, double cz, double ox, double oy, double oz, double dx, double dy, double dz,
+                             double tmin, double tmax) {
   const ScaledRay r = scaled_ray(w, cx, cy, cz, ox, oy, oz, dx, dy, dz);
   LaneSpan span = finish_span(r, tmin, tmax);
-  if (Boxed) clip_to_box(r, box, span);
+  if (Boxed) {
+    clip_to_box(r, box, span);
+    clip_to_cylinder(r, radius, across, span);
+  }
   return span;
 }
 
@@ -104,16 +141,19 @@ inline void store(const LaneSpan& span, SpanLanes& spans, int i) {
 // inlined into allows (below): the same operations in the same order on
 // every lane, so every variant gives the same bits.
 template <bool Boxed>
-__attribute__((always_inline)) inline unsigned ray_spans_lanes(const BlobSource& s, double box,
+__attribute__((always_inline)) inline unsigned ray_spans_lanes(const BlobSource& s, const ShapeSupport& support,
                                                                const RayLanes& __restrict rays, int first, int count,
                                                                SpanLanes& __restrict spans) {
   const double w[9] = {s.w[0], s.w[1], s.w[2], s.w[3], s.w[4], s.w[5], s.w[6], s.w[7], s.w[8]};
   const double cx = s.centre[0], cy = s.centre[1], cz = s.centre[2];
+  const double box = support.box, radius = support.radius;
+  double across[3];
+  components_across(support.axis, across);
   std::int64_t inside[kMaxPacket];  // as wide as a double, so the loop keeps one vector width
   const int end = first + count;
   for (int i = first; i < end; ++i) {
-    const LaneSpan span = span_on_lane<Boxed>(w, box, cx, cy, cz, rays.ox[i], rays.oy[i], rays.oz[i], rays.dx[i],
-                                              rays.dy[i], rays.dz[i], rays.tmin[i], rays.tmax[i]);
+    const LaneSpan span = span_on_lane<Boxed>(w, box, radius, across, cx, cy, cz, rays.ox[i], rays.oy[i], rays.oz[i],
+                                              rays.dx[i], rays.dy[i], rays.dz[i], rays.tmin[i], rays.tmax[i]);
     store(span, spans, i);
     inside[i] = span.enters;
   }
@@ -133,8 +173,9 @@ __attribute__((always_inline)) inline unsigned source_spans_lanes(const SourceLa
   for (int i = 0; i < kMaxPacket; ++i) {  // all lanes: unused ones hold a source that never matches
     const double w[9] = {sources.w[0][i], sources.w[1][i], sources.w[2][i], sources.w[3][i], sources.w[4][i],
                          sources.w[5][i], sources.w[6][i], sources.w[7][i], sources.w[8][i]};
-    const LaneSpan span = span_on_lane<Boxed>(w, sources.box[i], sources.c[0][i], sources.c[1][i], sources.c[2][i],
-                                              ox, oy, oz, dx, dy, dz, tmin, tmax);
+    const double across[3] = {sources.across[0][i], sources.across[1][i], sources.across[2][i]};
+    const LaneSpan span = span_on_lane<Boxed>(w, sources.box[i], sources.radius[i], across, sources.c[0][i],
+                                              sources.c[1][i], sources.c[2][i], ox, oy, oz, dx, dy, dz, tmin, tmax);
     store(span, spans, i);
     inside[i] = span.enters;
   }
@@ -147,10 +188,10 @@ __attribute__((always_inline)) inline unsigned source_spans_lanes(const SourceLa
 // (isa_variants.h).
 #define HSB_SPAN_KERNELS(suffix, target_isa)                                                                      \
   template <bool Boxed>                                                                                           \
-  __attribute__((target(target_isa))) unsigned ray_spans_##suffix(const BlobSource& s, double box,               \
-                                                                  const RayLanes& __restrict rays, int first,    \
-                                                                  int count, SpanLanes& __restrict spans) {      \
-    return ray_spans_lanes<Boxed>(s, box, rays, first, count, spans);                                             \
+  __attribute__((target(target_isa))) unsigned ray_spans_##suffix(                                               \
+      const BlobSource& s, const ShapeSupport& support, const RayLanes& __restrict rays, int first, int count,    \
+      SpanLanes& __restrict spans) {                                                                              \
+    return ray_spans_lanes<Boxed>(s, support, rays, first, count, spans);                                         \
   }                                                                                                               \
   template <bool Boxed>                                                                                           \
   __attribute__((target(target_isa))) unsigned source_spans_##suffix(const SourceLanes& __restrict sources,       \
@@ -175,9 +216,10 @@ const SpanKernels& span_kernels(InstructionSet isa) { return kKernels[std::size_
 
 // The span BVH's callback spends most of a render here, one source against
 // a packet of rays.
-unsigned ray_spans(const BlobSource& s, double box, const RayLanes& rays, int first, int count, SpanLanes& spans) {
+unsigned ray_spans(const BlobSource& s, const ShapeSupport& support, const RayLanes& rays, int first, int count,
+                   SpanLanes& spans) {
   const SpanKernels& kernels = span_kernels(active_isa());
-  return (box == kNoBox ? kernels.ray_spans : kernels.ray_spans_boxed)(s, box, rays, first, count, spans);
+  return (support.bounded() ? kernels.ray_spans_boxed : kernels.ray_spans)(s, support, rays, first, count, spans);
 }
 
 unsigned source_spans(const SourceLanes& sources, const Vec3& o, const Vec3& d, double tmin, double tmax,
@@ -187,14 +229,19 @@ unsigned source_spans(const SourceLanes& sources, const Vec3& o, const Vec3& d, 
 }
 
 bool ray_span(const BlobSource& s, std::uint32_t index, std::uint32_t rank, const Vec3& o, const Vec3& d, double tmin,
-              double tmax, RaySpan& span, double box) {
+              double tmax, RaySpan& span, const ShapeSupport& support) {
   // Scalar: a lone ray would pay more for the packet version's dispatch and
   // lane set-up than it saves.
   const double w[9] = {s.w[0], s.w[1], s.w[2], s.w[3], s.w[4], s.w[5], s.w[6], s.w[7], s.w[8]};
   const ScaledRay r = scaled_ray(w, s.centre[0], s.centre[1], s.centre[2], o.x(), o.y(), o.z(), d.x(), d.y(), d.z());
   if (!r.line_enters()) return false;
   LaneSpan lane = finish_span(r, tmin, tmax);
-  if (lane.enters && box != kNoBox) clip_to_box(r, box, lane);
+  if (lane.enters && support.bounded()) {
+    double across[3];
+    components_across(support.axis, across);
+    clip_to_box(r, support.box, lane);
+    clip_to_cylinder(r, support.radius, across, lane);
+  }
   if (!lane.enters) return false;
   span = RaySpan{lane.t0, lane.t1, lane.a, lane.t_c, lane.g_min, index, rank};
   return true;

@@ -51,16 +51,29 @@ struct RayLanes {
 
 // A shape other than the ellipsoid has its support inside the box
 // |q_k| ≤ box (each k) of the stored frame, box = 1/σ (glyph_shape.h), much
-// tighter than the bounding ellipsoid for a sharp glyph. The span
-// functions below narrow each span to that box when given one: a ray
-// through the ellipsoid's corners past the box collects nothing, which
-// for sharp glyphs is a third to a half of what the ellipsoids gather.
-// kNoBox: the support is the ellipsoid's own.
+// tighter than the bounding ellipsoid for a sharp glyph, and inside the
+// cylinder ‖q_⊥‖ ≤ radius about its symmetry axis, q_⊥ the two other
+// components and radius = support_cylinder_radius/σ: a round glyph leaves
+// the corners of the box's cross-section empty. The span functions below
+// narrow each span to both when given them: a ray through the ellipsoid's
+// corners past the box collects nothing, which for sharp glyphs is a third
+// to a half of what the ellipsoids gather, and a ray past the cylinder
+// nothing either. kNoBox: the support is the ellipsoid's own.
 constexpr double kNoBox = std::numeric_limits<double>::infinity();
 
-// Source i's box: 1/σ for a shape other than the ellipsoid, else kNoBox.
-inline double source_box(const BlobField& field, std::size_t i) {
-  return shape_is_quadric(field.shape) ? kNoBox : 1.0 / double(field.shapes[i].bound_scale);
+struct ShapeSupport {
+  double box = kNoBox;     // |q_k| ≤ box on every axis
+  double radius = kNoBox;  // ‖q_⊥‖ ≤ radius across `axis`
+  int axis = 2;            // the symmetry axis, a row of W
+  bool bounded() const { return box != kNoBox; }
+};
+
+// Source i's box and cylinder, or none for the ellipsoid.
+inline ShapeSupport source_support(const BlobField& field, std::size_t i) {
+  if (shape_is_quadric(field.shape)) return {};
+  const ShapeParams& shape = field.shapes[i];
+  const double box = 1.0 / double(shape.bound_scale);
+  return {box, support_cylinder_radius(shape) * box, shape.axis};
 }
 
 // The spans of one source on lanes [first, first + count) of `rays`, in the
@@ -84,8 +97,9 @@ struct SpanLanes {
     s.source = source, s.rank = rank;
   }
 };
-// `box`: the source's, or kNoBox.
-unsigned ray_spans(const BlobSource& s, double box, const RayLanes& rays, int first, int count, SpanLanes& spans);
+// `support`: the source's (source_support).
+unsigned ray_spans(const BlobSource& s, const ShapeSupport& support, const RayLanes& rays, int first, int count,
+                   SpanLanes& spans);
 
 // Up to kMaxPacket sources as structure of arrays, W's rows, the centres
 // and the boxes in double: one ray is tested against all of them in SIMD
@@ -93,11 +107,20 @@ unsigned ray_spans(const BlobSource& s, double box, const RayLanes& rays, int fi
 struct SourceLanes {
   alignas(64) double w[9][kMaxPacket];
   alignas(64) double c[3][kMaxPacket];
-  alignas(64) double box[kMaxPacket];  // read when `boxed`
+  // Read when `boxed`: each source's ShapeSupport, its axis as the
+  // components across it (1 for the two across the axis, 0 for the axis).
+  alignas(64) double box[kMaxPacket], radius[kMaxPacket];
+  alignas(64) double across[3][kMaxPacket];
   std::uint32_t index[kMaxPacket];
   std::uint32_t rank[kMaxPacket];
   int count = 0;  // lanes [0, count) hold sources
-  bool boxed = false;  // whether the sources' spans are narrowed to their boxes
+  bool boxed = false;  // whether the sources' spans are narrowed to their boxes and cylinders
+
+  // Lane `lane`'s support.
+  void set_support(int lane, const ShapeSupport& support) {
+    box[lane] = support.box, radius[lane] = support.radius;
+    for (int k = 0; k < 3; ++k) across[k][lane] = k == support.axis ? 0.0 : 1.0;
+  }
 };
 
 // The spans of the ray o + t d, t ∈ [tmin, tmax], on the sources of
@@ -110,8 +133,8 @@ unsigned source_spans(const SourceLanes& sources, const Vec3& o, const Vec3& d, 
 // with boxes; ray_spans() and source_spans() call those of active_isa().
 // Every variant gives the same bits (the tests hold them to it).
 struct SpanKernels {
-  using RaySpans = unsigned (*)(const BlobSource& s, double box, const RayLanes& rays, int first, int count,
-                                SpanLanes& spans);
+  using RaySpans = unsigned (*)(const BlobSource& s, const ShapeSupport& support, const RayLanes& rays, int first,
+                                int count, SpanLanes& spans);
   using SourceSpans = unsigned (*)(const SourceLanes& sources, const Vec3& o, const Vec3& d, double tmin,
                                    double tmax, SpanLanes& spans);
   RaySpans ray_spans, ray_spans_boxed;
@@ -121,8 +144,8 @@ const SpanKernels& span_kernels(InstructionSet isa);
 
 // The same for one ray: fills `span` and returns true when the ray enters
 // the support of `s` (source number `index`, spatial rank `rank`, its box
-// `box`).
+// and cylinder `support`).
 bool ray_span(const BlobSource& s, std::uint32_t index, std::uint32_t rank, const Vec3& o, const Vec3& d, double tmin,
-              double tmax, RaySpan& span, double box = kNoBox);
+              double tmax, RaySpan& span, const ShapeSupport& support = {});
 
 }  // namespace hsb

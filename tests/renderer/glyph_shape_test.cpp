@@ -86,7 +86,8 @@ std::vector<std::pair<GlyphShape, ShapeParams>> sample_shapes() {
 
 // The promises the tracer's bounds rest on, at random points of every
 // direction and scale: g_e ≤ g (the bounding ellipsoid), u ≥ max|q_k| (the
-// cube), u ≤ Lσ√g_e (the ball inside, whose entry proves F ≥ C:
+// cube), u ≥ ‖q_⊥‖/ρ (the cylinder about the symmetry axis,
+// support_cylinder_radius), u ≤ Lσ√g_e (the ball inside, whose entry proves F ≥ C:
 // inner_level_g) and |∇u| ≤ Lσ in the stored frame (the rate of a source
 // not yet reached), with the analytic gradient matching finite differences (a
 // signed glyph's crease, where two branches meet, aside).
@@ -104,6 +105,10 @@ TEST(GlyphShapes, KeepTheBoundsTheTracerRestsOn) {
       ASSERT_LE(g_e, g * (1.0 + 1e-9)) << "α " << s.alpha << " β " << s.beta;
       const double u = std::sqrt(g);
       ASSERT_GE(u * (1.0 + 1e-9), sigma * q.cwiseAbs().maxCoeff());
+      Vec3 across = q;
+      across[s.axis] = 0.0;
+      ASSERT_GE(u * support_cylinder_radius(s) * (1.0 + 1e-9), sigma * across.norm())
+          << "α " << s.alpha << " β " << s.beta;
       ASSERT_LE(u, sigma * s.lipschitz * std::sqrt(g_e) * (1.0 + 1e-9)) << "α " << s.alpha << " β " << s.beta;
       // ∇u = ∇g / (2u).
       ASSERT_LE(grad.norm() / (2.0 * u), sigma * s.lipschitz * (1.0 + 1e-9));
@@ -121,6 +126,69 @@ TEST(GlyphShapes, KeepTheBoundsTheTracerRestsOn) {
     }
   }
   EXPECT_LT(mismatched, gradients / 1000);
+}
+
+// The cylinder is the least about the axis, not only a bound: the glyph's
+// equator reaches it (at 45° between its other axes, where the equatorial
+// norm is smallest), so it cuts no more than it may and no less.
+TEST(Superquadric, SupportCylinderTouchesTheEquator) {
+  for (const auto& sample : sample_shapes()) {
+    ShapeParams s = sample.second;
+    s.pointed = 0;  // N itself: a signed glyph's points only raise u (u ≥ N)
+    double largest = 0.0;
+    for (int j = 0; j < 360; ++j) {
+      Vec3 q = Vec3::Zero();
+      q[(s.axis + 1) % 3] = std::cos(M_PI * j / 180.0), q[(s.axis + 2) % 3] = std::sin(M_PI * j / 180.0);
+      largest = std::max(largest, 1.0 / std::sqrt(shape_g(GlyphShape::superquadric, s, q / double(s.bound_scale))));
+    }
+    EXPECT_LE(largest, support_cylinder_radius(s)) << "α " << s.alpha;
+    EXPECT_GE(largest, support_cylinder_radius(s) * (1.0 - 1e-5)) << "α " << s.alpha;
+  }
+}
+
+// Every point of every glyph's support, turned any way in the world, lies
+// in its influence box (the tightest of the ellipsoid's, the cube's and
+// the cylinder's boxes), and a ray through it collects a span that holds
+// it: no part of a glyph is cut off by the bounds that make rays cheap.
+TEST(GlyphShapes, InfluenceBoxesAndSpansHoldTheWholeSupport) {
+  std::mt19937 rng(23);
+  std::normal_distribution<double> n;
+  std::uniform_real_distribution<double> u(0.05, 1.0);
+  for (GlyphShape shape : {GlyphShape::superquadric, GlyphShape::signed_superquadric}) {
+    std::vector<GlyphSource> glyphs(60);
+    for (GlyphSource& g : glyphs) {
+      g.centre = Vec3(n(rng), n(rng), n(rng));
+      g.axes = Eigen::Quaterniond(n(rng), n(rng), n(rng), n(rng)).normalized().toRotationMatrix();
+      g.radii = Vec3(u(rng), u(rng), u(rng));
+      g.eigenvalues = g.radii.cwiseProduct(Vec3(n(rng), n(rng), n(rng)).cwiseSign());
+    }
+    const BlobField field = make_blob_field(glyphs, std::vector<std::array<float, 3>>(glyphs.size(), {1, 1, 1}), 1.5,
+                                            KernelKind::wyvill, Blend::sum, 0.5, shape, 4.0);
+    int points = 0;
+    for (std::size_t i = 0; i < field.sources.size(); ++i) {
+      const BlobSource& source = field.sources[i];
+      const Mat3 to_world = shape_matrix(source).inverse();
+      const Vec3 c(source.centre[0], source.centre[1], source.centre[2]);
+      const Box3 box = influence_bounds(field, i);
+      const Vec3 slack = Vec3::Constant(1e-6 * box.diagonal());
+      for (int k = 0; k < 300; ++k) {
+        // A direction in the stored frame scaled onto g = 1, the support's edge.
+        const Vec3 w = Vec3(n(rng), n(rng), n(rng)).normalized();
+        const Vec3 x = c + to_world * (w / std::sqrt(shape_g(shape, shape_params(field, i), w)));
+        ASSERT_TRUE((x.array() >= (box.lo - slack).array()).all() && (x.array() <= (box.hi + slack).array()).all())
+            << glyph_shape_name(shape) << " source " << i;
+        const Vec3 o = x + 4.0 * Vec3(n(rng), n(rng), n(rng)).normalized(), d = (x - o).normalized();
+        const double t = (x - o).norm();
+        RaySpan span;
+        ASSERT_TRUE(ray_span(source, std::uint32_t(i), 0, o, d, 0.0, 100.0, span, source_support(field, i)))
+            << glyph_shape_name(shape) << " source " << i;
+        EXPECT_LE(span.t0, t * (1.0 + 1e-7));
+        EXPECT_GE(span.t1, t * (1.0 - 1e-7));
+        ++points;
+      }
+    }
+    EXPECT_EQ(points, 60 * 300);
+  }
 }
 
 // Newton's entry and the tangent-line bounds need u convex along every

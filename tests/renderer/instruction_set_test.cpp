@@ -60,17 +60,20 @@ TEST(SpanKernels, EveryInstructionSetGivesTheScalarBits) {
       rays.set(i, o, d, i % 3 == 0 ? 0.0 : distance * 0.9, i % 4 == 0 ? INFINITY : distance * 1.1);
     }
     const int first = trial % 2 ? 0 : 8, count = trial % 2 ? kMaxPacket : 8;
-    // Without a box, and with one that cuts the ellipsoid's support.
-    const double box = trial % 3 ? kNoBox : 1.0 / 1.5;
+    // Without a box, and with one and a cylinder about each axis that cut
+    // the ellipsoid's support.
+    ShapeSupport support;
+    if (trial % 3 == 0) support = {1.0 / 1.5, (1.0 + 0.4 * unit(rng)) / 1.5, trial / 3 % 3};
     for (InstructionSet isa : supported_isas()) {
       SpanLanes spans;
       const SpanKernels& kernels = span_kernels(isa);
-      const unsigned mask =
-          (box == kNoBox ? kernels.ray_spans : kernels.ray_spans_boxed)(source, box, rays, first, count, spans);
+      const unsigned mask = (support.bounded() ? kernels.ray_spans_boxed : kernels.ray_spans)(source, support, rays,
+                                                                                              first, count, spans);
       for (int i = first; i < first + count; ++i) {
         RaySpan alone;
         const bool enters = ray_span(source, 7, 0, Vec3(rays.ox[i], rays.oy[i], rays.oz[i]),
-                                     Vec3(rays.dx[i], rays.dy[i], rays.dz[i]), rays.tmin[i], rays.tmax[i], alone, box);
+                                     Vec3(rays.dx[i], rays.dy[i], rays.dz[i]), rays.tmin[i], rays.tmax[i], alone,
+                                     support);
         ASSERT_EQ(bool(mask & (1u << i)), enters) << isa_name(isa) << " lane " << i;
         if (!enters) continue;
         ++entered;
@@ -95,8 +98,13 @@ TEST(SpanKernels, EveryInstructionSetGivesTheScalarBits) {
       listed.push_back(s);
     }
     lanes.count = int(listed.size());
-    lanes.boxed = box != kNoBox;
-    for (int k = 0; k < kMaxPacket; ++k) lanes.box[k] = box;
+    lanes.boxed = support.bounded();
+    std::vector<ShapeSupport> supports;  // each source's own axis and radius
+    for (int k = 0; k < kMaxPacket; ++k) {
+      supports.push_back(support.bounded() ? ShapeSupport{support.box, support.radius * (1.0 + 0.1 * unit(rng)), k % 3}
+                                           : support);
+      lanes.set_support(k, supports.back());
+    }
     for (int k = lanes.count; k < kMaxPacket; ++k) {  // unused lanes: a source no ray meets
       for (int r = 0; r < 9; ++r) lanes.w[r][k] = 0.0;
       for (int c = 0; c < 3; ++c) lanes.c[c][k] = 0.0;
@@ -109,7 +117,8 @@ TEST(SpanKernels, EveryInstructionSetGivesTheScalarBits) {
           (lanes.boxed ? kernels.source_spans_boxed : kernels.source_spans)(lanes, o, d, 0.0, INFINITY, spans);
       for (int k = 0; k < lanes.count; ++k) {
         RaySpan alone;
-        const bool enters = ray_span(listed[std::size_t(k)], 0, 0, o, d, 0.0, INFINITY, alone, box);
+        const bool enters =
+            ray_span(listed[std::size_t(k)], 0, 0, o, d, 0.0, INFINITY, alone, supports[std::size_t(k)]);
         ASSERT_EQ(bool(mask & (1u << k)), enters) << isa_name(isa) << " source " << k;
         if (!enters) continue;
         ++entered;
@@ -122,49 +131,62 @@ TEST(SpanKernels, EveryInstructionSetGivesTheScalarBits) {
   EXPECT_GT(entered, 2000);  // the rays did meet the sources
 }
 
-// A span narrowed to its source's box holds exactly the ray's points inside
-// both the ellipsoid's support and the box: its ends are on their surfaces,
-// and points of the ellipsoid's span beyond them are outside the box. Rays
-// parallel to the box's faces (the sources' axes along the world's) are
-// inside a slab everywhere or nowhere.
-TEST(SpanKernels, ABoxNarrowsTheSpanToTheBox) {
+// A span narrowed to its source's box and cylinder holds exactly the ray's
+// points inside the ellipsoid's support, the box and the cylinder: its
+// ends are on their surfaces, and points of the ellipsoid's span beyond
+// them are outside one of them. Rays parallel to the box's faces (the
+// sources' axes along the world's) are inside a slab everywhere or
+// nowhere, and those along the cylinder's axis inside it everywhere or
+// nowhere.
+TEST(SpanKernels, ABoxAndACylinderNarrowTheSpanToBoth) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::normal_distribution<double> normal;
   const double box = 1.0 / std::sqrt(3.0);  // the corners of the box touch the ellipsoid
-  int narrowed = 0, dropped = 0;
-  for (int trial = 0; trial < 2000; ++trial) {
+  int narrowed = 0, dropped = 0, by_cylinder = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
     const bool aligned = trial % 4 == 0;
+    // Between the square's inscribed and circumscribed circles: the
+    // cylinder cuts the box's edges along its axis.
+    const ShapeSupport support{box, box * (1.2 + 0.2 * unit(rng)), trial / 8 % 3};
     const Eigen::Quaterniond q(normal(rng), normal(rng), normal(rng), normal(rng));
     const Mat3 axes = aligned ? Mat3::Identity() : Mat3(q.normalized().toRotationMatrix());
     const BlobSource source = make_blob_source(Vec3::Zero(), axes, Vec3(0.5, 0.3, 0.2), 1.0, {1, 1, 1});
     const Vec3 o = 3.0 * Vec3(normal(rng), normal(rng), normal(rng)).normalized();
     Vec3 d = (0.4 * Vec3(unit(rng), unit(rng), unit(rng)) - o).normalized();
     if (aligned) d = Vec3(0.0, 0.0, 0.0), d[trial % 3] = o[trial % 3] > 0.0 ? -1.0 : 1.0;  // along a world axis
-    RaySpan plain, boxed;
+    RaySpan plain, narrow, boxed;
     if (!ray_span(source, 0, 0, o, d, 0.0, 10.0, plain)) continue;
     const Mat3 w = shape_matrix(source);
-    const auto in_box = [&](double t, double slack) {
-      return (w * (o + t * d - Vec3::Zero())).cwiseAbs().maxCoeff() <= box * (1.0 + slack);
+    const auto inside = [&](double t, double slack) {
+      Vec3 q_s = w * (o + t * d);
+      const bool in_box = q_s.cwiseAbs().maxCoeff() <= box * (1.0 + slack);
+      q_s[support.axis] = 0.0;
+      return in_box && q_s.norm() <= support.radius * (1.0 + slack);
     };
-    if (!ray_span(source, 0, 0, o, d, 0.0, 10.0, boxed, box)) {
-      // Nowhere inside the box: no sample of the ellipsoid's span is.
+    const bool in_box = ray_span(source, 0, 0, o, d, 0.0, 10.0, boxed, ShapeSupport{box, kNoBox, support.axis});
+    if (!ray_span(source, 0, 0, o, d, 0.0, 10.0, narrow, support)) {
+      // Nowhere inside both: no sample of the ellipsoid's span is.
       ++dropped;
-      for (int k = 0; k <= 64; ++k) EXPECT_FALSE(in_box(plain.t0 + (plain.t1 - plain.t0) * k / 64.0, -1e-9));
+      by_cylinder += in_box;
+      for (int k = 0; k <= 64; ++k) EXPECT_FALSE(inside(plain.t0 + (plain.t1 - plain.t0) * k / 64.0, -1e-9));
       continue;
     }
     ++narrowed;
-    EXPECT_GE(boxed.t0, plain.t0);
-    EXPECT_LE(boxed.t1, plain.t1);
-    EXPECT_TRUE(in_box(boxed.t0, 1e-9) && in_box(boxed.t1, 1e-9)) << "trial " << trial;
+    by_cylinder += narrow.t0 > boxed.t0 || narrow.t1 < boxed.t1;
+    EXPECT_GE(narrow.t0, plain.t0);
+    EXPECT_LE(narrow.t1, plain.t1);
+    EXPECT_TRUE(inside(narrow.t0, 1e-9) && inside(narrow.t1, 1e-9)) << "trial " << trial;
     for (int k = 1; k < 64; ++k) {
-      const double before = plain.t0 + (boxed.t0 - plain.t0) * k / 64.0, after = boxed.t1 + (plain.t1 - boxed.t1) * k / 64.0;
-      EXPECT_FALSE(boxed.t0 > plain.t0 && in_box(before, -1e-9)) << "trial " << trial;
-      EXPECT_FALSE(boxed.t1 < plain.t1 && in_box(after, -1e-9)) << "trial " << trial;
+      const double before = plain.t0 + (narrow.t0 - plain.t0) * k / 64.0;
+      const double after = narrow.t1 + (plain.t1 - narrow.t1) * k / 64.0;
+      EXPECT_FALSE(narrow.t0 > plain.t0 && inside(before, -1e-9)) << "trial " << trial;
+      EXPECT_FALSE(narrow.t1 < plain.t1 && inside(after, -1e-9)) << "trial " << trial;
     }
   }
   EXPECT_GT(narrowed, 500);
   EXPECT_GT(dropped, 50);
+  EXPECT_GT(by_cylinder, 200);  // the cylinder cut what the box alone let through
 }
 
 }  // namespace
