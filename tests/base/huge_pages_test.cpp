@@ -14,9 +14,10 @@
 namespace hsb {
 namespace {
 
+// The whole process's: the first writes are shared among the threads.
 long minor_faults() {
   rusage usage{};
-  getrusage(RUSAGE_THREAD, &usage);
+  getrusage(RUSAGE_SELF, &usage);
   return usage.ru_minflt;
 }
 
@@ -68,6 +69,22 @@ TEST(HugePages, AssignHoldsTheValuesInTheRoomAsked) {
   EXPECT_GE(v.capacity(), 4000u);
   for (float x : v) ASSERT_EQ(x, 0.5f);
   advise_huge_pages(v.data() + 1, 3);  // less than a page, unaligned: a no-op
+}
+
+// The parallel first write clears exactly the range asked, from unaligned
+// ends, large (pieces between huge-page boundaries, on every core) and
+// small (one thread).
+TEST(HugePages, FirstTouchZeroesExactlyTheRange) {
+  for (const std::size_t bytes : {std::size_t(20) << 20, std::size_t(5000)}) {
+    std::vector<unsigned char> buffer(bytes + 64, 0xab);
+    first_touch_in_parallel(buffer.data() + 3, bytes);
+    EXPECT_EQ(buffer[0], 0xab);
+    EXPECT_EQ(buffer[2], 0xab);
+    std::size_t zeros = 0;
+    for (std::size_t i = 3; i < bytes + 3; ++i) zeros += buffer[i] == 0;
+    EXPECT_EQ(zeros, bytes);
+    for (std::size_t i = bytes + 3; i < buffer.size(); ++i) ASSERT_EQ(buffer[i], 0xab) << i;
+  }
 }
 
 // 64 MB written once: 16,384 faults of 4 KB pages, or a few dozen of 2 MB.
