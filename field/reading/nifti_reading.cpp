@@ -32,6 +32,7 @@
 #include "field/reading/data_error.h"
 #include "field/reading/file_records.h"
 #include "field/reading/format_reader.h"
+#include "field/reading/tensor_storage.h"
 
 namespace hsb {
 namespace {
@@ -95,10 +96,16 @@ vtkSmartPointer<vtkImageData> read_nifti(const std::string& path, bool scalar) {
   // A layout the file records is turned into VTK's here; FSL's is not recorded (below).
   const ComponentOrder* recorded = lower_triangle ? component_order("nifti") : mrtrix ? component_order("mrtrix") : nullptr;
 
-  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  // Six components straight into the field's own storage (tensor_storage.h).
+  vtkSmartPointer<vtkDoubleArray> array;
+  if (values == 6) {
+    array = tensor_array_on_storage(voxels->GetNumberOfTuples());
+  } else {
+    array = vtkSmartPointer<vtkDoubleArray>::New();
+    array->SetNumberOfComponents(values);
+    array->SetNumberOfTuples(voxels->GetNumberOfTuples());
+  }
   array->SetName(scalar ? "values" : values == 3 ? "vectors" : "tensors");
-  array->SetNumberOfComponents(values);
-  array->SetNumberOfTuples(voxels->GetNumberOfTuples());
   std::array<double, 9> v{};
   for (vtkIdType i = 0; i < voxels->GetNumberOfTuples(); ++i) {
     for (int c = 0; c < values; ++c) v[std::size_t(c)] = voxels->GetComponent(i, c) * slope + intercept;

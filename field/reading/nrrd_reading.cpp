@@ -51,6 +51,7 @@
 #include "field/reading/data_error.h"
 #include "field/reading/file_records.h"
 #include "field/reading/format_reader.h"
+#include "field/reading/tensor_storage.h"
 #include "field/tensor/sym3.h"
 
 namespace hsb {
@@ -485,23 +486,31 @@ vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path, bool scalar) {
 
   const DecodedValues values = read_values(h, path, count, type);
   const vtkIdType voxels = vtkIdType(count / std::uint64_t(layout.values));
-  // Floats where the file's numbers are (or fit in them exactly): the
-  // array is read once more, into the field's doubles, and a double copy
-  // beside those was the read's peak (33 MB twice for Teem's helix at 88³).
-  const bool as_float = values.bytes && (type.kind == NumberType::floating ? type.bytes == 4 : type.bytes <= 2);
-  vtkSmartPointer<vtkDataArray> array;
-  if (as_float) array = vtkSmartPointer<vtkFloatArray>::New();
-  else array = vtkSmartPointer<vtkDoubleArray>::New();
-  array->SetName(layout.kind == VoxelLayout::scalar   ? "values"
-                 : layout.kind == VoxelLayout::vector ? "vectors"
-                                                      : "tensors");
+  // Six components (symmetric tensors) go straight into the field's own
+  // storage (tensor_storage.h), which read_tensors() takes over. Other
+  // values are floats where the file's numbers are (or fit in them
+  // exactly): the array is read once more, into the field's doubles, and a
+  // double copy beside those was the read's peak.
   const int out_components = layout.kind == VoxelLayout::scalar ? 1
                              : layout.kind == VoxelLayout::vector ? 3
                              : layout.kind == VoxelLayout::full   ? 9
                                                                   : 6;
-  array->SetNumberOfComponents(out_components);
-  array->SetNumberOfTuples(voxels);
-  advise_huge_pages(array->GetVoidPointer(0), std::size_t(voxels) * std::size_t(out_components) * array->GetDataTypeSize());
+  const bool as_float = out_components != 6 && values.bytes &&
+                        (type.kind == NumberType::floating ? type.bytes == 4 : type.bytes <= 2);
+  vtkSmartPointer<vtkDataArray> array;
+  if (out_components == 6) {
+    array = tensor_array_on_storage(voxels);
+  } else {
+    if (as_float) array = vtkSmartPointer<vtkFloatArray>::New();
+    else array = vtkSmartPointer<vtkDoubleArray>::New();
+    array->SetNumberOfComponents(out_components);
+    array->SetNumberOfTuples(voxels);
+    advise_huge_pages(array->GetVoidPointer(0),
+                      std::size_t(voxels) * std::size_t(out_components) * array->GetDataTypeSize());
+  }
+  array->SetName(layout.kind == VoxelLayout::scalar   ? "values"
+                 : layout.kind == VoxelLayout::vector ? "vectors"
+                                                      : "tensors");
   const ComponentOrder& teem_order = *component_order("teem");
   const ComponentOrder& vtk_order = *component_order("vtk");
   const bool in_space_frame = frame == Mat3::Identity();

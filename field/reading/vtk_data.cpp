@@ -47,6 +47,7 @@
 #include "field/reading/data_region.h"
 #include "field/reading/dataset_reading.h"
 #include "field/reading/plane_data.h"
+#include "field/reading/tensor_storage.h"
 #include "field/reading/vtk_session.h"
 #include "field/sampling/mesh_field.h"
 #include "field/sampling/mesh_locator.h"
@@ -326,8 +327,11 @@ std::vector<Sym3> read_tensors(const ChosenArray& chosen, const std::string& pat
   const char* item = chosen.on_points ? "point" : "cell";
   const vtkIdType n = array->GetNumberOfTuples();
   const int components = array->GetNumberOfComponents();
-  std::vector<Sym3> tensors;
-  assign_on_huge_pages(tensors, std::size_t(n), Sym3{});
+  // A volume reader's own storage is read in place (each tuple is copied
+  // out before its tensor is written back), not copied.
+  std::vector<Sym3> tensors = take_tensor_storage(array);
+  const bool in_place = !tensors.empty();
+  if (!in_place) assign_on_huge_pages(tensors, std::size_t(n), Sym3{});
   constexpr vtkIdType kBand = 1 << 15;
   std::vector<TensorBand> bands(std::size_t((n + kBand - 1) / kBand));
   const auto read_all = [&](const auto& tuple) {
@@ -342,7 +346,8 @@ std::vector<Sym3> read_tensors(const ChosenArray& chosen, const std::string& pat
       for (int c = 0; c < components; ++c) t[c] = double(tuple[c]);
     };
   };
-  if (auto* floats = vtkFloatArray::FastDownCast(array)) read_all(from(floats->GetPointer(0)));
+  if (in_place) read_all(from(reinterpret_cast<const double*>(tensors.data())));
+  else if (auto* floats = vtkFloatArray::FastDownCast(array)) read_all(from(floats->GetPointer(0)));
   else if (auto* doubles = vtkDoubleArray::FastDownCast(array)) read_all(from(doubles->GetPointer(0)));
   else read_all([array](vtkIdType i, double* t) { array->GetTuple(i, t); });
 
