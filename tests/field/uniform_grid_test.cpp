@@ -186,6 +186,18 @@ TEST(UniformGrid, RejectsBadInput) {
   bad[3].xy = std::numeric_limits<double>::infinity();
   EXPECT_THROW(UniformGridField(Vec3::Zero(), Vec3::Ones(), {2, 2, 2}, bad),
                std::invalid_argument);
+  // Looked for across the threads' blocks: an infinite component anywhere
+  // in a volume of several blocks, its last node included; NaN is no data.
+  std::vector<Sym3> volume(std::size_t(64) * 64 * 64);
+  volume[12345].zz = std::nan("");
+  EXPECT_NO_THROW(UniformGridField(Vec3::Zero(), Vec3::Ones(), {64, 64, 64}, volume));
+  for (const std::size_t at : {std::size_t(0), std::size_t(70000), volume.size() - 1})
+    for (double Sym3::*component : {&Sym3::xx, &Sym3::yy, &Sym3::zz, &Sym3::xy, &Sym3::yz, &Sym3::xz}) {
+      std::vector<Sym3> infinite = volume;
+      infinite[at].*component = -std::numeric_limits<double>::infinity();
+      EXPECT_THROW(UniformGridField(Vec3::Zero(), Vec3::Ones(), {64, 64, 64}, infinite), std::invalid_argument)
+          << "node " << at;
+    }
   const PointLoadField f(PointLoadSpec{});
   EXPECT_THROW(UniformGridField::sampled_from(f, {2, 1, 2}), std::invalid_argument);
   EXPECT_THROW(UniformGridField::sampled_from(f, {0, 0, 0}), std::invalid_argument);
