@@ -104,6 +104,8 @@ inline void clip_to_cylinder(const ScaledRay& r, double radius, const double (&a
   const double reach = (radius2 - g_min) * inv_a;
   const double half_width = std::sqrt(reach > 0.0 ? reach : 0.0);
   const double lo = parallel ? -inf : tc - half_width, hi = parallel ? inf : tc + half_width;
+  // In & and |, not `parallel ? … : …`: that select of two comparisons
+  // kept GCC from vectorising the lane loops.
   const bool outside = (parallel & (p > radius2)) | (!parallel & (g_min > radius2));
   span.t0 = span.t0 < lo ? lo : span.t0;
   span.t1 = hi < span.t1 ? hi : span.t1;
