@@ -27,6 +27,7 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLGenericDataObjectReader.h>
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -397,9 +398,14 @@ std::vector<Sym3> tensors_of(const ChosenArray& chosen, const VtkFileSpec& spec,
                        order.name + "\"): " + implied.why + "; set data.components for another");
   if (const std::string note = recorded_reading_note(data, chosen.name); !note.empty())
     warnings.push_back(spec.path + ": array \"" + chosen.name + "\" " + note);
+  // On every core: FSL's tensors are all turned, millions of them.
   if (const std::optional<Mat3> frame = recorded_tensor_frame(data, chosen.name))
-    for (Sym3& t : tensors)
-      if (t.is_finite()) t = Sym3::symmetric_part(*frame * t.matrix() * frame->transpose());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tensors.size(), 8192),
+                      [&](const tbb::blocked_range<std::size_t>& band) {
+                        for (std::size_t i = band.begin(); i < band.end(); ++i)
+                          if (Sym3& t = tensors[i]; t.is_finite())
+                            t = Sym3::symmetric_part(*frame * t.matrix() * frame->transpose());
+                      });
   return tensors;
 }
 
@@ -625,7 +631,10 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
     // surface of the rest.
     if (auto* image = vtkImageData::SafeDownCast(data); image && spec.boundary && chosen.on_points) {
       std::vector<std::uint8_t> has_data(shared.size());
-      for (std::size_t i = 0; i < shared.size(); ++i) has_data[i] = shared[i].holds_data();
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, shared.size(), 1 << 15),
+                        [&](const tbb::blocked_range<std::size_t>& band) {
+                          for (std::size_t i = band.begin(); i < band.end(); ++i) has_data[i] = shared[i].holds_data();
+                        });
       region = data_region_surface(image, has_data);
     }
     if (!volume) {

@@ -25,10 +25,12 @@ Sym3 space_tensor(int i, int j, int k) {
 
 // A NIfTI-1 file written byte by byte as the standard lays it out: float
 // voxels, `dim` as given, the sform `rows` (3×4), `values(i, j, k)` the
-// voxel's six numbers in the file's layout.
+// voxel's six numbers in the file's layout, stored as (value − intercept)
+// / slope for the reader to scale back.
 std::string write_nifti(const std::string& name, std::array<std::int16_t, 8> dim, std::int16_t intent,
                         const std::string& descrip, const std::array<std::array<float, 4>, 3>& rows,
-                        const std::function<std::array<double, 6>(int, int, int)>& values) {
+                        const std::function<std::array<double, 6>(int, int, int)>& values, float slope = 1.0f,
+                        float intercept = 0.0f) {
   std::vector<char> header(352, '\0');
   const auto put = [&](std::size_t at, const auto& v) { std::memcpy(header.data() + at, &v, sizeof v); };
   put(0, std::int32_t(348));
@@ -39,7 +41,8 @@ std::string write_nifti(const std::string& name, std::array<std::int16_t, 8> dim
   const float pixdim[8] = {1, 1, 1, 1, 1, 1, 1, 1};
   std::memcpy(header.data() + 76, pixdim, sizeof pixdim);
   put(108, 352.0f);
-  put(112, 1.0f);
+  put(112, slope);
+  put(116, intercept);
   std::memcpy(header.data() + 148, descrip.data(), std::min<std::size_t>(descrip.size(), 79));
   put(254, std::int16_t(1));  // sform_code: scanner
   for (int r = 0; r < 3; ++r) std::memcpy(header.data() + 280 + 16 * std::size_t(r), rows[std::size_t(r)].data(), 16);
@@ -49,7 +52,8 @@ std::string write_nifti(const std::string& name, std::array<std::int16_t, 8> dim
     for (int k = 0; k < nz; ++k)
       for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i)
-          data[std::size_t(((c * nz + k) * ny + j) * nx + i)] = float(values(i, j, k)[std::size_t(c)]);
+          data[std::size_t(((c * nz + k) * ny + j) * nx + i)] =
+              float((values(i, j, k)[std::size_t(c)] - intercept) / slope);
   const std::string path = (test_temp_dir("nifti") / name).string();
   std::ofstream out(path, std::ios::binary);
   out.write(header.data(), std::streamsize(header.size()));
@@ -86,6 +90,18 @@ TEST(NiftiReading, SymmetricMatrixIntentIsTheLowerTriangleInTheSpace) {
             std::string::npos);
   // Placed by its sform, the world is the scanner's RAS+.
   EXPECT_EQ(load_vtk_data({path}).anatomical_frame, "RAS");
+}
+
+// Float voxels are read as floats, scaled ones (scl_slope, scl_inter) as
+// the doubles their scaling makes: both come back as the space's tensors.
+TEST(NiftiReading, RescaledVoxelsAreTheirScaledValues) {
+  const auto lower_triangle = [](int i, int j, int k) {
+    const Sym3 s = space_tensor(i, j, k);
+    return std::array<double, 6>{s.xx, s.xy, s.yy, s.xz, s.yz, s.zz};
+  };
+  expect_space_tensors(write_nifti("scaled.nii", {5, nx, ny, nz, 1, 6, 1, 1}, 1005, "", turned, lower_triangle, 0.25f,
+                                   -1.5f),
+                       turned_place);
 }
 
 TEST(NiftiReading, MrtrixSaysSoInItsDescription) {
