@@ -112,9 +112,11 @@ inline void clip_to_cylinder(const ScaledRay& r, double radius, const double (&a
   span.enters = span.enters & !outside & (span.t0 <= span.t1);
 }
 
-// 1 for the components across the symmetry axis, 0 for the axis's.
-inline void components_across(int axis, double (&across)[3]) {
-  for (int k = 0; k < 3; ++k) across[k] = k == axis ? 0.0 : 1.0;
+// Both narrowings of a shape's span: its box, then its cylinder.
+inline void clip_to_support(const ScaledRay& r, double box, double radius, const double (&across)[3],
+                            LaneSpan& span) {
+  clip_to_box(r, box, span);
+  clip_to_cylinder(r, radius, across, span);
 }
 
 template <bool Boxed>
@@ -123,10 +125,7 @@ inline LaneSpan span_on_lane(const double (&w)[9], double box, double radius, co
                              double tmin, double tmax) {
   const ScaledRay r = scaled_ray(w, cx, cy, cz, ox, oy, oz, dx, dy, dz);
   LaneSpan span = finish_span(r, tmin, tmax);
-  if (Boxed) {
-    clip_to_box(r, box, span);
-    clip_to_cylinder(r, radius, across, span);
-  }
+  if (Boxed) clip_to_support(r, box, radius, across, span);
   return span;
 }
 
@@ -241,8 +240,7 @@ bool ray_span(const BlobSource& s, std::uint32_t index, std::uint32_t rank, cons
   if (lane.enters && support.bounded()) {
     double across[3];
     components_across(support.axis, across);
-    clip_to_box(r, support.box, lane);
-    clip_to_cylinder(r, support.radius, across, lane);
+    clip_to_support(r, support.box, support.radius, across, lane);
   }
   if (!lane.enters) return false;
   span = RaySpan{lane.t0, lane.t1, lane.a, lane.t_c, lane.g_min, index, rank};

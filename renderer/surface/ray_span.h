@@ -68,6 +68,13 @@ struct ShapeSupport {
   bool bounded() const { return box != kNoBox; }
 };
 
+// The cylinder's axis as the span kernels take it, a factor a component
+// rather than an index (their lanes have no branches): 1 for the two
+// components across `axis`, 0 for the axis's own.
+inline void components_across(int axis, double (&across)[3]) {
+  for (int k = 0; k < 3; ++k) across[k] = k == axis ? 0.0 : 1.0;
+}
+
 // Source i's box and cylinder, or none for the ellipsoid.
 inline ShapeSupport source_support(const BlobField& field, std::size_t i) {
   if (shape_is_quadric(field.shape)) return {};
@@ -107,8 +114,8 @@ unsigned ray_spans(const BlobSource& s, const ShapeSupport& support, const RayLa
 struct SourceLanes {
   alignas(64) double w[9][kMaxPacket];
   alignas(64) double c[3][kMaxPacket];
-  // Read when `boxed`: each source's ShapeSupport, its axis as the
-  // components across it (1 for the two across the axis, 0 for the axis).
+  // Read when `boxed`: each source's ShapeSupport, its axis as
+  // components_across gives it.
   alignas(64) double box[kMaxPacket], radius[kMaxPacket];
   alignas(64) double across[3][kMaxPacket];
   std::uint32_t index[kMaxPacket];
@@ -119,7 +126,9 @@ struct SourceLanes {
   // Lane `lane`'s support.
   void set_support(int lane, const ShapeSupport& support) {
     box[lane] = support.box, radius[lane] = support.radius;
-    for (int k = 0; k < 3; ++k) across[k][lane] = k == support.axis ? 0.0 : 1.0;
+    double factors[3];
+    components_across(support.axis, factors);
+    for (int k = 0; k < 3; ++k) across[k][lane] = factors[k];
   }
 };
 
