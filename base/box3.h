@@ -5,7 +5,6 @@
 #include <array>
 #include <cmath>
 #include <utility>
-#include <vector>
 
 #include "base/vec3.h"
 
@@ -36,15 +35,6 @@ struct Box3 {
     return c;
   }
 };
-
-// The box around the finite ones of `points`; lo = +inf and hi = −inf
-// (empty) when there are none.
-inline Box3 bounding_box(const std::vector<Vec3>& points) {
-  Box3 box{Vec3::Constant(INFINITY), Vec3::Constant(-INFINITY)};
-  for (const Vec3& p : points)
-    if (p.allFinite()) box = {box.lo.cwiseMin(p), box.hi.cwiseMax(p)};
-  return box;
-}
 
 // The parameter interval where the ray o + t d is inside `box`, intersected
 // with [tmin, tmax]; empty (first > second) when it misses.

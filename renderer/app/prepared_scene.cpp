@@ -1,10 +1,14 @@
 #include "renderer/app/prepared_scene.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <filesystem>
 
 #include "base/huge_pages.h"
 #include "base/memory_budget.h"
+#include "base/point_extremes.h"
 #include "base/process_memory.h"
 #include "field/reading/data_formats.h"
 #include "renderer/image/image_io_module.h"
@@ -149,18 +153,24 @@ void add_corners(const Box3& b, std::vector<Vec3>& points) {
 void add_glyph_points(const PreparedScene& p, double extent, std::vector<Vec3>& points) {
   const double reach = std::min(1.0, kBlendAllowance * extent / p.spec.surface.influence_radius) *
                        p.spec.surface.influence_radius;
-  reserve_on_huge_pages(points, points.size() + 14 * p.glyphs.sources.size());
-  for (std::size_t i = 0; i < p.glyphs.sources.size(); ++i) {
-    const GlyphSource& s = p.glyphs.sources[i];
-    // The glyph is the unit ball of its gauge u, a norm symmetric in each
-    // axis's sign: along a diagonal it reaches 1/u(1, 1, 1) of each axis.
-    const ShapeParams& shape = shape_params(p.field, i);
-    const double d = 1.0 / std::sqrt(shape_g(p.field.shape, shape, Vec3::Ones() / double(shape.bound_scale)));
-    const Mat3 a = s.axes * (reach * s.radii).asDiagonal();
-    for (int k = 0; k < 3; ++k) points.push_back(s.centre + a.col(k)), points.push_back(s.centre - a.col(k));
-    for (int o = 0; o < 8; ++o)
-      points.push_back(s.centre + d * a * Vec3(o & 1 ? 1 : -1, o & 2 ? 1 : -1, o & 4 ? 1 : -1));
-  }
+  // Each glyph's points in their own place, on every core.
+  constexpr std::size_t per_glyph = 14;
+  const std::size_t first = points.size(), glyphs = p.glyphs.sources.size();
+  reserve_on_huge_pages(points, first + per_glyph * glyphs);
+  points.resize(first + per_glyph * glyphs);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, glyphs, 4096), [&](const tbb::blocked_range<std::size_t>& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      const GlyphSource& s = p.glyphs.sources[i];
+      // The glyph is the unit ball of its gauge u, a norm symmetric in each
+      // axis's sign: along a diagonal it reaches 1/u(1, 1, 1) of each axis.
+      const ShapeParams& shape = shape_params(p.field, i);
+      const double d = 1.0 / std::sqrt(shape_g(p.field.shape, shape, Vec3::Ones() / double(shape.bound_scale)));
+      const Mat3 a = s.axes * (reach * s.radii).asDiagonal();
+      Vec3* out = points.data() + first + per_glyph * i;
+      for (int k = 0; k < 3; ++k) *out++ = s.centre + a.col(k), *out++ = s.centre - a.col(k);
+      for (int o = 0; o < 8; ++o) *out++ = s.centre + d * a * Vec3(o & 1 ? 1 : -1, o & 2 ? 1 : -1, o & 4 ? 1 : -1);
+    }
+  });
 }
 
 // The points the camera frames.
@@ -190,14 +200,14 @@ double body_aspect(const CameraRequest& request, const std::vector<Vec3>& framed
   const CameraSpec c = frame_camera(request, framed, kDefaultPixels, kDefaultPixels);
   const Vec3 forward = (c.look_at - c.position).normalized();
   const Vec3 right = forward.cross(c.up).normalized(), up = right.cross(forward);
-  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-  for (const Vec3& point : framed) {
+  const std::array<double, 4> least = least_values(framed, [&](const Vec3& point) {
     const Vec3 d = point - c.position;
     const double depth = c.projection == Projection::perspective ? d.dot(forward) : 1.0;
-    if (!(depth > 0.0)) continue;
-    x0 = std::min(x0, d.dot(right) / depth), x1 = std::max(x1, d.dot(right) / depth);
-    y0 = std::min(y0, d.dot(up) / depth), y1 = std::max(y1, d.dot(up) / depth);
-  }
+    if (!(depth > 0.0)) return std::array<double, 4>{INFINITY, INFINITY, INFINITY, INFINITY};  // behind the camera
+    const double x = d.dot(right) / depth, y = d.dot(up) / depth;
+    return std::array<double, 4>{x, -x, y, -y};
+  });
+  const double x0 = least[0], x1 = -least[1], y0 = least[2], y1 = -least[3];
   return (x1 > x0 && y1 > y0) ? std::clamp((x1 - x0) / (y1 - y0), kTallest, kWidest) : 1.0;
 }
 
@@ -535,17 +545,15 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   p.resolve("camera.look_at", toml_vec3(p.camera.look_at));
   p.resolve("camera.up", toml_vec3(p.camera.up));
   if (p.camera.projection == Projection::orthographic) p.resolve("camera.height", p.camera.height);
-  Box3 drawn = bounding_box(framed);
-  if (!drawn.lo.allFinite() || !drawn.hi.allFinite()) drawn = domain;  // nothing drawn
+  const Box3 framed_box = bounding_box(framed);
+  // (Nothing drawn: the data's box.)
+  const Box3 drawn = framed_box.lo.allFinite() && framed_box.hi.allFinite() ? framed_box : domain;
   p.render.shadow_offset = p.resolve(
       "render.shadow_offset",
       s.render.shadow_offset.value_or(kShadowOffsetPerPixel * Camera(p.camera, p.render.width, p.render.height)
                                                                    .pixel_size_at(drawn.centre())));
   p.shading.ground = s.context.ground;
-  double lowest = INFINITY;
-  for (const Vec3& point : framed) lowest = std::min(lowest, point.z());
-  const double ground = std::isfinite(lowest) ? lowest : domain.lo.z();
-  p.shading.ground_height = s.context.ground_height.value_or(ground);
+  p.shading.ground_height = s.context.ground_height.value_or(drawn.lo.z());
   if (s.context.ground) p.resolve("render.ground_height", p.shading.ground_height);
 
   warn_about_the_picture(p, extent);

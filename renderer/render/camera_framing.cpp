@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "base/point_extremes.h"
+
 namespace hsb {
 namespace {
 
@@ -86,23 +88,17 @@ CameraSpec frame_camera(const CameraRequest& request, const std::vector<Vec3>& f
                         const PictureReserve& reserve) {
   // Something to frame even when nothing is drawn: a unit box's corners.
   Box3 box = bounding_box(framed_points);
-  std::array<Vec3, 8> stand_in;
+  std::vector<Vec3> stand_in;
   const bool nothing = !(box.diagonal() > 0.0) || !box.lo.allFinite() || !box.hi.allFinite();
   if (nothing) {
     const Vec3 c = box.centre().allFinite() ? box.centre() : Vec3::Zero();
     box = {c - Vec3::Constant(0.5), c + Vec3::Constant(0.5)};
-    stand_in = box.corners();
+    const std::array<Vec3, 8> corners = box.corners();
+    stand_in.assign(corners.begin(), corners.end());
   }
-  // Every finite point, where they stand: a glyph field's are 14 a glyph
+  // The finite points, where they stand: a glyph field's are 14 a glyph
   // (11 MB for 33,768), which a copy would take again from the system.
-  const auto each_point = [&](auto&& use) {
-    if (nothing) {
-      for (const Vec3& p : stand_in) use(p);
-      return;
-    }
-    for (const Vec3& p : framed_points)
-      if (p.allFinite()) use(p);
-  };
+  const std::vector<Vec3>& points = nothing ? stand_in : framed_points;
   CameraSpec camera;
   camera.projection = request.projection;
   camera.fov_degrees = request.fov_degrees;
@@ -129,11 +125,11 @@ CameraSpec frame_camera(const CameraRequest& request, const std::vector<Vec3>& f
   const double aspect = camera.frame_width * double(width) / (camera.frame_height * double(height));
 
   if (camera.projection == Projection::orthographic) {
-    double x_lo = INFINITY, x_hi = -INFINITY, y_lo = INFINITY, y_hi = -INFINITY;
-    each_point([&](const Vec3& p) {
-      x_lo = std::min(x_lo, (p - target).dot(right)), x_hi = std::max(x_hi, (p - target).dot(right));
-      y_lo = std::min(y_lo, (p - target).dot(up)), y_hi = std::max(y_hi, (p - target).dot(up));
+    const std::array<double, 4> least = least_values(points, [&](const Vec3& p) {
+      const double x = (p - target).dot(right), y = (p - target).dot(up);
+      return std::array<double, 4>{x, -x, y, -y};
     });
+    const double x_lo = least[0], x_hi = -least[1], y_lo = least[2], y_hi = -least[3];
     // The view's half-height h: the window is [u_lo, u_hi]·h·aspect by
     // [v_lo, v_hi]·h in the view plane.
     double half;
@@ -165,11 +161,9 @@ CameraSpec frame_camera(const CameraRequest& request, const std::vector<Vec3>& f
 
   // Corners in the camera's frame about the target: r along `right`, u
   // along `up`, f along `forward`; the camera stands at (P_r, P_u, P_f).
-  const auto each_corner = [&](auto&& use) {
-    each_point([&](const Vec3& p) {
-      const Vec3 q = p - target;
-      use(Vec3(q.dot(right), q.dot(up), q.dot(forward)));
-    });
+  const auto in_view = [&](const Vec3& p) {
+    const Vec3 q = p - target;
+    return Vec3(q.dot(right), q.dot(up), q.dot(forward));
   };
   // Each bound below is a least or largest value over all the points, so
   // those that need nothing but the points share one pass over them (a
@@ -185,31 +179,29 @@ CameraSpec frame_camera(const CameraRequest& request, const std::vector<Vec3>& f
     // The minimum over pairs separates: min over j of (c_j − lo f_j) less
     // the max over i of (c_i − hi f_i), so many points cost no more than
     // a few.
-    double min_r = INFINITY, max_r = -INFINITY, min_u = INFINITY, max_u = -INFINITY;
-    each_corner([&](const Vec3& p) {
-      p_f = std::min(p_f, p.z() - clearance);
-      min_r = std::min(min_r, p.x() - x_lo * p.z());
-      max_r = std::max(max_r, p.x() - x_hi * p.z());
-      min_u = std::min(min_u, p.y() - y_lo * p.z());
-      max_u = std::max(max_u, p.y() - y_hi * p.z());
+    const std::array<double, 5> sides = least_values(points, [&](const Vec3& p) {
+      const Vec3 c = in_view(p);
+      return std::array<double, 5>{c.z() - clearance, c.x() - x_lo * c.z(), -(c.x() - x_hi * c.z()),
+                                   c.y() - y_lo * c.z(), -(c.y() - y_hi * c.z())};
     });
-    p_f = std::min({p_f, (min_r - max_r) / (x_hi - x_lo), (min_u - max_u) / (y_hi - y_lo)});
-    double from_r = -INFINITY, to_r = INFINITY, from_u = -INFINITY, to_u = INFINITY;
-    each_corner([&](const Vec3& i) {
-      from_r = std::max(from_r, i.x() - x_hi * (i.z() - p_f));
-      to_r = std::min(to_r, i.x() - x_lo * (i.z() - p_f));
-      from_u = std::max(from_u, i.y() - y_hi * (i.z() - p_f));
-      to_u = std::min(to_u, i.y() - y_lo * (i.z() - p_f));
+    const double min_r = sides[1], max_r = -sides[2], min_u = sides[3], max_u = -sides[4];
+    p_f = std::min({sides[0], (min_r - max_r) / (x_hi - x_lo), (min_u - max_u) / (y_hi - y_lo)});
+    const std::array<double, 4> room = least_values(points, [&](const Vec3& p) {
+      const Vec3 c = in_view(p);
+      return std::array<double, 4>{-(c.x() - x_hi * (c.z() - p_f)), c.x() - x_lo * (c.z() - p_f),
+                                   -(c.y() - y_hi * (c.z() - p_f)), c.y() - y_lo * (c.z() - p_f)};
     });
+    const double from_r = -room[0], to_r = room[1], from_u = -room[2], to_u = room[3];
     p_r = 0.5 * (from_r + to_r);
     p_u = 0.5 * (from_u + to_u);
   } else {
     // The view passes through the given look_at: only the distance is free.
-    each_corner([&](const Vec3& corner) {
-      const double x = corner.x(), y = corner.y();
-      p_f = std::min({p_f, corner.z() - clearance, corner.z() - (x > 0.0 ? x / x_hi : x / x_lo),
-                      corner.z() - (y > 0.0 ? y / y_hi : y / y_lo)});
-    });
+    p_f = least_values(points, [&](const Vec3& p) {
+      const Vec3 c = in_view(p);
+      const double x = c.x(), y = c.y();
+      return std::array<double, 1>{std::min({c.z() - clearance, c.z() - (x > 0.0 ? x / x_hi : x / x_lo),
+                                             c.z() - (y > 0.0 ? y / y_hi : y / y_lo)})};
+    })[0];
   }
   camera.position = target + p_r * right + p_u * up + p_f * forward;
   camera.look_at = camera.position - p_f * forward;  // on the axis, level with the target

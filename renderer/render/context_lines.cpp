@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "base/point_extremes.h"
 #include "renderer/surface/embree_bounds.h"
 #include "renderer/surface/embree_ray.h"
 

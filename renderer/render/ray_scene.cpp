@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "base/point_extremes.h"
 #include "renderer/surface/ray_packets.h"
 
 namespace hsb {

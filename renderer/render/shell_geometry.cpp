@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "base/box3.h"
+#include "base/point_extremes.h"
 #include "renderer/surface/embree_bounds.h"
 
 namespace hsb {

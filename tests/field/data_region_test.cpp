@@ -15,6 +15,7 @@
 #include <map>
 #include <utility>
 
+#include "base/point_extremes.h"
 #include "field/reading/data_region.h"
 #include "field/reading/vtk_data.h"
 #include "tests/temp_dir.h"
