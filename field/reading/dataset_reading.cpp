@@ -6,6 +6,7 @@
 #include <vtkCellTypes.h>
 #include <vtkGenericCell.h>
 #include <vtkIdList.h>
+#include <vtkImageData.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPoints.h>
@@ -87,11 +88,28 @@ void check_cell_sizes(vtkUnstructuredGrid* grid, const std::string& path) {
   }
 }
 
+// An image's points are its origin plus a linear map of their index, each
+// coordinate largest and least at corners: where the eight corners are
+// finite, so is every point. (Asking each of a volume's millions of points
+// kept one thread 11 ms on Teem's helix at 136³.)
+bool image_corners_finite(vtkImageData* image) {
+  const int* extent = image->GetExtent();
+  for (int corner = 0; corner < 8; ++corner) {
+    const int index[3] = {extent[corner & 1 ? 1 : 0], extent[corner & 2 ? 3 : 2], extent[corner & 4 ? 5 : 4]};
+    double p[3];
+    image->TransformIndexToPhysicalPoint(index, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) return false;
+  }
+  return true;
+}
+
 // What no reader checks but everything after relies on: finite point
 // coordinates, cells of their type's size that name existing points.
 void check_cells(vtkDataSet* data, const std::string& path) {
   const vtkIdType points = data->GetNumberOfPoints();
-  for (vtkIdType i = 0; i < points; ++i) {
+  auto* image = vtkImageData::SafeDownCast(data);
+  const vtkIdType asked = image && image_corners_finite(image) ? 0 : points;
+  for (vtkIdType i = 0; i < asked; ++i) {
     double p[3];
     data->GetPoint(i, p);
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {

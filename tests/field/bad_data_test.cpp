@@ -182,6 +182,25 @@ TEST_F(BadData, NonFinitePointCoordinates) {
   EXPECT_EQ(error_of(path), path.string() + ": point 2 has a non-finite coordinate (0, nan, 0)");
 }
 
+// A 3 × 3 × 3 image of one tensor with the given spacing.
+std::string image_vti(const std::string& spacing) {
+  std::string tensors;
+  for (int i = 0; i < 27; ++i) tensors += "1 2 3 0 0 0 ";
+  return "<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\" version=\"0.1\">\n"
+         "<ImageData WholeExtent=\"0 2 0 2 0 2\" Origin=\"0 0 0\" Spacing=\"" + spacing + "\">\n"
+         "<Piece Extent=\"0 2 0 2 0 2\">\n<PointData Tensors=\"stress\">"
+         "<DataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"6\" format=\"ascii\">" + tensors +
+         "</DataArray></PointData>\n<CellData/>\n</Piece>\n</ImageData>\n</VTKFile>\n";
+}
+
+TEST_F(BadData, AnImageWhosePointsOverflowSaysWhichIsTheFirst) {
+  // Its points are found from its corners (an image's coordinates are
+  // linear in the index); one beyond a double's range is still named.
+  EXPECT_EQ(error_of(write("fine.vti", image_vti("1 2 1"))), "no error");
+  const fs::path path = write("overflow.vti", image_vti("1 1e308 1"));
+  EXPECT_EQ(error_of(path), path.string() + ": point 6 has a non-finite coordinate (0, inf, 0)");
+}
+
 TEST_F(BadData, TheOnlySixComponentArrayIsTheTensorsWithoutBeingActive) {
   const fs::path path = write("inactive.vtu", tetrahedron_vtu("0 0 0 1 0 0 0 1 0 0 0 1", false));
   EXPECT_EQ(error_of(path), "no error");
