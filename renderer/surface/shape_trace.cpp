@@ -91,9 +91,20 @@ double FieldRay::first_shape_entry(const BlobField& field, const Vec3& origin, c
   double upper = -1.0;
   for (const Entry& e : entries_) {
     if (upper >= 0.0 && e.t >= upper) break;
+    // u is a norm, so the level surface u = u_level lies inside the
+    // support's box and cylinder scaled by u_level (ray_span.h): a ray
+    // that misses those, most of those that enter the loose bounding
+    // ellipsoid, is settled without a gauge, and Newton starts where it
+    // enters them. (On fig17, 3.97 -> 3.45 shape evaluations an occlusion
+    // ray.)
+    const std::uint32_t source = spans[e.span].source;
+    const ShapeSupport support = source_support(field, source);
+    RaySpan level;
+    if (!ray_span(field.sources[source], source, 0, origin, direction, e.t, upper >= 0.0 ? upper : tmax, level,
+                  {u_level * support.box, u_level * support.radius, support.axis}))
+      continue;
     const ShapeRay r = shape_ray(field, spans[e.span], origin, direction);
-    const double t = shape_entry(field.shape, shape_params(field, spans[e.span].source), r.q0, r.v, u_level, e.t,
-                                 upper >= 0.0 ? upper : tmax);
+    const double t = shape_entry(field.shape, shape_params(field, source), r.q0, r.v, u_level, level.t0, level.t1);
     ++stats.field_evaluations;
     if (t >= 0.0 && (upper < 0.0 || t < upper)) upper = t;
   }
