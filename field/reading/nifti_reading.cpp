@@ -13,8 +13,6 @@
 // Internal to field/; the file is parsed only in a child process.
 
 #include <vtkDataArray.h>
-#include <vtkDoubleArray.h>
-#include <vtkFloatArray.h>
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
 #include <vtkMatrix3x3.h>
@@ -104,15 +102,7 @@ vtkSmartPointer<vtkImageData> read_nifti(const std::string& path, bool scalar) {
   // Otherwise doubles, six components straight into the field's own
   // storage (tensor_storage.h) when read in this process.
   const bool as_float = voxels->GetDataType() == VTK_FLOAT && slope == 1.0 && intercept == 0.0;
-  vtkSmartPointer<vtkDataArray> array;
-  if (!as_float && values == 6) {
-    array = tensor_array_on_storage(voxels->GetNumberOfTuples());
-  } else {
-    if (as_float) array = vtkSmartPointer<vtkFloatArray>::New();
-    else array = vtkSmartPointer<vtkDoubleArray>::New();
-    array->SetNumberOfComponents(values);
-    array->SetNumberOfTuples(voxels->GetNumberOfTuples());
-  }
+  const vtkSmartPointer<vtkDataArray> array = volume_array(voxels->GetNumberOfTuples(), values, as_float);
   array->SetName(scalar ? "values" : values == 3 ? "vectors" : "tensors");
   std::array<double, 9> v{};
   for (vtkIdType i = 0; i < voxels->GetNumberOfTuples(); ++i) {

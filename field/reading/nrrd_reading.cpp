@@ -17,8 +17,6 @@
 // count the header declares is checked against the bytes there are before
 // any is read, so the file is parsed in this process (FormatReader::in_process).
 
-#include <vtkDoubleArray.h>
-#include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkFieldData.h>
 #include <vtkMatrix3x3.h>
@@ -497,17 +495,7 @@ vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path, bool scalar) {
                                                                   : 6;
   const bool as_float = out_components != 6 && values.bytes &&
                         (type.kind == NumberType::floating ? type.bytes == 4 : type.bytes <= 2);
-  vtkSmartPointer<vtkDataArray> array;
-  if (out_components == 6) {
-    array = tensor_array_on_storage(voxels);
-  } else {
-    if (as_float) array = vtkSmartPointer<vtkFloatArray>::New();
-    else array = vtkSmartPointer<vtkDoubleArray>::New();
-    array->SetNumberOfComponents(out_components);
-    array->SetNumberOfTuples(voxels);
-    advise_huge_pages(array->GetVoidPointer(0),
-                      std::size_t(voxels) * std::size_t(out_components) * array->GetDataTypeSize());
-  }
+  const vtkSmartPointer<vtkDataArray> array = volume_array(voxels, out_components, as_float);
   array->SetName(layout.kind == VoxelLayout::scalar   ? "values"
                  : layout.kind == VoxelLayout::vector ? "vectors"
                                                       : "tensors");

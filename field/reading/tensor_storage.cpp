@@ -1,5 +1,6 @@
 #include "field/reading/tensor_storage.h"
 
+#include <vtkFloatArray.h>
 #include <vtkInformation.h>
 #include <vtkInformationObjectBaseKey.h>
 #include <vtkObject.h>
@@ -61,6 +62,17 @@ std::vector<Sym3> take_tensor_storage(vtkDataArray* array) {
   doubles->Initialize();
   doubles->GetInformation()->Remove(storage_key());
   return tensors;
+}
+
+vtkSmartPointer<vtkDataArray> volume_array(vtkIdType tuples, int components, bool as_float) {
+  if (components == 6 && !as_float) return tensor_array_on_storage(tuples);
+  vtkSmartPointer<vtkDataArray> array;
+  if (as_float) array = vtkSmartPointer<vtkFloatArray>::New();
+  else array = vtkSmartPointer<vtkDoubleArray>::New();
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(tuples);
+  advise_huge_pages(array->GetVoidPointer(0), std::size_t(tuples) * std::size_t(components) * array->GetDataTypeSize());
+  return array;
 }
 
 }  // namespace hsb

@@ -5,7 +5,8 @@
 // instead of copying the array into a new one. For Teem's helix at 136³
 // that leaves out a 60 MB float array written, read back and freed beside
 // the 120 MB of doubles, and its first writes (on a virtual machine whose
-// host reclaims idle memory, the slowest part of reading a volume).
+// host reclaims idle memory, the slowest part of reading a volume). The
+// NRRD and NIfTI readers both make their arrays here (volume_array).
 // Internal to field/.
 
 #include <vtkDoubleArray.h>
@@ -27,5 +28,10 @@ vtkSmartPointer<vtkDoubleArray> tensor_array_on_storage(vtkIdType count);
 // empty vector and the array untouched. The values are the array's as they
 // stand, in whatever order its components were written.
 std::vector<Sym3> take_tensor_storage(vtkDataArray* array);
+
+// The array a volume reader writes its `tuples` voxels of `components`
+// values into: six in doubles on such storage, otherwise floats where
+// `as_float` says the file's numbers fit them, else doubles, on huge pages.
+vtkSmartPointer<vtkDataArray> volume_array(vtkIdType tuples, int components, bool as_float);
 
 }  // namespace hsb
