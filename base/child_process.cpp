@@ -33,12 +33,8 @@ bool thread_running(const std::string& tid) {
   return close != std::string::npos && close + 2 < line.size() && line[close + 2] == 'R';
 }
 
-// Waits, for a few tenths of a second at most, until every other thread of
-// this process sleeps. fork() copies only the calling thread: another one
-// stopped in the middle of the allocator leaves its lock held in the child
-// for ever. glibc's malloc guards against that with fork handlers; the
-// sanitizers' allocator of clang 14 does not, and a pool thread that had
-// just finished its work hung one trial read in ten there.
+}  // namespace
+
 void wait_for_quiet_threads() {
   const std::string self = std::to_string(syscall(SYS_gettid));
   for (int tries = 0; tries < 300; ++tries) {
@@ -53,8 +49,6 @@ void wait_for_quiet_threads() {
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
 }
-
-}  // namespace
 
 ChildResult run_in_child(const std::function<void()>& work, double seconds) {
   wait_for_quiet_threads();

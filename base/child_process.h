@@ -22,4 +22,14 @@ struct ChildResult {
 // child has only the calling thread).
 ChildResult run_in_child(const std::function<void()>& work, double seconds);
 
+// Waits, for a few tenths of a second at most, until every other thread of
+// this process sleeps; call it just before any fork() whose child goes on
+// running this program. fork() copies only the calling thread: another one
+// stopped in the middle of the allocator leaves its lock held in the child
+// for ever. glibc's malloc guards against that with fork handlers; the
+// sanitizers' allocator of clang 14 does not: a pool thread that had just
+// finished its work hung one trial read in ten there, and a spare thread
+// still starting hung a forked child's first new thread.
+void wait_for_quiet_threads();
+
 }  // namespace hsb

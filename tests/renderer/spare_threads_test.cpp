@@ -15,6 +15,7 @@
 #include <string>
 #include <thread>
 
+#include "base/child_process.h"
 #include "renderer/image/spare_threads.h"
 
 namespace hsb {
@@ -77,9 +78,11 @@ TEST(SpareThreads, StartWorkWhileTheLoaderHoldsItsLock) {
 }
 
 // A child of a fork has none of its parent's parked threads: its job
-// gets a thread of its own.
+// gets a thread of its own. The fork waits for the parent's threads to
+// sleep, as run_in_child's does: the parked thread may still be starting.
 TEST(SpareThreads, RunAJobInAForkedChild) {
   make_spare_thread();
+  wait_for_quiet_threads();
   EXPECT_EXIT(
       {
         std::future<void> job = run_on_spare_thread([] {});
