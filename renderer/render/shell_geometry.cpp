@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "base/float_steps.h"
 #include "base/point_extremes.h"
 #include "renderer/surface/embree_bounds.h"
 
@@ -111,7 +112,7 @@ void ShellGeometry::crossings(const Vec3& o, const Vec3& d, double tmax, std::si
   rayhit.ray.org_x = float(o.x()), rayhit.ray.org_y = float(o.y()), rayhit.ray.org_z = float(o.z());
   rayhit.ray.dir_x = float(d.x()), rayhit.ray.dir_y = float(d.y()), rayhit.ray.dir_z = float(d.z());
   rayhit.ray.tnear = 0.0f;
-  rayhit.ray.tfar = std::isinf(tmax) ? INFINITY : std::nextafter(float(tmax), INFINITY);
+  rayhit.ray.tfar = std::isinf(tmax) ? INFINITY : float_up(float(tmax));
   rayhit.ray.mask = 0xFFFFFFFFu;
   rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &query.embree, &rayhit);

@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "base/float_steps.h"
 #include "renderer/surface/embree_bounds.h"
 #include "renderer/surface/embree_ray.h"
 #include "renderer/surface/ray_packets.h"
@@ -51,7 +52,7 @@ void prune_beyond_entry(const SpanQueryContext& query, const RaySpan& span, doub
   if (t < 0.0) return;
   constexpr float inf = std::numeric_limits<float>::infinity();
   float& tfar = RTCRayN_tfar(rays, n, lane);
-  tfar = query.stop_at_entry ? -inf : std::min(tfar, std::nextafter(float(t), inf));
+  tfar = query.stop_at_entry ? -inf : std::min(tfar, float_up(float(t)));
 }
 
 // The lanes [first, first + count) of `spans` whose closest approach lies
@@ -301,8 +302,8 @@ std::size_t BlobGeometry::query_spans(const RayInterval* rays, FieldRay* tracers
   constexpr float inf = std::numeric_limits<float>::infinity();
   const auto set = [&](RTCRayHitN* packet, unsigned width, unsigned lane, int i) {
     const RayInterval& ray = rays[i];
-    set_embree_ray(packet, width, lane, unsigned(i), ray.origin, ray.direction, std::nextafter(float(ray.tmin), 0.0f),
-                   std::isinf(ray.tmax) ? inf : std::nextafter(float(ray.tmax), inf));
+    set_embree_ray(packet, width, lane, unsigned(i), ray.origin, ray.direction, float_toward_zero(float(ray.tmin)),
+                   std::isinf(ray.tmax) ? inf : float_up(float(ray.tmax)));
   };
   // A lone ray goes alone: a packet would only add overhead.
   const int width = alone ? 1 : packet_width_;
@@ -400,7 +401,7 @@ bool BlobGeometry::gather_nearby(const Box3& region, std::size_t limit, NearbySo
   query.time = 0.0f;
   // The sphere around the box, a hair larger so float rounding never culls
   // a source that meets the box.
-  query.radius = std::nextafter(float(0.5 * region.diagonal() * (1.0 + 1e-6)), INFINITY);
+  query.radius = float_up(float(0.5 * region.diagonal() * (1.0 + 1e-6)));
   RTCPointQueryContext context;
   rtcInitPointQueryContext(&context);
   rtcPointQuery(span_scene_, &query, &context, nearby_candidate, &q);

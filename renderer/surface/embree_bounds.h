@@ -3,10 +3,8 @@
 
 #include <embree3/rtcore.h>
 
-#include <cmath>
-#include <limits>
-
 #include "base/box3.h"
+#include "base/float_steps.h"
 
 namespace hsb {
 
@@ -21,13 +19,12 @@ inline double bounds_margin(double diagonal) { return 1e-5 * diagonal; }
 
 // Widens a double box by `margin` and rounds it outwards to float.
 inline void store_bounds(const Box3& box, double margin, RTCBounds* out) {
-  constexpr float inf = std::numeric_limits<float>::infinity();
-  out->lower_x = std::nextafter(static_cast<float>(box.lo.x() - margin), -inf);
-  out->lower_y = std::nextafter(static_cast<float>(box.lo.y() - margin), -inf);
-  out->lower_z = std::nextafter(static_cast<float>(box.lo.z() - margin), -inf);
-  out->upper_x = std::nextafter(static_cast<float>(box.hi.x() + margin), inf);
-  out->upper_y = std::nextafter(static_cast<float>(box.hi.y() + margin), inf);
-  out->upper_z = std::nextafter(static_cast<float>(box.hi.z() + margin), inf);
+  out->lower_x = float_down(static_cast<float>(box.lo.x() - margin));
+  out->lower_y = float_down(static_cast<float>(box.lo.y() - margin));
+  out->lower_z = float_down(static_cast<float>(box.lo.z() - margin));
+  out->upper_x = float_up(static_cast<float>(box.hi.x() + margin));
+  out->upper_y = float_up(static_cast<float>(box.hi.y() + margin));
+  out->upper_z = float_up(static_cast<float>(box.hi.z() + margin));
 }
 
 }  // namespace hsb

@@ -14,6 +14,8 @@
 #include <cstring>
 #include <vector>
 
+#include "base/bit_cast.h"
+
 namespace hsb {
 
 struct RayEvent {
@@ -27,9 +29,7 @@ struct RayEvent {
   // to retire (a store-forwarding stall): three quarters of
   // SupportSweep::begin's samples sat on that one load.
   RayEvent(double at, std::uint32_t i) {
-    std::int64_t bits;
-    std::memcpy(&bits, &at, sizeof bits);
-    const __m128i packed = _mm_set_epi64x(std::int64_t(i), bits);
+    const __m128i packed = _mm_set_epi64x(std::int64_t(i), bit_cast<std::int64_t>(at));
     std::memcpy(static_cast<void*>(this), &packed, sizeof packed);
   }
 

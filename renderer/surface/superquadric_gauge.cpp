@@ -1,26 +1,15 @@
 #include "renderer/surface/superquadric_gauge.h"
 
+#include "base/bit_cast.h"
 #include "renderer/surface/isa_variants.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 
 namespace hsb {
 
 namespace {
-
-inline std::uint64_t bits_of(double x) {
-  std::uint64_t b;
-  std::memcpy(&b, &x, sizeof b);
-  return b;
-}
-inline double double_of(std::uint64_t b) {
-  double x;
-  std::memcpy(&x, &b, sizeof x);
-  return x;
-}
 
 // log₂ x for x in [2⁻⁶⁴, 2] (normal, positive). x = 2^e m with m in
 // [√½, √2), e read from the bits (biased by 1024 so that the shift is a
@@ -29,12 +18,12 @@ inline double double_of(std::uint64_t b) {
 // term is below 10⁻¹⁸ of the sum). log₂ 1 is exactly 0.
 [[gnu::always_inline]] inline double log2_core(double x) {
   constexpr std::uint64_t kSqrtHalf = 0x3FE6A09E667F3BCDull;
-  const std::uint64_t bits = bits_of(x);
+  const std::uint64_t bits = bit_cast<std::uint64_t>(x);
   const std::uint64_t biased = (bits - kSqrtHalf + (std::uint64_t(1024) << 52)) >> 52;
-  const double m = double_of(bits - ((biased - 1024) << 52));
+  const double m = bit_cast<double>(bits - ((biased - 1024) << 52));
   // 2⁵² + biased, exactly, less 2⁵²: the exponent as a double without an
   // integer conversion (which takes AVX-512 for 64-bit lanes).
-  const double e = (double_of(0x4330000000000000ull | biased) - 0x1p52) - 1024.0;
+  const double e = (bit_cast<double>(0x4330000000000000ull | biased) - 0x1p52) - 1024.0;
   const double s = (m - 1.0) / (m + 1.0), z = s * s;
   // Σ z^j/(2j + 1), j ≤ 11, by Estrin's scheme: pairs, then pairs of pairs,
   // a third of Horner's chain of dependent steps (a glyph alone, as Newton
@@ -62,7 +51,7 @@ inline double double_of(std::uint64_t b) {
   const double p67 = 1.0 / 720 + f * (1.0 / 5040), p89 = 1.0 / 40320 + f * (1.0 / 362880);
   const double p1011 = 1.0 / 3628800 + f * (1.0 / 39916800), p1213 = 1.0 / 479001600 + f * (1.0 / 6227020800);
   const double p = ((p01 + f2 * p23) + f4 * (p45 + f2 * p67)) + f8 * ((p89 + f2 * p1011) + f4 * p1213);
-  return p * double_of((bits_of(shifted) + 1023) << 52);
+  return p * bit_cast<double>((bit_cast<std::uint64_t>(shifted) + 1023) << 52);
 }
 
 // ‖(x, y)‖_p for p ≥ 2 and its partial derivatives, each in [−1, 1]. The
