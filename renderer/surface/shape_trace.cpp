@@ -20,6 +20,7 @@
 #include <cmath>
 #include <limits>
 
+#include "base/bit_cast.h"
 #include "renderer/surface/field_ray.h"
 #include "renderer/surface/single_source.h"
 
@@ -50,16 +51,21 @@ void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, co
   // In the order the ray enters them, ties in spatial rank order: every
   // sum over the spans is then the same to the bit whatever order the BVH
   // handed them over in, and a sum up to some t stops at the first span
-  // that starts beyond it. The keys are sorted and the spans gathered.
+  // that starts beyond it. The keys are sorted and the spans gathered. A
+  // double's bits, the sign bit flipped (all of them for a negative one),
+  // are ordered as the doubles are.
   // Each span's columns are read by every proof, its ray only where it is
   // evaluated: a third of the spans never are (beyond a camera ray's hit,
   // or bounded all along), and their rays are not made.
   keys_.resize(count);
-  for (std::size_t i = 0; i < count; ++i) keys_[i] = {spans[i].t0, spans[i].rank, std::uint32_t(i)};
-  std::sort(keys_.begin(), keys_.end(),
-            [](const SpanKey& a, const SpanKey& b) { return a.t0 < b.t0 || (a.t0 == b.t0 && a.rank < b.rank); });
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::uint64_t bits = bit_cast<std::uint64_t>(spans[i].t0 + 0.0);  // (−0 as +0)
+    const std::uint64_t ordered = bits >> 63 ? ~bits : bits | (std::uint64_t{1} << 63);
+    keys_[i] = (SpanKey{ordered} << 64) | (std::uint64_t{spans[i].rank} << 32) | i;
+  }
+  std::sort(keys_.begin(), keys_.end());
   sorted_spans_.resize(count);
-  for (std::size_t i = 0; i < count; ++i) sorted_spans_[i] = spans[keys_[i].index];
+  for (std::size_t i = 0; i < count; ++i) sorted_spans_[i] = spans[std::uint32_t(keys_[i])];
   spans.swap(sorted_spans_);
   shape_rays_.resize(count);
   t0_.resize(count), t1_.resize(count), t_c_.resize(count), a_.resize(count), g_min_.resize(count);
