@@ -124,8 +124,10 @@ class FieldRay {
 
   // Each span's ray in its source's stored frame, q_s(t) = q0 + t v; only
   // for shapes other than the ellipsoid.
+  // rate: Lσ√a, the most u changes per unit along the ray (glyph_shape.h).
   struct ShapeRay {
     Vec3 q0, v;
+    double rate;
   };
 
   // Shapes other than the ellipsoid (shape_trace.cpp). Their g is not
@@ -164,13 +166,12 @@ class FieldRay {
   //    slopes.
   double refine_shape(const BlobField& field, double lo, double hi, double f_lo, double f_hi,
                       TraceStats& stats) const;
-  //  - What is known of each span, a column each, for the bounds of its
-  //    K (span_bounds.h): its last tangent, or before that the most u can
-  //    fall from its edge, and its bounding ellipsoid.
-  SpanColumns span_columns() const {
-    return {t0_.data(), t1_.data(), t_c_.data(), a_.data(), g_min_.data(), fall_.data(),
-            u_.data(), du_dt_.data(), tangent_at_.data()};
-  }
+  //  - An upper bound of span i's K over [from, s] (from within its
+  //    interval) from what is known of it: its last tangent, or before
+  //    that the most u can fall from its edge, and its bounding ellipsoid
+  //    (span_bounds.h); bound_row() is what it knows.
+  double term_bound(const BlobField& field, std::size_t i, double from, double s) const;
+  SpanBoundRow bound_row(std::size_t i, double from) const;
   bool has_tangent(std::size_t i) const { return tangent_at_[i] >= spans[i].t0; }
   //  - The largest s ≤ tmax up to which F < C is proven from what the
   //    last shape_value_at() found (to within a hundredth of the way, or
@@ -198,14 +199,11 @@ class FieldRay {
   std::vector<double> peaks_;  // each span's largest value on its interval
   bool quadric_ = true;  // the field's shape is the ellipsoid (shape_is_quadric)
   const SupportPlanes* origin_planes_ = nullptr;  // leave_surface()
-  // Each span's ray (q0 and v, made when it is first evaluated: ray_made_),
-  // of the ray o + t d prepare_shape_rays() was given.
+  // Each span's ray (its rate from the start, q0 and v once it is first
+  // evaluated: ray_made_), of the ray o + t d prepare_shape_rays() was given.
   mutable std::vector<ShapeRay> shape_rays_;
   mutable std::vector<std::uint8_t> ray_made_;
   Vec3 ray_origin_ = Vec3::Zero(), ray_direction_ = Vec3::Zero();
-  // The spans' columns for the bounds (span_bounds.h): their intervals,
-  // bounding ellipsoids and greatest rates of fall, Lσ√a (glyph_shape.h).
-  std::vector<double> t0_, t1_, t_c_, a_, g_min_, fall_;
   // Each span's u and du/dt where shape_value_at() last evaluated it.
   mutable std::vector<double> u_, du_dt_;
   // Where each span's u and du/dt were found (−∞ before its first).
@@ -239,8 +237,8 @@ class FieldRay {
   // Every span before it ended before the walk's last probe, where the
   // next probe looks from.
   std::size_t first_open_ = 0;
-  // A bound probe's bound of each span's term, from first_open_ on.
-  mutable std::vector<double> probe_bounds_;
+  // proven_below_until()'s scratch: the bound's rows and their values.
+  mutable SpanBoundRows rows_;
   // prepare_shape_rays()'s scratch for putting the spans in order: each
   // span's key, one 128-bit integer ordered as (t0, rank) with the span's
   // index below it, so a step of the sort is one comparison, where a key

@@ -43,7 +43,7 @@ FieldRay::ShapeRay FieldRay::shape_ray(const BlobField& field, const RaySpan& sp
                                        const Vec3& direction) const {
   const BlobSource& source = field.sources[span.source];
   const Mat3 w = shape_matrix(source);
-  return {scaled_offset(source, w, origin), w * direction};
+  return {scaled_offset(source, w, origin), w * direction, span_rate(field, span)};
 }
 
 void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, const Vec3& direction) {
@@ -54,7 +54,7 @@ void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, co
   // that starts beyond it. The keys are sorted and the spans gathered. A
   // double's bits, the sign bit flipped (all of them for a negative one),
   // are ordered as the doubles are.
-  // Each span's columns are read by every proof, its ray only where it is
+  // Each span's rate is needed by every proof, its ray only where it is
   // evaluated: a third of the spans never are (beyond a camera ray's hit,
   // or bounded all along), and their rays are not made.
   keys_.resize(count);
@@ -68,13 +68,7 @@ void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, co
   for (std::size_t i = 0; i < count; ++i) sorted_spans_[i] = spans[std::uint32_t(keys_[i])];
   spans.swap(sorted_spans_);
   shape_rays_.resize(count);
-  t0_.resize(count), t1_.resize(count), t_c_.resize(count), a_.resize(count), g_min_.resize(count);
-  fall_.resize(count);
-  for (std::size_t i = 0; i < count; ++i) {
-    const RaySpan& s = spans[i];
-    t0_[i] = s.t0, t1_[i] = s.t1, t_c_[i] = s.t_c, a_[i] = s.a, g_min_[i] = s.g_min;
-    fall_[i] = span_rate(field, s);
-  }
+  for (std::size_t i = 0; i < count; ++i) shape_rays_[i].rate = span_rate(field, spans[i]);
   ray_made_.assign(count, 0);
   first_open_ = 0;
   ray_origin_ = origin;
@@ -153,13 +147,6 @@ double FieldRay::probe_at(const BlobField& field, double t, TraceStats& stats, S
 }
 
 double FieldRay::shape_value_at(const BlobField& field, double t, TraceStats& stats, Probe probe) const {
-  if (probe == Probe::bound) {
-    // Every span begun by t, its bound there, all at once (span_bounds.h).
-    std::size_t begun = first_open_;
-    while (begun < spans.size() && t0_[begun] <= t) ++begun;
-    probe_bounds_.resize(begun - first_open_);
-    span_bounds_at(span_columns(), first_open_, begun, t, field.kernel, probe_bounds_.data());
-  }
   return probe_at(field, t, stats, [&](std::size_t i, double& k) {
     if (probe != Probe::bound) return false;
     // What the proofs already know of its value here. Not evaluated
@@ -173,7 +160,7 @@ double FieldRay::shape_value_at(const BlobField& field, double t, TraceStats& st
     // steps a camera ray's walk against 9.4 with a tangent for each, the
     // same gauges evaluated).
     if (!has_tangent(i)) return false;
-    k = probe_bounds_[i - first_open_];
+    k = term_bound(field, i, t, t);
     return du_dt_[i] >= 0.0 || k <= kSliver * field.isovalue;
   });
 }
@@ -240,7 +227,7 @@ double FieldRay::plane_probe(const BlobField& field, const SupportPlanes& planes
     u_[i] = plane->u + plane->gradient.dot(offset);
     du_dt_[i] = plane->gradient.dot(direction);
     tangent_at_[i] = t;
-    k = span_bound(span_columns(), i, t, t, field.kernel);
+    k = term_bound(field, i, t, t);
     return true;
   });
 }
@@ -282,42 +269,69 @@ double FieldRay::refine_shape(const BlobField& field, double lo, double hi, doub
   return hi;
 }
 
+// Inlined: the proofs build tens of rows each, and the call cost as much
+// as the row.
+[[gnu::always_inline]] inline SpanBoundRow FieldRay::bound_row(std::size_t i, double from) const {
+  const RaySpan& span = spans[i];
+  // Not yet evaluated, u ≥ 1 at the support's edge t0 and changes at most
+  // Lσ√a per unit (glyph_shape.h); convex, so above its tangent where it
+  // was last evaluated, which is lowest at the interval's end it falls
+  // towards (its end if it falls, `from` if it rises). And u ≥ √g_e, the
+  // bounding ellipsoid's, smallest where the ray is closest to its centre.
+  SpanBoundRow r{span.t1, 1.0, -shape_rays_[i].rate, span.t0, std::max(span.t_c, from), span.t_c, span.a, span.g_min};
+  if (has_tangent(i)) {
+    if (du_dt_[i] < 0.0) r.u0 = u_[i], r.rate = du_dt_[i], r.tau = tangent_at_[i];
+    else r.u0 = u_[i] + du_dt_[i] * (from - tangent_at_[i]), r.rate = 0.0, r.tau = 0.0;
+  }
+  return r;
+}
+
+[[gnu::always_inline]] inline double FieldRay::term_bound(const BlobField& field, std::size_t i, double from,
+                                                           double s) const {
+  return span_bound(bound_row(i, from), s, field.kernel);
+}
+
 double FieldRay::proven_below_until(const BlobField& field, double tmax, double min_step) const {
   const double t = probed_at_, c = field.isovalue;
   // F is a sum here: a union's crossing is its first entry, which
   // group_crossing finds without a walk.
-  // An upper bound of F over [t, s]: each source's largest value there,
-  // at most its peak on the ray, over the spans live at t and those begun
-  // by s (span_bounds.h). The spans are in the order they begin, so those
-  // are a run from first_open_ on (the ones in it that ended before t add
-  // nothing), and a sum up to s costs only the spans begun by s: the short
-  // tries are cheap. It never falls as s grows.
-  const SpanColumns columns = span_columns();
-  const auto bound = [&](double s) {
-    const std::size_t begun = std::size_t(std::upper_bound(t0_.begin() + std::ptrdiff_t(first_unbegun_), t0_.end(), s) -
-                                          t0_.begin());
-    return span_bounds_sum(columns, first_open_, begun, t, s, field.kernel);
-  };
   // A span live at t that is past its closest approach by both its
-  // tangent and its bounding ellipsoid has its largest value at t,
-  // whatever s. With only such spans live, the bound stays at its value
-  // at t until the next span begins: the steps start there.
-  bool rising = false;
-  for (std::uint32_t i : live_) rising |= !(has_tangent(i) && du_dt_[i] >= 0.0 && spans[i].t_c <= t);
+  // tangent and its bounding ellipsoid has its largest value at t, whatever
+  // s: those are summed once. (One a probe skipped before its first
+  // tangent still falls by its rate from its edge.) The others are rows
+  // of the bound, from t.
+  double fixed = 0.0;
+  rows_.clear();
+  for (std::uint32_t i : live_) {
+    if (has_tangent(i) && du_dt_[i] >= 0.0 && spans[i].t_c <= t)
+      fixed += term_bound(field, i, t, t);
+    else rows_.push(bound_row(i, t));
+  }
+  const std::size_t rising = rows_.size();
+  // An upper bound of F over [t, s]: each source's largest value there,
+  // at most its peak on the ray. It never falls as s grows. The spans in
+  // their order: those live at t, then those begun by s, each a row from
+  // where it begins, added as the tries first reach it.
+  std::size_t next = first_unbegun_;
+  const auto bound = [&](double s) {
+    for (; next < spans.size() && spans[next].t0 <= s; ++next) rows_.push(bound_row(next, spans[next].t0));
+    std::size_t count = rows_.size();
+    while (count > rising && spans[first_unbegun_ + (count - rising) - 1].t0 > s) --count;
+    return fixed + span_bounds_sum(rows_, count, s, field.kernel);
+  };
   // Out by doubling steps, from the last proof's length, to the first s
   // the bound does not clear (a sum up to s costs only the spans begun by
   // s, so the short tries are cheap), then the Illinois method on the
   // bound's excess over C, e(lo) < 0 ≤ e(hi) (regula falsi, halving the
   // weight of an end kept twice): within a hundredth of the way is far
-  // enough. Before any try, F at t stands in for the bound there.
+  // enough. Before any try, F at t stands in for the bound there. With no
+  // live source still rising, the bound stays `fixed` until the next
+  // source begins: the steps start there.
   double lo = t, hi = tmax, e_lo = probed_value_ - c, e_hi = 0.0;
-  if (!rising) {
-    const double fixed = bound(t);
-    if (fixed < c) {
-      if (first_unbegun_ == spans.size()) return tmax;
-      lo = std::min(spans[first_unbegun_].t0, tmax);
-      e_lo = fixed - c;
-    }
+  if (rising == 0 && fixed < c) {
+    if (first_unbegun_ == spans.size()) return tmax;
+    lo = std::min(spans[first_unbegun_].t0, tmax);
+    e_lo = fixed - c;
   }
   for (double step = std::max({proof_step_, min_step, lo - t}); lo < tmax; step *= 2.0) {
     const double s = std::min(lo + step, tmax);

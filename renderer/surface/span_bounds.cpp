@@ -5,66 +5,51 @@
 
 namespace hsb {
 
+void SpanBoundRows::grow() {
+  const std::size_t capacity = std::max<std::size_t>(64, 2 * capacity_);
+  std::vector<double> data(kColumns * capacity);
+  for (std::size_t j = 0; j < kColumns; ++j)
+    std::copy_n(data_.data() + j * capacity_, rows_, data.data() + j * capacity);
+  data_.swap(data);
+  capacity_ = capacity;
+}
+
 namespace {
 
 // The kernel fixed for the whole loop, its switch out of it: the
 // polynomial kernels' loops vectorise (Blinn's exponential runs one at a
-// time). Whole groups of kSumLanes spans, then the rest into the first sums.
+// time). Whole groups of kSumLanes rows, then the rest into the first sums.
 template <KernelKind kKernel>
-[[gnu::always_inline]] inline double sum_loop(const SpanColumns& c, std::size_t first, std::size_t end, double t,
-                                              double s) {
+[[gnu::always_inline]] inline double sum_loop(const SpanBoundRows& r, std::size_t count, double s) {
   double sums[kSumLanes] = {};
-  std::size_t i = first;
-  for (; i + kSumLanes <= end; i += kSumLanes)
-    for (std::size_t j = 0; j < kSumLanes; ++j) sums[j] += span_bound(c, i + j, t, s, kKernel);
-  for (std::size_t j = 0; i + j < end; ++j) sums[j] += span_bound(c, i + j, t, s, kKernel);
+  std::size_t k = 0;
+  for (; k + kSumLanes <= count; k += kSumLanes)
+    for (std::size_t j = 0; j < kSumLanes; ++j) sums[j] += span_bound(r.row(k + j), s, kKernel);
+  for (std::size_t j = 0; k + j < count; ++j) sums[j] += span_bound(r.row(k + j), s, kKernel);
   return ((sums[0] + sums[1]) + (sums[2] + sums[3])) + ((sums[4] + sums[5]) + (sums[6] + sums[7]));
 }
 
-template <KernelKind kKernel>
-[[gnu::always_inline]] inline void each_loop(const SpanColumns& c, std::size_t first, std::size_t end, double t,
-                                             double* out) {
-  for (std::size_t i = first; i < end; ++i) out[i - first] = span_bound(c, i, t, t, kKernel);
-}
-
-#define HSB_BOUNDS_KERNELS(suffix, target_isa)                                                                  \
-  __attribute__((target(target_isa))) double sum_##suffix(const SpanColumns& c, std::size_t first,             \
-                                                          std::size_t end, double t, double s, KernelKind kernel) { \
-    switch (kernel) {                                                                                           \
-      case KernelKind::wyvill: return sum_loop<KernelKind::wyvill>(c, first, end, t, s);                        \
-      case KernelKind::quartic: return sum_loop<KernelKind::quartic>(c, first, end, t, s);                      \
-      case KernelKind::blinn: return sum_loop<KernelKind::blinn>(c, first, end, t, s);                          \
-    }                                                                                                           \
-    return 0.0;                                                                                                 \
-  }                                                                                                             \
-  __attribute__((target(target_isa))) void each_##suffix(const SpanColumns& c, std::size_t first,              \
-                                                         std::size_t end, double t, KernelKind kernel,          \
-                                                         double* out) {                                         \
-    switch (kernel) {                                                                                           \
-      case KernelKind::wyvill: return each_loop<KernelKind::wyvill>(c, first, end, t, out);                     \
-      case KernelKind::quartic: return each_loop<KernelKind::quartic>(c, first, end, t, out);                   \
-      case KernelKind::blinn: return each_loop<KernelKind::blinn>(c, first, end, t, out);                       \
-    }                                                                                                           \
+#define HSB_BOUNDS_KERNEL(suffix, target_isa)                                                                \
+  __attribute__((target(target_isa))) double bounds_##suffix(const SpanBoundRows& rows, std::size_t count,   \
+                                                             double s, KernelKind kernel) {                  \
+    switch (kernel) {                                                                                        \
+      case KernelKind::wyvill: return sum_loop<KernelKind::wyvill>(rows, count, s);                          \
+      case KernelKind::quartic: return sum_loop<KernelKind::quartic>(rows, count, s);                        \
+      case KernelKind::blinn: return sum_loop<KernelKind::blinn>(rows, count, s);                            \
+    }                                                                                                        \
+    return 0.0;                                                                                              \
   }
-HSB_FOR_EACH_ISA(HSB_BOUNDS_KERNELS)
-#undef HSB_BOUNDS_KERNELS
+HSB_FOR_EACH_ISA(HSB_BOUNDS_KERNEL)
+#undef HSB_BOUNDS_KERNEL
 
 // In InstructionSet order.
-constexpr double (*kSums[])(const SpanColumns&, std::size_t, std::size_t, double, double, KernelKind) = {
-    sum_sse2, sum_sse42, sum_avx, sum_avx2, sum_avx512};
-constexpr void (*kEach[])(const SpanColumns&, std::size_t, std::size_t, double, KernelKind, double*) = {
-    each_sse2, each_sse42, each_avx, each_avx2, each_avx512};
+constexpr double (*kBounds[])(const SpanBoundRows&, std::size_t, double, KernelKind) = {
+    bounds_sse2, bounds_sse42, bounds_avx, bounds_avx2, bounds_avx512};
 
 }  // namespace
 
-double span_bounds_sum(const SpanColumns& c, std::size_t first, std::size_t end, double t, double s,
-                       KernelKind kernel) {
-  return kSums[std::size_t(active_isa())](c, first, end, t, s, kernel);
-}
-
-void span_bounds_at(const SpanColumns& c, std::size_t first, std::size_t end, double t, KernelKind kernel,
-                    double* out) {
-  kEach[std::size_t(active_isa())](c, first, end, t, kernel, out);
+double span_bounds_sum(const SpanBoundRows& rows, std::size_t count, double s, KernelKind kernel) {
+  return kBounds[std::size_t(active_isa())](rows, count, s, kernel);
 }
 
 }  // namespace hsb
