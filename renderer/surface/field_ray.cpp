@@ -178,13 +178,14 @@ double FieldRay::group_crossing(const BlobField& field, const Vec3& origin, cons
     const RaySpan& s = spans[i];
     // (Another shape's value at tmin is shape_trace's first probe.)
     if (quadric_ && s.t0 <= tmin) at_start += kernel_value(field.kernel, s.g(tmin));  // a sum: a union has its answer
-    peaks_[i] = kernel_value(field.kernel, s.g(peak_t(s)));
+    // (A shape's own lower bound of g, which may be tighter than g_e's.)
+    peaks_[i] = kernel_value(field.kernel, quadric_ ? s.g(peak_t(s)) : s.least_lower_g());
     peaks += peaks_[i];
     last_peak = std::max(last_peak, peak_t(s));
   }
   stats.kernel_evaluations += 2 * spans.size();
   if (!quadric_) {
-    // Blended sources whose peaks (from g_e, upper bounds) sum below C
+    // Blended sources whose peaks (upper bounds) sum below C
     // leave F below it: nothing of the shapes is needed.
     if (upper < 0.0 && peaks < c) return -1.0;
     // An `any` query ends at an exact entry.

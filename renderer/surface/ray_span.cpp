@@ -47,8 +47,15 @@ inline ScaledRay scaled_ray(const double (&w)[9], double cx, double cy, double c
           {x0, x1, x2}};
 }
 
+// A lower bound of g in vertex form, g ≥ a (t − t_v)² + g_v (RaySpan's
+// lower_*).
+struct VertexForm {
+  double a, t_v, g_v;
+};
+
 struct LaneSpan {
   double t0, t1, a, t_c, g_min;
+  VertexForm lower;
   bool enters;
 };
 
@@ -62,20 +69,26 @@ inline LaneSpan finish_span(const ScaledRay& r, double tmin, double tmax) {
   const double half_width = std::sqrt(reach > 0.0 ? reach : 0.0);
   const double t0 = tc - half_width > tmin ? tc - half_width : tmin;
   const double t1 = tc + half_width < tmax ? tc + half_width : tmax;
-  return {t0, t1, r.a, tc, g_min, bool(r.line_enters() & (g_min < 1.0) & (t0 < t1))};
+  return {t0, t1, r.a, tc, g_min, {r.a, tc, g_min}, bool(r.line_enters() & (g_min < 1.0) & (t0 < t1))};
 }
 
 // A third stage for shapes with a box (ray_span.h): the span narrowed to
 // where q(t) is inside |q_k| ≤ box on every axis k. Each slab is centred
 // where q_k = 0 and box/|wd_k| wide on either side (one division an axis,
 // not two); a ray parallel to a slab is inside it everywhere or nowhere.
-// Branch-free, as the stages before.
-inline void clip_to_box(const ScaledRay& r, double box, LaneSpan& span) {
+// Branch-free, as the stages before. `slabs` gets what each slab says of
+// g: u ≥ |q_k|/box (the gauge is at least its largest component,
+// glyph_shape.h), so g ≥ (wd_k/box)² (t − centre)², or the constant
+// (wp_k/box)² along a ray parallel to the slab.
+inline void clip_to_box(const ScaledRay& r, double box, LaneSpan& span, VertexForm (&slabs)[3]) {
   constexpr double inf = std::numeric_limits<double>::infinity();
+  const double inv_box2 = 1.0 / (box * box);
   bool outside = false;
   for (int k = 0; k < 3; ++k) {
     const double inverse = 1.0 / r.wd[k], centre = -r.wp[k] * inverse, reach = box * std::fabs(inverse);
     const bool parallel = r.wd[k] == 0.0;
+    slabs[k] = {(r.wd[k] * r.wd[k]) * inv_box2, parallel ? 0.0 : centre,
+                parallel ? (r.wp[k] * r.wp[k]) * inv_box2 : 0.0};
     const double lo = parallel ? -inf : centre - reach, hi = parallel ? inf : centre + reach;
     outside |= parallel & (std::fabs(r.wp[k]) > box);
     span.t0 = span.t0 < lo ? lo : span.t0;
@@ -89,7 +102,10 @@ inline void clip_to_box(const ScaledRay& r, double box, LaneSpan& span) {
 // for those, 0 for the axis's), its closest approach from the axis's
 // component of Wp × Wd as g's is from the whole (Lagrange's identity in
 // the plane across). A ray along the axis is inside everywhere or nowhere.
-inline void clip_to_cylinder(const ScaledRay& r, double radius, const double (&across)[3], LaneSpan& span) {
+// `wall` gets what the cylinder says of g: u ≥ ‖q_⊥‖/radius (glyph_shape.h,
+// support_cylinder_radius), so g ≥ that quadratic over radius².
+inline void clip_to_cylinder(const ScaledRay& r, double radius, const double (&across)[3], LaneSpan& span,
+                             VertexForm& wall) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   double a = 0.0, half_b = 0.0, p = 0.0, x = 0.0;
   for (int k = 0; k < 3; ++k) {
@@ -104,6 +120,8 @@ inline void clip_to_cylinder(const ScaledRay& r, double radius, const double (&a
   const double reach = (radius2 - g_min) * inv_a;
   const double half_width = std::sqrt(reach > 0.0 ? reach : 0.0);
   const double lo = parallel ? -inf : tc - half_width, hi = parallel ? inf : tc + half_width;
+  const double inv_radius2 = 1.0 / radius2;
+  wall = {a * inv_radius2, parallel ? 0.0 : tc, (parallel ? p : g_min) * inv_radius2};
   // In & and |, not `parallel ? … : …`: that select of two comparisons
   // kept GCC from vectorising the lane loops.
   const bool outside = (parallel & (p > radius2)) | (!parallel & (g_min > radius2));
@@ -112,11 +130,41 @@ inline void clip_to_cylinder(const ScaledRay& r, double radius, const double (&a
   span.enters = span.enters & !outside & (span.t0 <= span.t1);
 }
 
-// Both narrowings of a shape's span: its box, then its cylinder.
+// The least value of a vertex form on the span: where the span comes
+// nearest its vertex.
+inline double least_on_span(const VertexForm& f, const LaneSpan& span) {
+  const double above = f.t_v < span.t0 ? span.t0 : f.t_v;
+  const double d = (above > span.t1 ? span.t1 : above) - f.t_v;
+  return f.a * d * d + f.g_v;
+}
+
+// Both narrowings of a shape's span, its box, then its cylinder, and the
+// span's lower bound of g: of the slabs' and the cylinder's bounds, the one
+// whose least value on the span is largest, if that is larger than g_e's
+// there (g_e's own otherwise, finish_span). A sharp glyph's g_e is up to
+// three times too small on its faces, where the slabs are exact; a disc's
+// rim is the cylinder's. Only one is kept, in g_e's form, so the tracer's
+// bounds cost no more (RaySpan::lower_a). On fig05 as superquadrics, 960²,
+// one sample: 3.72 -> 2.27 probes a shadow ray, 0.53 -> 0.43 a camera
+// ray. Each is shrunk by 10⁻⁶ of itself, as σ is for g_e, against the
+// rounding of t − t_v where t is far larger.
 inline void clip_to_support(const ScaledRay& r, double box, double radius, const double (&across)[3],
                             LaneSpan& span) {
-  clip_to_box(r, box, span);
-  clip_to_cylinder(r, radius, across, span);
+  VertexForm slabs[3], wall;
+  clip_to_box(r, box, span, slabs);
+  clip_to_cylinder(r, radius, across, span, wall);
+  double best = least_on_span(span.lower, span);
+  const auto keep_if_better = [&](VertexForm f) {
+    f.a *= 1.0 - 1e-6, f.g_v *= 1.0 - 1e-6;
+    const double least = least_on_span(f, span);
+    const bool better = least > best;
+    best = better ? least : best;
+    span.lower.a = better ? f.a : span.lower.a;
+    span.lower.t_v = better ? f.t_v : span.lower.t_v;
+    span.lower.g_v = better ? f.g_v : span.lower.g_v;
+  };
+  for (const VertexForm& f : slabs) keep_if_better(f);
+  keep_if_better(wall);
 }
 
 template <bool Boxed>
@@ -135,6 +183,9 @@ inline void store(const LaneSpan& span, SpanLanes& spans, int i) {
   spans.a[i] = span.a;
   spans.t_c[i] = span.t_c;
   spans.g_min[i] = span.g_min;
+  spans.lower_a[i] = span.lower.a;
+  spans.lower_t[i] = span.lower.t_v;
+  spans.lower_g[i] = span.lower.g_v;
 }
 
 // The lane loops. They have no branches, so the compiler turns them into
@@ -243,7 +294,8 @@ bool ray_span(const BlobSource& s, std::uint32_t index, std::uint32_t rank, cons
     clip_to_support(r, support.box, support.radius, across, lane);
   }
   if (!lane.enters) return false;
-  span = RaySpan{lane.t0, lane.t1, lane.a, lane.t_c, lane.g_min, index, rank};
+  span = RaySpan{lane.t0, lane.t1, lane.a, lane.t_c, lane.g_min, index, rank, lane.lower.a, lane.lower.t_v,
+                 lane.lower.g_v};
   return true;
 }
 

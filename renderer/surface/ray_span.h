@@ -3,6 +3,7 @@
 // g ≤ 1 (the source's support on the ray). Computed for a whole packet of
 // rays at once, because that is how the span BVH asks.
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -26,8 +27,18 @@ struct RaySpan {
   double g_min;     // g(t_c)
   std::uint32_t source;
   std::uint32_t rank = 0;  // the source's spatial rank (spatial_rank.h): the order a ray's spans are kept in
+  // The glyph-shape tracer's lower bound of the shape's own g on [t0, t1],
+  // in the same vertex form: g ≥ lower_a (t − lower_t)² + lower_g. g_e's
+  // quadratic above, or a tighter one from the shape's box or cylinder
+  // (ray_span.cpp, clip_to_support).
+  double lower_a = 0.0, lower_t = 0.0, lower_g = 0.0;
 
   double g(double t) const { return a * (t - t_c) * (t - t_c) + g_min; }
+  // The lower bound's least value on [t0, t1].
+  double least_lower_g() const {
+    const double d = std::clamp(lower_t, t0, t1) - lower_t;
+    return lower_a * d * d + lower_g;
+  }
 };
 
 // Where g is smallest on the span: the source's peak along the ray.
@@ -84,15 +95,16 @@ inline ShapeSupport source_support(const BlobField& field, std::size_t i) {
 }
 
 // The spans of one source on lanes [first, first + count) of `rays`, in the
-// same lanes of `spans` (fields t0, t1, a, t_c, g_min; `source` is left to
+// same lanes of `spans` (fields t0 to g_min and lower_*; `source` is left to
 // the caller). Returns a bit mask of the lanes whose ray enters the
 // source's support.
 struct SpanLanes {
   alignas(64) double t0[kMaxPacket], t1[kMaxPacket], a[kMaxPacket], t_c[kMaxPacket], g_min[kMaxPacket];
+  alignas(64) double lower_a[kMaxPacket], lower_t[kMaxPacket], lower_g[kMaxPacket];
 
   // Lane i as the span of source number `source`, of spatial rank `rank`.
   RaySpan span(int i, std::uint32_t source, std::uint32_t rank) const {
-    return RaySpan{t0[i], t1[i], a[i], t_c[i], g_min[i], source, rank};
+    return RaySpan{t0[i], t1[i], a[i], t_c[i], g_min[i], source, rank, lower_a[i], lower_t[i], lower_g[i]};
   }
   // The same appended to `list`, written there field by field: a span
   // made on the stack and copied in whole was read back in 16-byte pieces
@@ -101,6 +113,7 @@ struct SpanLanes {
   void append(int i, std::uint32_t source, std::uint32_t rank, std::vector<RaySpan>& list) const {
     RaySpan& s = list.emplace_back();
     s.t0 = t0[i], s.t1 = t1[i], s.a = a[i], s.t_c = t_c[i], s.g_min = g_min[i];
+    s.lower_a = lower_a[i], s.lower_t = lower_t[i], s.lower_g = lower_g[i];
     s.source = source, s.rank = rank;
   }
 };

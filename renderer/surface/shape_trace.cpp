@@ -276,9 +276,11 @@ double FieldRay::refine_shape(const BlobField& field, double lo, double hi, doub
   // Not yet evaluated, u ≥ 1 at the support's edge t0 and changes at most
   // Lσ√a per unit (glyph_shape.h); convex, so above its tangent where it
   // was last evaluated, which is lowest at the interval's end it falls
-  // towards (its end if it falls, `from` if it rises). And u ≥ √g_e, the
-  // bounding ellipsoid's, smallest where the ray is closest to its centre.
-  SpanBoundRow r{span.t1, 1.0, -shape_rays_[i].rate, span.t0, std::max(span.t_c, from), span.t_c, span.a, span.g_min};
+  // towards (its end if it falls, `from` if it rises). And g is at least
+  // the span's lower bound, the bounding ellipsoid's g_e or what the box or
+  // cylinder says (RaySpan::lower_a), smallest nearest its vertex.
+  SpanBoundRow r{span.t1,      1.0,          -shape_rays_[i].rate, span.t0, std::max(span.lower_t, from),
+                 span.lower_t, span.lower_a, span.lower_g};
   if (has_tangent(i)) {
     if (du_dt_[i] < 0.0) r.u0 = u_[i], r.rate = du_dt_[i], r.tau = tangent_at_[i];
     else r.u0 = u_[i] + du_dt_[i] * (from - tangent_at_[i]), r.rate = 0.0, r.tau = 0.0;
@@ -296,14 +298,14 @@ double FieldRay::proven_below_until(const BlobField& field, double tmax, double 
   // F is a sum here: a union's crossing is its first entry, which
   // group_crossing finds without a walk.
   // A span live at t that is past its closest approach by both its
-  // tangent and its bounding ellipsoid has its largest value at t, whatever
+  // tangent and its lower bound's vertex has its largest value at t, whatever
   // s: those are summed once. (One a probe skipped before its first
   // tangent still falls by its rate from its edge.) The others are rows
   // of the bound, from t.
   double fixed = 0.0;
   rows_.clear();
   for (std::uint32_t i : live_) {
-    if (has_tangent(i) && du_dt_[i] >= 0.0 && spans[i].t_c <= t)
+    if (has_tangent(i) && du_dt_[i] >= 0.0 && spans[i].lower_t <= t)
       fixed += term_bound(field, i, t, t);
     else rows_.push(bound_row(i, t));
   }

@@ -39,6 +39,18 @@ void expect_same_bits(double x, double y, const char* what, InstructionSet isa, 
                                               << " against " << y;
 }
 
+// Every field a lane of `spans` fills against the span ray_span() made alone.
+void expect_same_span(const SpanLanes& spans, int i, const RaySpan& alone, InstructionSet isa) {
+  expect_same_bits(spans.t0[i], alone.t0, "t0", isa, i);
+  expect_same_bits(spans.t1[i], alone.t1, "t1", isa, i);
+  expect_same_bits(spans.a[i], alone.a, "a", isa, i);
+  expect_same_bits(spans.t_c[i], alone.t_c, "t_c", isa, i);
+  expect_same_bits(spans.g_min[i], alone.g_min, "g_min", isa, i);
+  expect_same_bits(spans.lower_a[i], alone.lower_a, "lower_a", isa, i);
+  expect_same_bits(spans.lower_t[i], alone.lower_t, "lower_t", isa, i);
+  expect_same_bits(spans.lower_g[i], alone.lower_g, "lower_g", isa, i);
+}
+
 // Sources of every shape and distance, rays from near and far: each
 // variant's lanes must equal the scalar ray_span() bit for bit, so a ray's
 // spans never depend on the processor or on how it was packed.
@@ -77,11 +89,7 @@ TEST(SpanKernels, EveryInstructionSetGivesTheScalarBits) {
         ASSERT_EQ(bool(mask & (1u << i)), enters) << isa_name(isa) << " lane " << i;
         if (!enters) continue;
         ++entered;
-        expect_same_bits(spans.t0[i], alone.t0, "t0", isa, i);
-        expect_same_bits(spans.t1[i], alone.t1, "t1", isa, i);
-        expect_same_bits(spans.a[i], alone.a, "a", isa, i);
-        expect_same_bits(spans.t_c[i], alone.t_c, "t_c", isa, i);
-        expect_same_bits(spans.g_min[i], alone.g_min, "g_min", isa, i);
+        expect_same_span(spans, i, alone, isa);
       }
       EXPECT_EQ(mask & ~(((1u << count) - 1u) << first), 0u) << "lanes outside the asked ones";
     }
@@ -122,9 +130,7 @@ TEST(SpanKernels, EveryInstructionSetGivesTheScalarBits) {
         ASSERT_EQ(bool(mask & (1u << k)), enters) << isa_name(isa) << " source " << k;
         if (!enters) continue;
         ++entered;
-        expect_same_bits(spans.t0[k], alone.t0, "t0", isa, k);
-        expect_same_bits(spans.t1[k], alone.t1, "t1", isa, k);
-        expect_same_bits(spans.g_min[k], alone.g_min, "g_min", isa, k);
+        expect_same_span(spans, k, alone, isa);
       }
     }
   }
