@@ -5,8 +5,10 @@
 // the tracer knows of one span over [from, s]:
 //  - u ≥ u0 + rate (to − tau), to = min(s, t1): its last tangent, or the
 //    most u can fall from its edge (rate 0 where it only rises from from);
-//  - g ≥ g_e ≥ a (min(t_near, to) − t_c)² + g_min, t_near = max(t_c, from):
-//    the bounding ellipsoid where the ray is closest to its centre;
+//  - g ≥ a (min(t_near, to) − t_c)² + g_min, t_near = max(t_c, from): the
+//    span's lower bound of g (RaySpan::lower_a: the bounding ellipsoid's
+//    g_e, or its box's or cylinder's) where the ray comes nearest its
+//    vertex;
 // so K(max(max(u, 0)², that)) bounds its value over [from, s]. One span
 // alone (FieldRay::term_bound) and many in SIMD lanes of the active
 // instruction set (span_bounds) get the same bits.
