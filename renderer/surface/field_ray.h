@@ -158,8 +158,8 @@ class FieldRay {
   //    evaluated otherwise; then F and dF/dt summed.
   template <class SkipWith>
   double probe_at(const BlobField& field, double t, TraceStats& stats, SkipWith&& skip_with) const;
-  //  - Moves the skipped terms with the largest bounds into the idle lanes
-  //    of the probe's last batch of gauges, to be evaluated with it.
+  //  - Moves the skipped terms into the idle lanes of the probe's one
+  //    batch of gauges, where it has no more live sources than lanes.
   void fill_idle_lanes() const;
   //  - The last probe made exact: only the sources it skipped are
   //    evaluated, and F has the bits an exact probe there would give.

@@ -156,21 +156,12 @@ double FieldRay::probe_at(const BlobField& field, double t, TraceStats& stats, S
 // crept, its bound short of C by what the stale tangent added: on fig17
 // (signed beads, 960², one sample) 6.94 -> 6.51 probes a camera ray. In a
 // crowd (more live sources than lanes) the lanes' own bookkeeping cost
-// more than the fresher tangents saved.
+// more than the fresher tangents saved. With no more live sources than
+// lanes, every skipped term fits beside the evaluated ones.
 void FieldRay::fill_idle_lanes() const {
-  if (evaluated_.empty() || skipped_.empty() || live_.size() > kGaugeLanes) return;
-  const std::size_t idle = (kGaugeLanes - evaluated_.size() % kGaugeLanes) % kGaugeLanes;
-  const std::size_t moved = std::min(idle, skipped_.size());
-  if (moved == 0) return;
-  // Largest bound first (when more are skipped than lanes are idle), ties
-  // in span order, so the choice is the same however the ray was traced.
-  const auto larger = [&](std::uint32_t a, std::uint32_t b) {
-    return live_terms_[a].value > live_terms_[b].value || (live_terms_[a].value == live_terms_[b].value && a < b);
-  };
-  const auto end = skipped_.begin() + std::ptrdiff_t(moved);
-  std::partial_sort(skipped_.begin(), end, skipped_.end(), larger);
-  evaluated_.insert(evaluated_.end(), skipped_.begin(), end);
-  skipped_.erase(skipped_.begin(), end);
+  if (evaluated_.empty() || live_.size() > kGaugeLanes) return;
+  evaluated_.insert(evaluated_.end(), skipped_.begin(), skipped_.end());
+  skipped_.clear();
 }
 
 double FieldRay::shape_value_at(const BlobField& field, double t, TraceStats& stats, Probe probe) const {
@@ -326,9 +317,7 @@ double FieldRay::proven_below_until(const BlobField& field, double tmax, double 
   // group_crossing finds without a walk.
   // A span live at t that is past its closest approach by both its
   // tangent and its lower bound's vertex has its largest value at t, whatever
-  // s: those are summed once. (One a probe skipped before its first
-  // tangent still falls by its rate from its edge.) The others are rows
-  // of the bound, from t.
+  // s: those are summed once. The others are rows of the bound, from t.
   double fixed = 0.0;
   rows_.clear();
   for (std::uint32_t i : live_) {
