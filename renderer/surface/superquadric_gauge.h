@@ -3,8 +3,8 @@
 //   N(q) = ‖(‖(q_a, q_b)‖_{2/α}, q_z)‖_{2/β}
 // and ∇N, for the glyph-shape tracer's probes (glyph_shape.h), which ask
 // it of every source a ray is inside at once. Each p-norm raises a ratio
-// to a power and its sum to another: four log₂ and exp₂ a glyph, which
-// libm computes one at a time behind a call. Here they are polynomials in
+// to a power and its sum to another: log₂ and exp₂ a dozen times a glyph,
+// which libm computes one at a time behind a call. Here they are polynomials in
 // plain arithmetic, so each instruction set's loop runs them in SIMD lanes
 // (8 glyphs at a time with AVX-512), and one glyph alone (the Newton entry,
 // the shading) goes through the same code and gets the same bits.
@@ -34,7 +34,7 @@ void superquadric_gauges(GaugeLanes& lanes, int count, InstructionSet isa);
 // Under active_isa().
 void superquadric_gauges(GaugeLanes& lanes, int count);
 
-// log₂ x for x in [2⁻⁶⁴, 2] and 2^y for y in [−64, 0], within a few ulp:
+// log₂ x for a positive normal x and 2^y for y in [−64, 0], within a few ulp:
 // the gauge's own, exposed for its tests.
 double gauge_log2(double x);
 double gauge_exp2(double y);

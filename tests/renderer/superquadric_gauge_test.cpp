@@ -25,9 +25,9 @@ TEST(SuperquadricGauge, LogAndExpAreLibmsWithinAFewUlp) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   double worst_log = 0.0, worst_exp = 0.0;
   for (int i = 0; i < 200000; ++i) {
-    // x over the whole domain [2⁻⁶⁴, 2], dense near 1 where log₂ is small.
-    const double x = i % 2 ? std::exp2(-64.0 * unit(rng) + 1.0) : 1.0 + 0.01 * (unit(rng) - 0.5);
-    if (x > 2.0) continue;
+    // x from the gauge's least coordinate, 2⁻¹⁰⁰⁰, to far beyond any it
+    // takes, dense near 1 where log₂ is small.
+    const double x = i % 2 ? std::exp2(-1000.0 + 2000.0 * unit(rng)) : 1.0 + 0.01 * (unit(rng) - 0.5);
     // log₂ near 1 is near 0: its error is relative to its argument's scale.
     const double log_error = std::fabs(gauge_log2(x) - std::log2(x)) /
                              std::max(std::fabs(std::log2(x)), std::fabs(x - 1.0) + 1e-300);
@@ -43,6 +43,8 @@ TEST(SuperquadricGauge, LogAndExpAreLibmsWithinAFewUlp) {
   EXPECT_EQ(gauge_log2(1.0), 0.0);
   EXPECT_EQ(gauge_log2(0x1p-64), -64.0);
   EXPECT_EQ(gauge_log2(2.0), 1.0);
+  EXPECT_EQ(gauge_log2(0x1p-1000), -1000.0);
+  EXPECT_EQ(gauge_log2(0x1p900), 900.0);
 }
 
 struct Glyph {
