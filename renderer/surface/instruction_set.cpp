@@ -10,8 +10,6 @@ namespace {
 
 constexpr std::array<const char*, 5> kNames = {"sse2", "sse4.2", "avx", "avx2", "avx512"};
 
-// −1 until the first active_isa() or force_isa().
-std::atomic<int> g_active{-1};
 std::atomic<bool> g_forced{false};
 
 std::string unsupported_message(InstructionSet isa, const char* asked_by) {
@@ -70,9 +68,10 @@ std::vector<InstructionSet> supported_isas() {
   return isas;
 }
 
-InstructionSet active_isa() {
-  const int active = g_active.load(std::memory_order_relaxed);
-  if (active >= 0) return InstructionSet(active);
+// −1 until the first active_isa() or force_isa().
+std::atomic<int> detail::g_active_isa{-1};
+
+InstructionSet detail::choose_active_isa() {
   InstructionSet isa = best_supported_isa();
   if (const char* asked = std::getenv("HSB_ISA"); asked && *asked) {
     const std::optional<InstructionSet> parsed = parse_isa(asked);
@@ -83,13 +82,13 @@ InstructionSet active_isa() {
     isa = *parsed;
     g_forced.store(true, std::memory_order_relaxed);
   }
-  g_active.store(int(isa), std::memory_order_relaxed);
+  g_active_isa.store(int(isa), std::memory_order_relaxed);
   return isa;
 }
 
 void force_isa(InstructionSet isa) {
   if (!processor_supports(isa)) throw std::runtime_error(unsupported_message(isa, "asked for"));
-  g_active.store(int(isa), std::memory_order_relaxed);
+  detail::g_active_isa.store(int(isa), std::memory_order_relaxed);
   g_forced.store(true, std::memory_order_relaxed);
 }
 

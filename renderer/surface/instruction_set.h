@@ -8,6 +8,7 @@
 // same bytes on every instruction set (tests/cli/isa_test.sh): nothing the
 // renderer computes depends on the vector width.
 
+#include <atomic>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,7 +36,16 @@ std::vector<InstructionSet> supported_isas();  // in increasing order
 // else the processor's best. Throws std::runtime_error, naming what was
 // asked for and what the processor has, when HSB_ISA is not a known name or
 // asks for more than the processor supports.
-InstructionSet active_isa();
+// Inline once chosen: the shape tracer's bounds and gauges ask it for every
+// call, tens of times a ray (0.8 % of fig17's render as a call).
+namespace detail {
+extern std::atomic<int> g_active_isa;  // −1 until the first choice
+InstructionSet choose_active_isa();
+}  // namespace detail
+inline InstructionSet active_isa() {
+  const int active = detail::g_active_isa.load(std::memory_order_relaxed);
+  return active >= 0 ? InstructionSet(active) : detail::choose_active_isa();
+}
 // Whether active_isa() was forced (HSB_ISA or force_isa()) rather than
 // the processor's best.
 bool isa_forced();
