@@ -186,6 +186,10 @@ class FieldRay {
   //    that complete_probe() makes exact.
   double plane_probe(const BlobField& field, const SupportPlanes& planes, const Vec3& origin, const Vec3& direction,
                      double t, TraceStats& stats) const;
+  //  - How far along the ray F would reach C at its slope where the last
+  //    probe looked: Newton's step, shared by the proofs' first try and
+  //    the walk's steps onto the surface. +∞ where F does not rise there.
+  double newton_step(double c) const;
   //  - The first crossing in [tmin, tmax] by stepping from proof to proof.
   //    For an `any` query the first probe at or above C is the answer.
   double shape_trace(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin, double tmax,

@@ -293,6 +293,10 @@ double FieldRay::refine_shape(const BlobField& field, double lo, double hi, doub
   return hi;
 }
 
+double FieldRay::newton_step(double c) const {
+  return probed_slope_ > 0.0 ? (c - probed_value_) / probed_slope_ : std::numeric_limits<double>::infinity();
+}
+
 // Inlined: the proofs build tens of rows each, and the call cost as much
 // as the row.
 [[gnu::always_inline]] inline SpanBoundRow FieldRay::bound_row(std::size_t i, double from) const {
@@ -356,7 +360,7 @@ double FieldRay::proven_below_until(const BlobField& field, double tmax, double 
   // rising, the bound stays `fixed` until the next source begins: the
   // steps start there.
   double lo = t, hi = tmax, e_lo = probed_value_ - c, e_hi = 0.0;
-  double first_step = probed_slope_ > 0.0 ? (c - probed_value_) / probed_slope_ : proof_step_;
+  double first_step = probed_slope_ > 0.0 ? newton_step(c) : proof_step_;
   if (rising == 0 && fixed < c) {
     if (first_unbegun_ == spans.size()) return tmax;
     lo = std::min(spans[first_unbegun_].t0, tmax);
@@ -416,7 +420,8 @@ double FieldRay::shape_trace(const BlobField& field, const Vec3& origin, const V
     // every walk that meets the surface ended with such a proof (on fig17's
     // beads as superquadrics, 960², 1 sample: all but 130 of 509,977
     // camera rays' and 108 of 189,083 occlusion rays'; 8% of the proofs).
-    const bool at_surface = probed_slope_ > 0.0 && c - f < probed_slope_ * settings.min_step;
+    const double newton = newton_step(c);
+    const bool at_surface = newton < settings.min_step;
     const double reach = at_surface ? t : proven_below_until(field, tmax, settings.min_step);
     if (reach >= tmax) return -1.0;
     if (++steps > settings.max_steps) {
@@ -431,7 +436,7 @@ double FieldRay::shape_trace(const BlobField& field, const Vec3& origin, const V
     // (on fig17's beads 6.47 -> 5.67 probes a camera ray). An occlusion
     // ray keeps the min_step, which lands past C surely and answers it.
     if (at_surface && query == CrossingQuery::first)
-      next = std::min(next, t + (c - f) / probed_slope_ + 0.25 * crossing_tolerance(t, t));
+      next = std::min(next, t + newton + 0.25 * crossing_tolerance(t, t));
     double f_next = shape_value_at(field, next, stats, Probe::bound);
     // At or above C by the bound: the terms it skipped decide.
     if (f_next >= c && !skipped_.empty()) f_next = complete_probe(field, stats);
