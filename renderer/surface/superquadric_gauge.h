@@ -28,8 +28,9 @@ struct alignas(64) GaugeLanes {
   double n[kGaugeLanes], da[kGaugeLanes], db[kGaugeLanes], dz[kGaugeLanes];
 };
 
-// Fills lanes [0, count) of n, da, db, dz under `isa`; the others are left
-// as they were.
+// Fills lanes [0, count) of n, da, db, dz under `isa`, in the narrowest
+// batch of 2, 4 or kGaugeLanes lanes that holds them; the other lanes'
+// outputs are not to be read.
 void superquadric_gauges(GaugeLanes& lanes, int count, InstructionSet isa);
 // Under active_isa().
 void superquadric_gauges(GaugeLanes& lanes, int count);

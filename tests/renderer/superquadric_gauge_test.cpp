@@ -99,7 +99,7 @@ TEST(SuperquadricGauge, EveryLaneOfEveryInstructionSetGivesOneGlyphsBits) {
   int compared = 0;
   for (const InstructionSet isa : supported_isas())
     for (int batch = 0; batch < 500; ++batch) {
-      const int count = 2 + int(rng() % (kGaugeLanes - 1));
+      const int count = 2 + int(rng() % (kGaugeLanes - 1));  // every batch width: 2, 4 and kGaugeLanes
       GaugeLanes lanes;
       Glyph glyphs[kGaugeLanes];
       for (int i = 0; i < count; ++i) set_lane(lanes, i, glyphs[i] = random_glyph(rng));
