@@ -29,10 +29,11 @@ class AmbientRays {
   // leaves, or is nullptr (support_planes.h). `crowd` is how many sources
   // overlap, on average, where the rays start (SurfaceSample::crowd): a ray
   // crosses about that many supports, which prices the per-ray way.
-  // `tracer` is scratch; `stats` counts the work.
+  // `tracers` are scratch, a packet's rays walked side by side
+  // (BlobGeometry::crossings_one_by_one); `stats` counts the work.
   void trace(const RayScene& scene, const std::vector<RayInterval>& rays,
-             const std::vector<const SupportPlanes*>& planes, double crowd, FieldRay& tracer, TraceStats& stats,
-             std::vector<std::uint8_t>& blocked);
+             const std::vector<const SupportPlanes*>& planes, double crowd, FieldRayLanes& tracers,
+             TraceStats& stats, std::vector<std::uint8_t>& blocked);
 
  private:
   // Lists the sources around `needed`, with room to spare for the next

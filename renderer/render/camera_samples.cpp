@@ -80,7 +80,7 @@ class OcclusionBatch {
       planes_.push_back(r.planes);
     }
     const double crowd = crowd_points_ ? double(crowd_sum_) / double(crowd_points_) : 0.0;
-    tracer.ambient.trace(scene, rays_, planes_, crowd, tracer.tracers[0], tracer.shadow_stats, blocked_);
+    tracer.ambient.trace(scene, rays_, planes_, crowd, tracer.tracers, tracer.shadow_stats, blocked_);
     for (std::size_t i = 0; i < ambient_.size(); ++i)
       if (!blocked_[i]) visibility[ambient_[i].lane].ambient += ambient_[i].weight;
   }

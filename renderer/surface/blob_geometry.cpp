@@ -15,6 +15,7 @@
 #include "renderer/surface/ray_packets.h"
 #include "renderer/surface/single_source.h"
 #include "renderer/surface/spatial_rank.h"
+#include "renderer/surface/superquadric_gauge.h"
 
 namespace hsb {
 namespace {
@@ -109,6 +110,65 @@ ValidLanes gather_lanes(const int* valid, RTCRayN* rays, unsigned n) {
     ray.tmax = RTCRayN_tfar(rays, n, i);
   }
   return lanes;
+}
+
+// The gauges that the rays `waiting` (bits) wait on. A ray that asks for
+// a batch's worth or more (in a crowd) fills its own batches, and takes
+// them alone: copying its glyphs in and out would cost and save nothing.
+// The others, mostly two or three glyphs a probe, share batches: one
+// costs little more full than part empty (superquadric_gauge.h). Every
+// lane gives a glyph alone's bits, so each ray's answers are those it
+// gets alone.
+void evaluate_gauges_together(GlyphShape shape, FieldRay* tracers, unsigned waiting) {
+  const auto alone = [&](FieldRay& ray) {
+    shape_u_rates(shape, ray.gauge_samples(), int(ray.gauge_count()), ray.gauge_u(), ray.gauge_rates());
+  };
+  unsigned sharing = 0;
+  for (unsigned rest = waiting; rest; rest &= rest - 1) {
+    FieldRay& ray = tracers[__builtin_ctz(rest)];
+    if (ray.gauge_count() >= std::size_t(kGaugeLanes)) alone(ray);
+    else sharing |= rest & -rest;
+  }
+  if (!(sharing & (sharing - 1))) {
+    if (sharing) alone(tracers[__builtin_ctz(sharing)]);
+    return;
+  }
+  // Kept per thread, as the tracers are: the loop never allocates once
+  // they have grown.
+  thread_local std::vector<ShapeSample> samples;
+  thread_local std::vector<double> u, rates;
+  samples.clear();
+  for (unsigned rest = sharing; rest; rest &= rest - 1) {
+    const FieldRay& ray = tracers[__builtin_ctz(rest)];
+    samples.insert(samples.end(), ray.gauge_samples(), ray.gauge_samples() + ray.gauge_count());
+  }
+  u.resize(samples.size());
+  rates.resize(samples.size());
+  shape_u_rates(shape, samples.data(), int(samples.size()), u.data(), rates.data());
+  std::size_t first = 0;
+  for (unsigned rest = sharing; rest; rest &= rest - 1) {
+    FieldRay& ray = tracers[__builtin_ctz(rest)];
+    const std::size_t count = ray.gauge_count();
+    std::copy_n(u.data() + first, count, ray.gauge_u());
+    std::copy_n(rates.data() + first, count, ray.gauge_rates());
+    first += count;
+  }
+}
+
+// The walks of the rays `walking` (bits; FieldRay::start_crossing() said
+// they wait on gauges) side by side, each round the gauges all of them
+// wait on in one batch, until each has its answer: settle(i, t).
+template <class Settle>
+void walk_together(GlyphShape shape, FieldRay* tracers, unsigned walking, Settle&& settle) {
+  while (walking) {
+    evaluate_gauges_together(shape, tracers, walking);
+    for (unsigned rest = walking; rest; rest &= rest - 1) {
+      const int i = __builtin_ctz(rest);
+      if (tracers[i].resume_crossing()) continue;
+      walking &= ~(1u << i);
+      settle(i, tracers[i].crossing());
+    }
+  }
 }
 
 // A typical influence diameter: windows of a few of them hold a few layers
@@ -333,27 +393,33 @@ void BlobGeometry::first_crossings(const RayInterval* rays, int count, FieldRay*
     length[i] = first_window_ / rays[i].direction.norm();  // in units of t
     if (t < end) looking |= 1u << i;
   }
+  // A ray's crossing in its window, or none there: on to the next.
+  const auto settle = [&](int i, double hit) {
+    const unsigned bit = 1u << i;
+    if (hit >= 0.0) {
+      hits[i] = hit;
+      looking &= ~bit;
+      return;
+    }
+    window[i].tmin = window[i].tmax;
+    length[i] *= 2.0;  // long empty stretches cost a logarithmic number of queries
+    if (!(window[i].tmin < t_end[i])) looking &= ~bit;
+  };
   while (looking) {
     for (int i = 0; i < count; ++i)
       if (looking & (1u << i)) window[i].tmax = std::min(window[i].tmin + length[i], t_end[i]);
     stats.span_queries += unsigned(__builtin_popcount(looking));
     stats.span_candidates += query_spans(window.data(), tracers, looking, query);
+    unsigned walking = 0;
     for (int i = 0; i < count; ++i) {
-      const unsigned bit = 1u << i;
-      if (!(looking & bit)) continue;
-      if (!tracers[i].spans.empty()) {
-        const double hit = tracers[i].first_crossing(field_, window[i].origin, window[i].direction, window[i].tmin,
-                                                         window[i].tmax, settings_, stats, query);
-        if (hit >= 0.0) {
-          hits[i] = hit;
-          looking &= ~bit;
-          continue;
-        }
-      }
-      window[i].tmin = window[i].tmax;
-      length[i] *= 2.0;  // long empty stretches cost a logarithmic number of queries
-      if (!(window[i].tmin < t_end[i])) looking &= ~bit;
+      if (!(looking & (1u << i))) continue;
+      if (tracers[i].spans.empty()) settle(i, -1.0);
+      else if (tracers[i].start_crossing(field_, window[i].origin, window[i].direction, window[i].tmin,
+                                         window[i].tmax, settings_, stats, query))
+        walking |= 1u << i;
+      else settle(i, tracers[i].crossing());
     }
+    walk_together(field_.shape, tracers, walking, settle);
   }
 }
 
@@ -415,35 +481,58 @@ bool BlobGeometry::gather_nearby(const Box3& region, std::size_t limit, NearbySo
 }
 
 template <class CollectSpans>
-double BlobGeometry::first_crossing_of(const RayInterval& ray, FieldRay& tracer, TraceStats& stats,
-                                       CrossingQuery query, CollectSpans&& collect_spans) const {
+bool BlobGeometry::start_crossing_of(const RayInterval& ray, FieldRay& tracer, TraceStats& stats, CrossingQuery query,
+                                     CollectSpans&& collect_spans, double& hit) const {
   ++stats.field_rays;
   tracer.spans.clear();
+  hit = -1.0;
   if (!embree_can_trace(ray.origin, ray.direction, ray.tmin, ray.tmax)) {
     ++stats.untraceable_rays;
-    return -1.0;
+    return false;
   }
   const auto [t, end] = ray_interval_in(bounds_, ray.origin, ray.direction, ray.tmin, ray.tmax);
-  if (!(t < end)) return -1.0;
+  if (!(t < end)) return false;
   collect_spans(RayInterval{ray.origin, ray.direction, t, end});
-  if (tracer.spans.empty()) return -1.0;
-  return tracer.first_crossing(field_, ray.origin, ray.direction, t, end, settings_, stats, query);
+  if (tracer.spans.empty()) return false;
+  if (tracer.start_crossing(field_, ray.origin, ray.direction, t, end, settings_, stats, query)) return true;
+  hit = tracer.crossing();
+  return false;
+}
+
+void BlobGeometry::crossings_one_by_one(const RayInterval* rays, int count, const NearbySources* nearby,
+                                        FieldRay* tracers, TraceStats& stats, double* hits,
+                                        CrossingQuery query) const {
+  if (count > kMaxPacket)
+    throw std::invalid_argument("crossings_one_by_one takes at most " + std::to_string(kMaxPacket) + " rays");
+  unsigned walking = 0;
+  for (int i = 0; i < count; ++i) {
+    FieldRay& tracer = tracers[i];
+    const auto collect = [&](const RayInterval& clipped) {
+      if (nearby) {
+        nearby->collect_spans(clipped.origin, clipped.direction, clipped.tmin, clipped.tmax, tracer.spans);
+        stats.span_candidates += nearby->size();
+      } else {
+        ++stats.span_queries;
+        stats.span_candidates += query_spans(&clipped, &tracer, 1u, query);
+      }
+    };
+    if (start_crossing_of(rays[i], tracer, stats, query, collect, hits[i])) walking |= 1u << i;
+  }
+  walk_together(field_.shape, tracers, walking, [&](int i, double hit) { hits[i] = hit; });
 }
 
 double BlobGeometry::first_crossing_near(const NearbySources& nearby, const RayInterval& ray, FieldRay& tracer,
                                          TraceStats& stats, CrossingQuery query) const {
-  return first_crossing_of(ray, tracer, stats, query, [&](const RayInterval& clipped) {
-    nearby.collect_spans(clipped.origin, clipped.direction, clipped.tmin, clipped.tmax, tracer.spans);
-    stats.span_candidates += nearby.size();
-  });
+  double hit;
+  crossings_one_by_one(&ray, 1, &nearby, &tracer, stats, &hit, query);
+  return hit;
 }
 
 double BlobGeometry::first_crossing_traversed(const RayInterval& ray, FieldRay& tracer, TraceStats& stats,
                                              CrossingQuery query) const {
-  return first_crossing_of(ray, tracer, stats, query, [&](const RayInterval& clipped) {
-    ++stats.span_queries;
-    stats.span_candidates += query_spans(&clipped, &tracer, 1u, query);
-  });
+  double hit;
+  crossings_one_by_one(&ray, 1, nullptr, &tracer, stats, &hit, query);
+  return hit;
 }
 
 void BlobGeometry::field_bounds(const RTCBoundsFunctionArguments* args) {

@@ -118,6 +118,14 @@ class BlobGeometry {
   double first_crossing_traversed(const RayInterval& ray, FieldRay& tracer, TraceStats& stats,
                                  CrossingQuery query = CrossingQuery::first) const;
 
+  // Either of those for each of `count` rays (at most kMaxPacket): by the
+  // list `nearby` (every ray inside its region), or, where it is nullptr,
+  // each ray by its own traversal; tracers[i] is ray i's. The rays' walks
+  // go side by side, as first_crossings' do; each answer is the one it
+  // gets alone.
+  void crossings_one_by_one(const RayInterval* rays, int count, const NearbySources* nearby, FieldRay* tracers,
+                            TraceStats& stats, double* hits, CrossingQuery query = CrossingQuery::first) const;
+
  private:
   static void span_bounds(const RTCBoundsFunctionArguments* args);
   static void span_intersect(const RTCIntersectFunctionNArguments* args);
@@ -127,12 +135,14 @@ class BlobGeometry {
   // `any` query none after it.
   std::size_t query_spans(const RayInterval* rays, FieldRay* tracers, unsigned lanes,
                           CrossingQuery crossing = CrossingQuery::first) const;
-  // What first_crossing_near() and first_crossing_traversed() share: the ray
-  // clipped to the field's bounds, its spans collected there by
-  // `collect_spans` (given the clipped ray), and the crossing among them.
+  // What crossings_one_by_one() does for each ray: the ray clipped to the
+  // field's bounds, its spans collected there by `collect_spans` (given the
+  // clipped ray), and the crossing among them started
+  // (FieldRay::start_crossing): true while it waits on gauges, else `hit`
+  // is its answer.
   template <class CollectSpans>
-  double first_crossing_of(const RayInterval& ray, FieldRay& tracer, TraceStats& stats, CrossingQuery query,
-                           CollectSpans&& collect_spans) const;
+  bool start_crossing_of(const RayInterval& ray, FieldRay& tracer, TraceStats& stats, CrossingQuery query,
+                         CollectSpans&& collect_spans, double& hit) const;
   static void field_bounds(const RTCBoundsFunctionArguments* args);
   static void field_intersect(const RTCIntersectFunctionNArguments* args);
   static void field_occluded(const RTCOccludedFunctionNArguments* args);

@@ -70,18 +70,29 @@ double FieldRay::crowd_peak(double tmin, double last_peak) const {
   return tmin + std::min(1.0, double(moment) / double(height)) * length;
 }
 
+namespace {
+// A group's crossing from what its trace found below its single-source
+// bound `upper` (−1 where none): short of the bound only by round-off,
+// the bound itself is on the surface.
+double walked_or_upper(double found, double upper) { return found >= 0.0 ? found : upper; }
+}  // namespace
+
 double FieldRay::first_crossing(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin,
                                 double tmax, const TraceSettings& settings, TraceStats& stats,
                                 CrossingQuery query) {
-  const double t = nearest_group_crossing(field, origin, direction, tmin, tmax, settings, stats, query);
-  origin_planes_ = nullptr;  // this call's only
-  return t;
+  for (bool waiting = start_crossing(field, origin, direction, tmin, tmax, settings, stats, query); waiting;
+       waiting = resume_crossing())
+    shape_u_rates(field.shape, samples_.data(), int(gauges_wanted_), sample_u_.data(), sample_rate_.data());
+  return crossing();
 }
 
-double FieldRay::nearest_group_crossing(const BlobField& field, const Vec3& origin, const Vec3& direction,
-                                        double tmin, double tmax, const TraceSettings& settings, TraceStats& stats,
-                                        CrossingQuery query) {
-  if (field.groups.empty()) return group_crossing(field, origin, direction, tmin, tmax, settings, stats, query);
+bool FieldRay::start_crossing(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin,
+                              double tmax, const TraceSettings& settings, TraceStats& stats, CrossingQuery query) {
+  call_ = Call{&field, origin, direction, tmin, tmax, &settings, &stats, query};
+  if (field.groups.empty()) {
+    double t;
+    return start_group_crossing(tmax, t) || answer(t);
+  }
   // Each group's surface on its own, the nearest first crossing of any
   // (an `any` query: the first group that has one). A single source's
   // entry bounds the union's first crossing as it bounds its own group's,
@@ -97,22 +108,44 @@ double FieldRay::nearest_group_crossing(const BlobField& field, const Vec3& orig
     if (std::find(groups_met_.begin(), groups_met_.end(), g) == groups_met_.end()) groups_met_.push_back(g);
   }
   std::sort(groups_met_.begin(), groups_met_.end());
-  const auto take_group = [&](std::uint8_t g) {
-    spans.clear();
-    for (std::size_t i = 0; i < grouped_spans_.size(); ++i)
-      if (group_of_[i] == g) spans.push_back(grouped_spans_[i]);
-  };
-  double best = -1.0;
-  std::uint8_t best_group = 0;
-  for (const std::uint8_t g : groups_met_) {
-    take_group(g);
-    const double t = group_crossing(field, origin, direction, tmin, best >= 0.0 ? best : tmax, settings, stats, query);
-    if (t >= 0.0 && (best < 0.0 || t < best)) best = t, best_group = g;
-    if (best >= 0.0 && query == CrossingQuery::any) break;
+  return trace_groups_from(0);
+}
+
+bool FieldRay::resume_crossing() {
+  double t;
+  if (walk(true, t)) return true;
+  t = walked_or_upper(t, call_.upper);
+  if (call_.field->groups.empty()) return answer(t);
+  return trace_groups_from(group_answered(t) ? groups_met_.size() : call_.group + 1);
+}
+
+bool FieldRay::answer(double t) {
+  call_.answer = t;
+  origin_planes_ = nullptr;  // this call's only
+  return false;
+}
+
+void FieldRay::take_group(std::uint8_t group) {
+  spans.clear();
+  for (std::size_t i = 0; i < grouped_spans_.size(); ++i)
+    if (group_of_[i] == group) spans.push_back(grouped_spans_[i]);
+}
+
+bool FieldRay::trace_groups_from(std::size_t first) {
+  for (call_.group = first; call_.group < groups_met_.size(); ++call_.group) {
+    take_group(groups_met_[call_.group]);
+    double t;
+    if (start_group_crossing(call_.best >= 0.0 ? call_.best : call_.tmax, t)) return true;
+    if (group_answered(t)) break;
   }
   // surface_at() shades the group that was hit, from all of its spans.
-  if (best >= 0.0 && best_group != groups_met_.back()) take_group(best_group);
-  return best;
+  if (call_.best >= 0.0 && call_.best_group != groups_met_.back()) take_group(call_.best_group);
+  return answer(call_.best);
+}
+
+bool FieldRay::group_answered(double t) {
+  if (t >= 0.0 && (call_.best < 0.0 || t < call_.best)) call_.best = t, call_.best_group = groups_met_[call_.group];
+  return call_.best >= 0.0 && call_.query == CrossingQuery::any;
 }
 
 double FieldRay::drop_spans_beyond_first_entry(const BlobField& field, double tmin, double tmax) {
@@ -139,9 +172,17 @@ double FieldRay::drop_spans_beyond_first_entry(const BlobField& field, double tm
   return upper;
 }
 
-double FieldRay::group_crossing(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin,
-                                double tmax, const TraceSettings& settings, TraceStats& stats,
-                                CrossingQuery query) {
+bool FieldRay::start_group_crossing(double tmax, double& t) {
+  const BlobField& field = *call_.field;
+  const Vec3 &origin = call_.origin, &direction = call_.direction;
+  const double tmin = call_.tmin;
+  const TraceSettings& settings = *call_.settings;
+  TraceStats& stats = *call_.stats;
+  const CrossingQuery query = call_.query;
+  const auto answered = [&](double crossing) {
+    t = crossing;
+    return false;
+  };
   quadric_ = shape_is_quadric(field.shape);
   stats.spans += spans.size();
   // Bounds from the sources one at a time, before anything is ordered: the
@@ -152,7 +193,7 @@ double FieldRay::group_crossing(const BlobField& field, const Vec3& origin, cons
   const double c = field.isovalue;
   const double g_level = level_g(field.kernel, c);
   double upper = drop_spans_beyond_first_entry(field, tmin, tmax);
-  if (upper >= 0.0 && query == CrossingQuery::any) return upper;  // an `any` query has its answer
+  if (upper >= 0.0 && query == CrossingQuery::any) return answered(upper);  // an `any` query has its answer
   // The exact entry into a shape's own level surface, at or before the
   // ball's (or at the ball's, should round-off put Newton's a hair past),
   // found before the spans' peaks are summed or their rays made and put in
@@ -168,9 +209,9 @@ double FieldRay::group_crossing(const BlobField& field, const Vec3& origin, cons
   // the one above), and the sources' values at tmin and their peaks, which
   // bound a blend, are not needed.
   if (field.blend == Blend::max) {
-    if (quadric_) return upper;
+    if (quadric_) return answered(upper);
     const double exact = exact_entry();
-    return exact >= 0.0 ? exact : upper;
+    return answered(exact >= 0.0 ? exact : upper);
   }
   double at_start = 0.0, peaks = 0.0, last_peak = tmin;
   peaks_.resize(spans.size());
@@ -187,16 +228,16 @@ double FieldRay::group_crossing(const BlobField& field, const Vec3& origin, cons
   if (!quadric_) {
     // Blended sources whose peaks (upper bounds) sum below C
     // leave F below it: nothing of the shapes is needed.
-    if (upper < 0.0 && peaks < c) return -1.0;
+    if (upper < 0.0 && peaks < c) return answered(-1.0);
     // An `any` query ends at an exact entry.
     if (query == CrossingQuery::any) {
       const double exact = exact_entry();
-      if (exact >= 0.0) return exact;
+      if (exact >= 0.0) return answered(exact);
     }
     prepare_shape_rays(field, origin, direction);
   }
-  if (at_start >= c) return tmin;
-  if (peaks < c) return -1.0;
+  if (at_start >= c) return answered(tmin);
+  if (peaks < c) return answered(-1.0);
   // A crowd of sources that no single one reaches C in (a blended cap)
   // is most likely to lift F over C where they peak together: F there,
   // if it is C or more, bounds the first crossing too.
@@ -214,20 +255,26 @@ double FieldRay::group_crossing(const BlobField& field, const Vec3& origin, cons
         f += kernel_value(field.kernel, spans[i].g(t_crowd));
     stats.kernel_evaluations += spans.size();
     if (f >= c) {
-      if (query == CrossingQuery::any) return t_crowd;
+      if (query == CrossingQuery::any) return answered(t_crowd);
       upper = t_crowd;
     }
   }
 
   const double end = upper >= 0.0 ? upper : tmax;
-  // The exact intersector needs g quadratic along the ray.
-  const bool ends_on_surface = upper >= 0.0;
-  const double t = !quadric_ ? shape_trace(field, origin, direction, tmin, end, settings, stats, query)
-                   : settings.intersector == Intersector::exact
-                       ? exact_crossing(field, tmin, end, ends_on_surface, stats)
-                       : sphere_trace(field, tmin, end, ends_on_surface, settings, stats, query);
-  // Short of the bound only by round-off: the bound itself is on the surface.
-  return t >= 0.0 ? t : upper;
+  double found;
+  if (!quadric_) {
+    // The walk, which may wait on gauges; its answer goes through
+    // resume_crossing(), or the line below.
+    call_.upper = upper;
+    if (start_walk(tmin, end, found)) return true;
+  } else {
+    // The exact intersector needs g quadratic along the ray.
+    const bool ends_on_surface = upper >= 0.0;
+    found = settings.intersector == Intersector::exact ? exact_crossing(field, tmin, end, ends_on_surface, stats)
+                                                        : sphere_trace(field, tmin, end, ends_on_surface, settings,
+                                                                       stats, query);
+  }
+  return answered(walked_or_upper(found, upper));
 }
 
 void FieldRay::begin_segments(const BlobField& field, double tmin, double tmax, bool ends_on_surface) {

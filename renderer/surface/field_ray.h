@@ -46,8 +46,9 @@ struct SurfaceSample {
   std::uint32_t crowd = 0;               // how many sources contribute here
 };
 
-// Scratch space for one ray at a time; keep one per thread and reuse it so
-// the hot loop never allocates.
+// Scratch space for one ray at a time (or, for rays walked side by side,
+// one each); keep them per thread and reuse them so the hot loop never
+// allocates.
 class FieldRay {
  public:
   // The caller fills these with every source whose support the ray crosses
@@ -78,6 +79,24 @@ class FieldRay {
   // own and the answer is the nearest of their first crossings; the spans
   // left are the group's that was hit.
 
+  // first_crossing() in steps, for rays traced side by side
+  // (BlobGeometry::first_crossings): a glyph shape's walk mostly waits on
+  // its gauges, a batch of two or three glyphs a probe, and several rays'
+  // probes fill one batch for what one ray's cost. start_crossing() takes
+  // first_crossing()'s arguments; while it or resume_crossing() returns
+  // true, the ray waits on the gauges of its gauge_samples(), whose u and
+  // du/dt go into gauge_u() and gauge_rates() (shape_u_rates()), and then
+  // resume_crossing() goes on. Once either returns false, crossing() is
+  // what first_crossing() returns, to the bit.
+  bool start_crossing(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin, double tmax,
+                      const TraceSettings& settings, TraceStats& stats, CrossingQuery query = CrossingQuery::first);
+  bool resume_crossing();
+  double crossing() const { return call_.answer; }
+  const ShapeSample* gauge_samples() const { return samples_.data(); }
+  std::size_t gauge_count() const { return gauges_wanted_; }
+  double* gauge_u() { return sample_u_.data(); }
+  double* gauge_rates() { return sample_rate_.data(); }
+
   // Normal and colour at ray parameter t; uses the spans of the last
   // first_crossing() call, which cover every source that is non-zero there.
   // For a shape other than the ellipsoid, `planes` (when given) gets each
@@ -92,12 +111,34 @@ class FieldRay {
   void leave_surface(const SupportPlanes* planes) { origin_planes_ = planes; }
 
  private:
-  // first_crossing() of every group, the nearest.
-  double nearest_group_crossing(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin,
-                                double tmax, const TraceSettings& settings, TraceStats& stats, CrossingQuery query);
-  // first_crossing() of one group's sources, the spans.
-  double group_crossing(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin, double tmax,
-                        const TraceSettings& settings, TraceStats& stats, CrossingQuery query);
+  // The call in progress, from start_crossing() to crossing().
+  struct Call {
+    const BlobField* field = nullptr;
+    Vec3 origin = Vec3::Zero(), direction = Vec3::Zero();
+    double tmin = 0.0, tmax = 0.0;
+    const TraceSettings* settings = nullptr;
+    TraceStats* stats = nullptr;
+    CrossingQuery query = CrossingQuery::first;
+    std::size_t group = 0;       // with groups: groups_met_'s index of the group traced
+    double best = -1.0;          // with groups: the nearest of their crossings so far
+    std::uint8_t best_group = 0;
+    double upper = -1.0;         // the walking group's single-source bound
+    double answer = -1.0;
+  };
+  Call call_;
+  // The call answered: `t`.
+  bool answer(double t);
+  // With groups: only the spans of `group` in `spans`.
+  void take_group(std::uint8_t group);
+  // With groups: each from groups_met_[first] on, until one waits on
+  // gauges (true) or all are answered, the nearest kept.
+  bool trace_groups_from(std::size_t first);
+  // With groups: the crossing `t` of the group traced is kept if nearest;
+  // true where that answers the call (an `any` query).
+  bool group_answered(double t);
+  // first_crossing() of one group's sources, the spans, below tmax: true
+  // while its walk waits on gauges, else `t` is its crossing.
+  bool start_group_crossing(double tmax, double& t);
   // The earliest entry into one source's own level surface in [tmin,
   // tmax] (F ≥ C there), or −1; the spans that begin beyond it dropped.
   double drop_spans_beyond_first_entry(const BlobField& field, double tmin, double tmax);
@@ -146,29 +187,28 @@ class FieldRay {
                            double tmin, double tmax, TraceStats& stats);
   //  - A span's ray in its source's stored frame.
   ShapeRay shape_ray(const BlobField& field, const RaySpan& span, const Vec3& origin, const Vec3& direction) const;
-  //  - F at t, over the spans whose interval holds t; keeps each one's u and
-  //    du/dt there for proven_below_until(), and F's slope dF/dt.
-  //    A Probe::bound skips the sources whose last tangent rises from
-  //    there on, adding K of that tangent's value instead: an upper bound of
-  //    F (skipped_ lists what was skipped), and all the proofs after it need.
+  //  - A probe: F at t, over the spans whose interval holds t; keeps each
+  //    one's u and du/dt there for proven_below_until(), and F's slope
+  //    dF/dt. Staged, then finished once its gauges are in
+  //    (finish_probe(): F). A Probe::bound skips the sources whose last
+  //    tangent rises from there on, adding K of that tangent's value
+  //    instead: an upper bound of F (skipped_ lists what was skipped), and
+  //    all the proofs after it need.
   enum class Probe { exact, bound };
-  double shape_value_at(const BlobField& field, double t, TraceStats& stats, Probe probe = Probe::exact) const;
+  void stage_shape_probe(double t, Probe probe = Probe::exact);
   //  - What every probe does: the spans live at t, each one skipped with
   //    the bound k that skip_with(i, k) gives when it returns true, and
-  //    evaluated otherwise; then F and dF/dt summed.
+  //    its gauge staged otherwise.
   template <class SkipWith>
-  double probe_at(const BlobField& field, double t, TraceStats& stats, SkipWith&& skip_with) const;
+  void stage_probe(double t, SkipWith&& skip_with);
   //  - Moves the skipped terms into the idle lanes of the probe's one
   //    batch of gauges, where it has no more live sources than lanes.
   void fill_idle_lanes() const;
   //  - The last probe made exact: only the sources it skipped are
-  //    evaluated, and F has the bits an exact probe there would give.
-  double complete_probe(const BlobField& field, TraceStats& stats) const;
-  //  - The crossing inside a bracket F(lo) < C ≤ F(hi), hi the last probe,
-  //    to the precision refine() gives, by Newton's method with the probes'
-  //    slopes.
-  double refine_shape(const BlobField& field, double lo, double hi, double f_lo, double f_hi,
-                      TraceStats& stats) const;
+  //    staged, and F has the bits an exact probe there would give.
+  void stage_completion();
+  //  - The staged probe's terms from its gauges; F and dF/dt summed.
+  double finish_probe();
   //  - An upper bound of span i's K over [from, s] (from within its
   //    interval) from what is known of it: its last tangent, or before
   //    that the most u can fall from its edge, and its bounding ellipsoid
@@ -177,23 +217,51 @@ class FieldRay {
   SpanBoundRow bound_row(std::size_t i, double from) const;
   bool has_tangent(std::size_t i) const { return tangent_at_[i] >= spans[i].t0; }
   //  - The largest s ≤ tmax up to which F < C is proven from what the
-  //    last shape_value_at() found (to within a hundredth of the way, or
+  //    last probe found (to within a hundredth of the way, or
   //    min_step).
   double proven_below_until(const BlobField& field, double tmax, double min_step) const;
   //  - A probe at t from the tangent planes of the surface the ray leaves:
   //    every live span with a plane skipped, its term bounded by its
   //    plane's line, and only the others evaluated; an upper bound of F
-  //    that complete_probe() makes exact.
-  double plane_probe(const BlobField& field, const SupportPlanes& planes, const Vec3& origin, const Vec3& direction,
-                     double t, TraceStats& stats) const;
+  //    that stage_completion() makes exact.
+  void stage_plane_probe(const SupportPlanes& planes, double t);
   //  - How far along the ray F would reach C at its slope where the last
   //    probe looked: Newton's step, shared by the proofs' first try and
   //    the walk's steps onto the surface. +∞ where F does not rise there.
   double newton_step(double c) const;
   //  - The first crossing in [tmin, tmax] by stepping from proof to proof.
   //    For an `any` query the first probe at or above C is the answer.
-  double shape_trace(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin, double tmax,
-                     const TraceSettings& settings, TraceStats& stats, CrossingQuery query);
+  //    start_walk() stages the first probe; walk() goes on from the staged
+  //    probe (its gauges in, or none wanted) until a probe waits on gauges
+  //    (true) or the walk has its answer `t` (false).
+  bool start_walk(double tmin, double tmax, double& t);
+  bool walk(bool gauges_in, double& t);
+  //  - What the probe just finished, F there, was for: true where it
+  //    staged the next one, false with the walk's answer `t`.
+  bool walk_on(double f, double& t);
+  //  - A proof from the walk's point, and the next probe staged beyond
+  //    it, or the answer (−1: none before tmax).
+  bool walk_step(double& t);
+  //  - The crossing inside a bracket F(lo) < C ≤ F(hi), hi the last probe,
+  //    to the precision refine() gives, by Newton's method with the probes'
+  //    slopes: the next probe staged, or the answer `t`.
+  bool start_refinement(double lo, double hi, double f_lo, double f_hi, double& t);
+  bool refine_on(double f, double& t);
+  bool refine_step(double& t);
+  // What the walk was doing when its probe was staged.
+  enum class WalkStage { first_probe, first_completion, step_probe, step_completion, refinement };
+  struct Walk {
+    WalkStage stage = WalkStage::first_probe;
+    double tmax = 0.0;
+    double t = 0.0, f = 0.0;  // where the walk stands: F < C proven up to t
+    double next = 0.0;        // the step's probe
+    int steps = 0;
+    // The refinement's bracket, [lo, hi] with F − C of e_lo < 0 ≤ e_hi,
+    // and its last probe: where, F − C there and dF/dt.
+    double lo = 0.0, hi = 0.0, e_lo = 0.0, e_hi = 0.0, at = 0.0, excess = 0.0, slope = 0.0, tolerance = 0.0;
+    int tries = 0;
+  };
+  Walk walk_;
 
   double crowd_peak(double tmin, double last_peak) const;
   double value_at(const BlobField& field, double t, TraceStats& stats) const;
@@ -211,7 +279,7 @@ class FieldRay {
   mutable std::vector<ShapeRay> shape_rays_;
   mutable std::vector<std::uint8_t> ray_made_;
   Vec3 ray_origin_ = Vec3::Zero(), ray_direction_ = Vec3::Zero();
-  // Each span's u and du/dt where shape_value_at() last evaluated it.
+  // Each span's u and du/dt where a probe last evaluated it.
   mutable std::vector<double> u_, du_dt_;
   // Where each span's u and du/dt were found (−∞ before its first).
   mutable std::vector<double> tangent_at_;
@@ -227,17 +295,23 @@ class FieldRay {
   };
   mutable std::vector<Term> live_terms_;
   mutable std::vector<std::uint32_t> skipped_, evaluated_;
-  // The live spans' terms at t listed by `terms` (indices into live_),
-  // evaluated all at once; each one's u, du/dt and tangent kept.
-  void evaluate_terms(const BlobField& field, const std::vector<std::uint32_t>& terms, double t,
-                      TraceStats& stats) const;
-  // evaluate_terms()' and surface_at()'s scratch.
+  // The live spans' terms at the probe's t listed by `terms` (indices into
+  // live_), their gauges staged all at once (samples_); finish_terms()
+  // keeps each one's u, du/dt and tangent.
+  void stage_terms(const std::vector<std::uint32_t>& terms);
+  void finish_terms();
+  const std::vector<std::uint32_t>* staged_terms_ = nullptr;
+  // How many gauges the staged terms wait on: 0 once they are in. (The
+  // lists keep their length, so staging a probe constructs nothing.)
+  std::size_t gauges_wanted_ = 0;
+  // The staged gauges (gauge_samples()) and their answers, and
+  // surface_at()'s scratch.
   mutable std::vector<ShapeSample> samples_;
   mutable std::vector<double> sample_u_, sample_rate_, sample_g_;
   mutable std::vector<Vec3> sample_gradients_;
   // F and dF/dt from live_terms_, in the spans' order.
   double sum_live_terms(const BlobField& field) const;
-  // The spans whose interval holds where shape_value_at() last looked, and
+  // The spans whose interval holds where the last probe looked, and
   // the first that begins after it.
   mutable std::vector<std::uint32_t> live_;
   mutable std::size_t first_unbegun_ = 0;

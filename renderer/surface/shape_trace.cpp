@@ -120,7 +120,7 @@ double FieldRay::first_shape_entry(const BlobField& field, const Vec3& origin, c
 }
 
 template <class SkipWith>
-double FieldRay::probe_at(const BlobField& field, double t, TraceStats& stats, SkipWith&& skip_with) const {
+void FieldRay::stage_probe(double t, SkipWith&& skip_with) {
   probed_at_ = t;
   live_.clear();
   live_terms_.clear();
@@ -143,9 +143,8 @@ double FieldRay::probe_at(const BlobField& field, double t, TraceStats& stats, S
   }
   first_unbegun_ = i;
   fill_idle_lanes();
-  evaluate_terms(field, evaluated_, t, stats);
-  ++stats.field_evaluations;
-  return sum_live_terms(field);
+  stage_terms(evaluated_);
+  ++call_.stats->field_evaluations;
 }
 
 // The gauges run kGaugeLanes glyphs at a time, and a probe with few live
@@ -164,8 +163,9 @@ void FieldRay::fill_idle_lanes() const {
   skipped_.clear();
 }
 
-double FieldRay::shape_value_at(const BlobField& field, double t, TraceStats& stats, Probe probe) const {
-  return probe_at(field, t, stats, [&](std::size_t i, double& k) {
+void FieldRay::stage_shape_probe(double t, Probe probe) {
+  const BlobField& field = *call_.field;
+  stage_probe(t, [&](std::size_t i, double& k) {
     if (probe != Probe::bound) return false;
     // What the proofs already know of its value here. Not evaluated
     // again where its tangent rises from here on (past its closest
@@ -183,12 +183,13 @@ double FieldRay::shape_value_at(const BlobField& field, double t, TraceStats& st
   });
 }
 
-void FieldRay::evaluate_terms(const BlobField& field, const std::vector<std::uint32_t>& terms, double t,
-                              TraceStats& stats) const {
+void FieldRay::stage_terms(const std::vector<std::uint32_t>& terms) {
   // All at once: the shape's gauges run in SIMD lanes.
-  samples_.resize(terms.size());
-  sample_u_.resize(terms.size());
-  sample_rate_.resize(terms.size());
+  const BlobField& field = *call_.field;
+  staged_terms_ = &terms;
+  gauges_wanted_ = terms.size();
+  if (samples_.size() < terms.size()) samples_.resize(terms.size());  // (surface_at() sizes it too)
+  if (sample_u_.size() < terms.size()) sample_u_.resize(terms.size()), sample_rate_.resize(terms.size());
   for (std::size_t k = 0; k < terms.size(); ++k) {
     const std::uint32_t i = live_[terms[k]];
     if (!ray_made_[i]) {
@@ -196,19 +197,31 @@ void FieldRay::evaluate_terms(const BlobField& field, const std::vector<std::uin
       ray_made_[i] = 1;
     }
     const ShapeRay& r = shape_rays_[i];
-    samples_[k] = {&shape_params(field, spans[i].source), r.q0 + t * r.v, r.v};
+    samples_[k] = {&shape_params(field, spans[i].source), r.q0 + probed_at_ * r.v, r.v};
   }
-  shape_u_rates(field.shape, samples_.data(), int(terms.size()), sample_u_.data(), sample_rate_.data());
+}
+
+void FieldRay::finish_terms() {
+  const BlobField& field = *call_.field;
+  const std::vector<std::uint32_t>& terms = *staged_terms_;
   for (std::size_t k = 0; k < terms.size(); ++k) {
     const std::uint32_t i = live_[terms[k]];
     const double u = sample_u_[k], g = u * u;
     u_[i] = u;
     du_dt_[i] = sample_rate_[k];
-    tangent_at_[i] = t;
+    tangent_at_[i] = probed_at_;
     // dK/dt = dK/dg · 2u du/dt.
     live_terms_[terms[k]] = {kernel_value(field.kernel, g), kernel_slope(field.kernel, g) * 2.0 * u * du_dt_[i]};
   }
-  stats.kernel_evaluations += terms.size();
+  call_.stats->kernel_evaluations += terms.size();
+  gauges_wanted_ = 0;
+}
+
+double FieldRay::finish_probe() {
+  finish_terms();
+  // A completion's terms were the skipped ones: none is skipped now.
+  if (staged_terms_ == &skipped_) skipped_.clear();
+  return sum_live_terms(*call_.field);
 }
 
 double FieldRay::sum_live_terms(const BlobField& field) const {
@@ -225,16 +238,16 @@ double FieldRay::sum_live_terms(const BlobField& field) const {
   return f;
 }
 
-double FieldRay::plane_probe(const BlobField& field, const SupportPlanes& planes, const Vec3& origin,
-                             const Vec3& direction, double t, TraceStats& stats) const {
+void FieldRay::stage_plane_probe(const SupportPlanes& planes, double t) {
+  const BlobField& field = *call_.field;
   // The ray's point at t, from the hit the planes were taken at.
-  const Vec3 offset = origin + t * direction - planes.at;
+  const Vec3 offset = call_.origin + t * call_.direction - planes.at;
   // The spans live where the ray starts all begin there, so they come in
   // rank order, as the planes do: one pass pairs them. (Were they not, a
   // span would only miss its plane and be evaluated.)
   auto plane = planes.planes.begin();
   const auto no_plane = planes.planes.end();
-  return probe_at(field, t, stats, [&](std::size_t i, double& k) {
+  stage_probe(t, [&](std::size_t i, double& k) {
     while (plane != no_plane && plane->rank < spans[i].rank) ++plane;
     // Without a plane, nonzero at the ray's start but not at the hit (a
     // support's edge passing between them): the ray starts inside it,
@@ -243,21 +256,17 @@ double FieldRay::plane_probe(const BlobField& field, const SupportPlanes& planes
     // Its plane along the ray, a tangent in all but name: u ≥ u0 + t' du/dt
     // for every t'.
     u_[i] = plane->u + plane->gradient.dot(offset);
-    du_dt_[i] = plane->gradient.dot(direction);
+    du_dt_[i] = plane->gradient.dot(call_.direction);
     tangent_at_[i] = t;
     k = term_bound(field, i, t, t);
     return true;
   });
 }
 
-double FieldRay::complete_probe(const BlobField& field, TraceStats& stats) const {
-  evaluate_terms(field, skipped_, probed_at_, stats);
-  skipped_.clear();
-  return sum_live_terms(field);
-}
+void FieldRay::stage_completion() { stage_terms(skipped_); }
 
 namespace {
-// How near refine_shape() brings a crossing in [lo, hi]: the bracket's
+// How near the refinement brings a crossing in [lo, hi]: the bracket's
 // width at the end.
 double crossing_tolerance(double lo, double hi) { return 1e-14 * (std::fabs(lo) + std::fabs(hi)) + 1e-300; }
 }  // namespace
@@ -270,27 +279,43 @@ double crossing_tolerance(double lo, double hi) { return 1e-14 * (std::fabs(lo) 
 // probe was not on, so the bracket closes from both sides instead of
 // Newton's one; a step that leaves the bracket, or a slope of the wrong
 // sign, falls back to the bracket's secant.
-double FieldRay::refine_shape(const BlobField& field, double lo, double hi, double f_lo, double f_hi,
-                              TraceStats& stats) const {
-  const double c = field.isovalue;
-  const double tolerance = crossing_tolerance(lo, hi);
-  double e_lo = f_lo - c, e_hi = f_hi - c;
+bool FieldRay::start_refinement(double lo, double hi, double f_lo, double f_hi, double& t) {
+  const double c = call_.field->isovalue;
+  Walk& w = walk_;
+  w.lo = lo, w.hi = hi, w.e_lo = f_lo - c, w.e_hi = f_hi - c;
+  w.tolerance = crossing_tolerance(lo, hi);
   // The last probe: where, how far above C, and F's slope there.
-  double at = hi, excess = e_hi, slope = probed_at_ == hi ? probed_slope_ : 0.0;
-  for (int i = 0; i < 100 && hi - lo > tolerance && e_hi > 0.0; ++i) {
-    double t = (lo * e_hi - hi * e_lo) / (e_hi - e_lo);
-    if (slope > 0.0) {
-      const double newton = at - excess / slope + (excess >= 0.0 ? -0.25 : 0.25) * tolerance;
-      if (newton > lo && newton < hi) t = newton;
-    }
-    if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
-    excess = shape_value_at(field, t, stats) - c;
-    slope = probed_slope_;
-    at = t;
-    if (excess >= 0.0) hi = t, e_hi = excess;
-    else lo = t, e_lo = excess;
+  w.at = hi, w.excess = w.e_hi, w.slope = probed_at_ == hi ? probed_slope_ : 0.0;
+  w.tries = 0;
+  return refine_step(t);
+}
+
+bool FieldRay::refine_step(double& t) {
+  Walk& w = walk_;
+  if (!(w.tries < 100 && w.hi - w.lo > w.tolerance && w.e_hi > 0.0)) {
+    t = w.hi;
+    return false;
   }
-  return hi;
+  double s = (w.lo * w.e_hi - w.hi * w.e_lo) / (w.e_hi - w.e_lo);
+  if (w.slope > 0.0) {
+    const double newton = w.at - w.excess / w.slope + (w.excess >= 0.0 ? -0.25 : 0.25) * w.tolerance;
+    if (newton > w.lo && newton < w.hi) s = newton;
+  }
+  if (!(s > w.lo && s < w.hi)) s = 0.5 * (w.lo + w.hi);
+  w.at = s;
+  w.stage = WalkStage::refinement;
+  stage_shape_probe(s);
+  return true;
+}
+
+bool FieldRay::refine_on(double f, double& t) {
+  Walk& w = walk_;
+  w.excess = f - call_.field->isovalue;
+  w.slope = probed_slope_;
+  if (w.excess >= 0.0) w.hi = w.at, w.e_hi = w.excess;
+  else w.lo = w.at, w.e_lo = w.excess;
+  ++w.tries;
+  return refine_step(t);
 }
 
 double FieldRay::newton_step(double c) const {
@@ -399,54 +424,103 @@ double FieldRay::proven_below_until(const BlobField& field, double tmax, double 
   return lo;
 }
 
-double FieldRay::shape_trace(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin,
-                             double tmax, const TraceSettings& settings, TraceStats& stats, CrossingQuery query) {
-  const double c = field.isovalue;
+bool FieldRay::start_walk(double tmin, double tmax, double& t) {
+  Walk& w = walk_;
   // Past the last support F is 0: the search for a proof stays short of it.
   double last = tmin;
   for (const RaySpan& s : spans) last = std::max(last, s.t1);
-  tmax = std::min(tmax, last);
+  w.tmax = std::min(tmax, last);
+  w.t = tmin;
+  w.steps = 0;
+  w.stage = WalkStage::first_probe;
   // An occlusion ray that leaves a glyph hit starts from the hit's planes;
   // only if they do not keep F below C at its start is anything evaluated.
-  double t = tmin, f = origin_planes_ && query == CrossingQuery::any
-                           ? plane_probe(field, *origin_planes_, origin, direction, t, stats)
-                           : shape_value_at(field, t, stats);
-  if (f >= c && !skipped_.empty()) f = complete_probe(field, stats);
-  if (f >= c) return t;
-  for (int steps = 0;;) {
-    // Where F at its slope reaches C within min_step, the walk is on the
-    // surface: a proof would reach no further than the min_step it steps
-    // unproven anyway (TraceSettings::min_step), and is left out. Nearly
-    // every walk that meets the surface ended with such a proof (on fig17's
-    // beads as superquadrics, 960², 1 sample: all but 130 of 509,977
-    // camera rays' and 108 of 189,083 occlusion rays'; 8% of the proofs).
-    const double newton = newton_step(c);
-    const bool at_surface = newton < settings.min_step;
-    const double reach = at_surface ? t : proven_below_until(field, tmax, settings.min_step);
-    if (reach >= tmax) return -1.0;
-    if (++steps > settings.max_steps) {
-      ++stats.step_limit_hits;
-      return -1.0;
-    }
-    double next = std::min(std::max(reach, t + settings.min_step), tmax);
-    // There a camera ray steps by Newton's method instead, a quarter of
-    // refine_shape's tolerance past its estimate: from a probe that near,
-    // the estimate is within the tolerance, so the probe lands just past C
-    // and one more closes the bracket, where a min_step past C took three
-    // (on fig17's beads 6.47 -> 5.67 probes a camera ray). An occlusion
-    // ray keeps the min_step, which lands past C surely and answers it.
-    if (at_surface && query == CrossingQuery::first)
-      next = std::min(next, t + newton + 0.25 * crossing_tolerance(t, t));
-    double f_next = shape_value_at(field, next, stats, Probe::bound);
-    // At or above C by the bound: the terms it skipped decide.
-    if (f_next >= c && !skipped_.empty()) f_next = complete_probe(field, stats);
-    if (f_next >= c) return query == CrossingQuery::any ? next : refine_shape(field, t, next, f, f_next, stats);
-    t = next;
-    f = f_next;
-    // No probe goes back before t: the spans in front that ended before
-    // it are not looked at again.
-    while (first_open_ < first_unbegun_ && spans[first_open_].t1 < t) ++first_open_;
+  if (origin_planes_ && call_.query == CrossingQuery::any) stage_plane_probe(*origin_planes_, tmin);
+  else stage_shape_probe(tmin);
+  return walk(false, t);
+}
+
+bool FieldRay::walk(bool gauges_in, double& t) {
+  for (;; gauges_in = false) {
+    if (gauges_wanted_ && !gauges_in) return true;
+    if (!walk_on(finish_probe(), t)) return false;
   }
+}
+
+bool FieldRay::walk_on(double f, double& t) {
+  const double c = call_.field->isovalue;
+  Walk& w = walk_;
+  switch (w.stage) {
+    case WalkStage::refinement: return refine_on(f, t);
+    case WalkStage::first_probe:
+    case WalkStage::step_probe:
+      // At or above C by the bound: the terms it skipped decide.
+      if (f >= c && !skipped_.empty()) {
+        w.stage = w.stage == WalkStage::first_probe ? WalkStage::first_completion : WalkStage::step_completion;
+        stage_completion();
+        return true;
+      }
+      break;
+    case WalkStage::first_completion:
+    case WalkStage::step_completion: break;
+  }
+  if (w.stage == WalkStage::first_probe || w.stage == WalkStage::first_completion) {
+    if (f >= c) {
+      t = w.t;
+      return false;
+    }
+    w.f = f;
+    return walk_step(t);
+  }
+  if (f >= c) {
+    if (call_.query == CrossingQuery::any) {
+      t = w.next;
+      return false;
+    }
+    return start_refinement(w.t, w.next, w.f, f, t);
+  }
+  w.t = w.next;
+  w.f = f;
+  // No probe goes back before t: the spans in front that ended before
+  // it are not looked at again.
+  while (first_open_ < first_unbegun_ && spans[first_open_].t1 < w.t) ++first_open_;
+  return walk_step(t);
+}
+
+bool FieldRay::walk_step(double& t) {
+  const double c = call_.field->isovalue;
+  const TraceSettings& settings = *call_.settings;
+  Walk& w = walk_;
+  // Where F at its slope reaches C within min_step, the walk is on the
+  // surface: a proof would reach no further than the min_step it steps
+  // unproven anyway (TraceSettings::min_step), and is left out. Nearly
+  // every walk that meets the surface ended with such a proof (on fig17's
+  // beads as superquadrics, 960², 1 sample: all but 130 of 509,977
+  // camera rays' and 108 of 189,083 occlusion rays'; 8% of the proofs).
+  const double newton = newton_step(c);
+  const bool at_surface = newton < settings.min_step;
+  const double reach = at_surface ? w.t : proven_below_until(*call_.field, w.tmax, settings.min_step);
+  if (reach >= w.tmax) {
+    t = -1.0;
+    return false;
+  }
+  if (++w.steps > settings.max_steps) {
+    ++call_.stats->step_limit_hits;
+    t = -1.0;
+    return false;
+  }
+  w.next = std::min(std::max(reach, w.t + settings.min_step), w.tmax);
+  // There a camera ray steps by Newton's method instead, a quarter of
+  // the refinement's tolerance past its estimate: from a probe that near,
+  // the estimate is within the tolerance, so the probe lands just past C
+  // and one more closes the bracket, where a min_step past C took three
+  // (on fig17's beads 6.47 -> 5.67 probes a camera ray). An occlusion
+  // ray keeps the min_step, which lands past C surely and answers it.
+  if (at_surface && call_.query == CrossingQuery::first)
+    w.next = std::min(w.next, w.t + newton + 0.25 * crossing_tolerance(w.t, w.t));
+  w.stage = WalkStage::step_probe;
+  stage_shape_probe(w.next, Probe::bound);
+  return true;
 }
 
 }  // namespace hsb

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -408,6 +409,81 @@ TEST(GlyphShapes, TracerFindsEveryCrossingDenseSamplingFinds) {
     EXPECT_GT(hits, 40);
     EXPECT_GE(agreed, hits - 3);
   }
+}
+
+// A packet's rays walk side by side (FieldRay::start_crossing), their
+// gauges in shared batches; ambient rays, each with its own spans, too.
+// Each camera ray must get the bits it gets alone (its crossing, and the
+// spans left for its shading: with groups, the hit group's), and each
+// occlusion ray the same answer, blocked or free, at a point inside the
+// surface (an `any` query returns the first it proves, which depends on
+// the spans a packet's traversal stopped at). On a field with two groups,
+// as hyperstreamlines' families make, and without. Sharing a lane's
+// result with the wrong ray, or resuming one ray's walk from another's
+// state, moves crossings or loses them.
+TEST(GlyphShapes, RaysWalkedSideBySideAnswerAsEachAlone) {
+  for (const GlyphShape shape : {GlyphShape::superquadric, GlyphShape::signed_superquadric})
+    for (const bool grouped : {false, true}) {
+      SCOPED_TRACE(std::string(shape == GlyphShape::superquadric ? "superquadric" : "signed") +
+                   (grouped ? ", two groups" : ""));
+      BlobField field = superquadric_crowd(40, 3.0, Blend::sum, shape);
+      if (grouped)
+        for (std::size_t i = 0; i < field.sources.size(); ++i) field.groups.push_back(std::uint8_t(i % 2));
+      const EmbreeDevice device;
+      const BlobGeometry blobs(device.get(), field, TracedCrowd::sphere_tracing());
+      std::mt19937 rng(31);
+      std::uniform_real_distribution<double> u(-0.4, 0.4);
+      std::normal_distribution<double> n;
+      int hits = 0, blocked = 0;
+      for (int packet = 0; packet < 24; ++packet) {
+        // From one eye towards the crowd, or (odd packets) from points
+        // inside it in every direction, as occlusion rays leave.
+        const Vec3 eye = 3.0 * Vec3(n(rng), n(rng), n(rng)).normalized();
+        std::array<RayInterval, kMaxPacket> rays;
+        for (RayInterval& ray : rays) {
+          const Vec3 o = packet % 2 ? Vec3(u(rng), u(rng), u(rng)) : eye;
+          const Vec3 d = packet % 2 ? Vec3(n(rng), n(rng), n(rng)) : Vec3(Vec3(u(rng), u(rng), u(rng)) - o);
+          ray = {o.cast<float>().cast<double>(), d.normalized().cast<float>().cast<double>(), 0.0, 8.0};
+        }
+        for (const CrossingQuery query : {CrossingQuery::first, CrossingQuery::any}) {
+          FieldRayLanes together, one_by_one;
+          TraceStats stats;
+          double packet_hits[kMaxPacket], own_hits[kMaxPacket];
+          blobs.first_crossings(rays.data(), kMaxPacket, together.data(), stats, packet_hits, query);
+          blobs.crossings_one_by_one(rays.data(), kMaxPacket, nullptr, one_by_one.data(), stats, own_hits, query);
+          for (int i = 0; i < kMaxPacket; ++i) {
+            const RayInterval& ray = rays[std::size_t(i)];
+            FieldRay alone, traversed;
+            double alone_hit;
+            blobs.first_crossings(&ray, 1, &alone, stats, &alone_hit, query);
+            const double traversed_hit = blobs.first_crossing_traversed(ray, traversed, stats, query);
+            if (query == CrossingQuery::any) {
+              ASSERT_EQ(packet_hits[i] >= 0.0, alone_hit >= 0.0) << "packet " << packet << " ray " << i;
+              ASSERT_EQ(own_hits[i] >= 0.0, traversed_hit >= 0.0) << "packet " << packet << " ray " << i;
+              for (const double t : {packet_hits[i], own_hits[i]}) {
+                if (t < 0.0) continue;
+                EXPECT_GE(field_value(field, ray.origin + t * ray.direction), field.isovalue * (1.0 - 1e-9))
+                    << "packet " << packet << " ray " << i;
+              }
+              blocked += alone_hit >= 0.0;
+              continue;
+            }
+            ASSERT_EQ(packet_hits[i], alone_hit) << "packet " << packet << " ray " << i;
+            ASSERT_EQ(own_hits[i], traversed_hit) << "packet " << packet << " ray " << i;
+            if (alone_hit < 0.0) continue;
+            ++hits;
+            const Vec3 normal = alone.surface_at(field, ray.origin, ray.direction, alone_hit).normal;
+            EXPECT_EQ(together[std::size_t(i)].surface_at(field, ray.origin, ray.direction, alone_hit).normal, normal)
+                << "packet " << packet << " ray " << i;
+            EXPECT_EQ(one_by_one[std::size_t(i)].surface_at(field, ray.origin, ray.direction, alone_hit).normal,
+                      traversed.surface_at(field, ray.origin, ray.direction, alone_hit).normal)
+                << "packet " << packet << " ray " << i;
+          }
+        }
+      }
+      EXPECT_GT(hits, 60);
+      EXPECT_GT(blocked, 60);
+    }
 }
 
 // An occlusion ray that leaves a glyph hit starts its walk from the hit's

@@ -181,13 +181,13 @@ TEST_F(CrowdScene, AmbientRaysGiveTheSameAnswersListedOrOneByOne) {
   std::vector<RayInterval> rays;
   for (int r = 0; r < 32; ++r)
     rays.push_back({Vec3(0.1 + unit(rng), unit(rng), 0.3 + unit(rng)), random_direction(rng), 0.0, 0.25});
-  FieldRay tracer;
+  FieldRayLanes tracers;
   AmbientRays with_list, one_by_one;
   TraceStats listed_stats, traversed_stats;
   std::vector<std::uint8_t> listed, traversed;
   const std::vector<const SupportPlanes*> no_planes(rays.size(), nullptr);  // the rays leave no glyph hit
-  with_list.trace(scene, rays, no_planes, 100.0, tracer, listed_stats, listed);  // a dense crowd: worth a list
-  one_by_one.trace(scene, rays, no_planes, 0.0, tracer, traversed_stats, traversed);  // nothing there: one by one
+  with_list.trace(scene, rays, no_planes, 100.0, tracers, listed_stats, listed);  // a dense crowd: worth a list
+  one_by_one.trace(scene, rays, no_planes, 0.0, tracers, traversed_stats, traversed);  // nothing there: one by one
   EXPECT_EQ(listed, traversed);
   EXPECT_EQ(listed_stats.span_queries, 0u);                 // no ray traversed the BVH
   EXPECT_EQ(traversed_stats.span_queries, rays.size());     // every ray did
