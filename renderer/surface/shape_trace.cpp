@@ -15,6 +15,8 @@
 //    taken: a source found past its closest approach is not evaluated
 //    again while the walk goes on (it only falls), so each step costs the
 //    sources still coming closer.
+//  - the walk pauses at each probe's gauges (FieldRay::start_crossing):
+//    a packet's rays walk side by side and share batches of gauges.
 
 #include <algorithm>
 #include <cmath>
