@@ -351,7 +351,7 @@ double FieldRay::newton_step(double c) const {
 double FieldRay::proven_below_until(const BlobField& field, double tmax, double min_step) const {
   const double t = probed_at_, c = field.isovalue;
   // F is a sum here: a union's crossing is its first entry, which
-  // group_crossing finds without a walk.
+  // start_group_crossing() finds without a walk.
   // A span live at t that is past its closest approach by both its
   // tangent and its lower bound's vertex has its largest value at t, whatever
   // s: those are summed once. The others are rows of the bound, from t.
