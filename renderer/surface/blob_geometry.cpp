@@ -120,17 +120,14 @@ ValidLanes gather_lanes(const int* valid, RTCRayN* rays, unsigned n) {
 // lane gives a glyph alone's bits, so each ray's answers are those it
 // gets alone.
 void evaluate_gauges_together(GlyphShape shape, FieldRay* tracers, unsigned waiting) {
-  const auto alone = [&](FieldRay& ray) {
-    shape_u_rates(shape, ray.gauge_samples(), int(ray.gauge_count()), ray.gauge_u(), ray.gauge_rates());
-  };
   unsigned sharing = 0;
   for (unsigned rest = waiting; rest; rest &= rest - 1) {
     FieldRay& ray = tracers[__builtin_ctz(rest)];
-    if (ray.gauge_count() >= std::size_t(kGaugeLanes)) alone(ray);
+    if (ray.gauge_count() >= std::size_t(kGaugeLanes)) ray.evaluate_gauges();
     else sharing |= rest & -rest;
   }
   if (!(sharing & (sharing - 1))) {
-    if (sharing) alone(tracers[__builtin_ctz(sharing)]);
+    if (sharing) tracers[__builtin_ctz(sharing)].evaluate_gauges();
     return;
   }
   // Kept per thread, as the tracers are: the loop never allocates once

@@ -82,8 +82,12 @@ double FieldRay::first_crossing(const BlobField& field, const Vec3& origin, cons
                                 CrossingQuery query) {
   for (bool waiting = start_crossing(field, origin, direction, tmin, tmax, settings, stats, query); waiting;
        waiting = resume_crossing())
-    shape_u_rates(field.shape, samples_.data(), int(gauges_wanted_), sample_u_.data(), sample_rate_.data());
+    evaluate_gauges();
   return crossing();
+}
+
+void FieldRay::evaluate_gauges() {
+  shape_u_rates(call_.field->shape, samples_.data(), int(gauges_wanted_), sample_u_.data(), sample_rate_.data());
 }
 
 bool FieldRay::start_crossing(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin,

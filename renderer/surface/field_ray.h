@@ -96,6 +96,8 @@ class FieldRay {
   std::size_t gauge_count() const { return gauges_wanted_; }
   double* gauge_u() { return sample_u_.data(); }
   double* gauge_rates() { return sample_rate_.data(); }
+  // The gauges it waits on, evaluated by the ray alone.
+  void evaluate_gauges();
 
   // Normal and colour at ray parameter t; uses the spans of the last
   // first_crossing() call, which cover every source that is non-zero there.
@@ -248,8 +250,9 @@ class FieldRay {
   bool start_refinement(double lo, double hi, double f_lo, double f_hi, double& t);
   bool refine_on(double f, double& t);
   bool refine_step(double& t);
-  // What the walk was doing when its probe was staged.
-  enum class WalkStage { first_probe, first_completion, step_probe, step_completion, refinement };
+  // What the walk was doing when its probe was staged (a probe's
+  // completion, stage_completion(), keeps its probe's stage).
+  enum class WalkStage { first_probe, step_probe, refinement };
   struct Walk {
     WalkStage stage = WalkStage::first_probe;
     double tmax = 0.0;
