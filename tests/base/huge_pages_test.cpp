@@ -34,15 +34,10 @@ long huge_page_fallbacks() {
 
 // AddressSanitizer writes a byte of shadow for each eight of the buffer's,
 // on pages of its own: a fault per 32 KB that no advice on the buffer
-// removes.
-#if defined(__SANITIZE_ADDRESS__)
+// removes. (This file is not instrumented, the code it tests is: the
+// build says whether the process runs ASan's runtime.)
+#if defined(HSB_ASAN_RUNTIME)
 constexpr bool kShadowedMemory = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kShadowedMemory = true;
-#else
-constexpr bool kShadowedMemory = false;
-#endif
 #else
 constexpr bool kShadowedMemory = false;
 #endif
