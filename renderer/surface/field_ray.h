@@ -167,7 +167,7 @@ class FieldRay {
 
   // Each span's ray in its source's stored frame, q_s(t) = q0 + t v; only
   // for shapes other than the ellipsoid.
-  // rate: Lσ√a, the most u changes per unit along the ray (glyph_shape.h).
+  // rate: σ√a, the most N ≤ u changes per unit along the ray (shape_trace.cpp: span_rate).
   struct ShapeRay {
     Vec3 q0, v;
     double rate;

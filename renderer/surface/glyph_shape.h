@@ -27,8 +27,9 @@
 //    the ellipsoid's exponents, at most √3 for a cube) gives W_s = W/σ:
 //    g_e = |q|²/σ² ≤ N². For α, β ≤ 1 (every sharpness ≥ 0) N ≤ |q| and N
 //    is 1-Lipschitz in q (|∇N| ≤ 1, Schultz and Kindlmann's nested norms),
-//    so along a ray u changes at most σ times as fast as √g_e (the
-//    tracer's bound for a source it has not reached, shape_trace.cpp).
+//    so along a ray N changes at most σ times as fast as √g_e (the
+//    tracer's bound for a source it has not reached, shape_trace.cpp:
+//    span_rate, which holds for every shape, as u ≥ N).
 //    N is C¹ away from the centre for
 //    0 < α, β < 2: the "edges" of sharp glyphs are bands of high curvature,
 //    not creases, so the gradient is defined everywhere on the surface
@@ -74,7 +75,7 @@ constexpr double kConeBase = 1.5;
 struct ShapeParams {
   float alpha = 1.0f, beta = 1.0f;  // superquadric: equatorial and axial exponents
   // σ: W_s = W/σ bounds the influence (g_e ≤ g), and u's rate along a ray
-  // is at most Lσ times √g_e's (L below).
+  // is at most Lσ times √g_e's (L below), N's σ times.
   float bound_scale = 1.0f;
   std::uint8_t axis = 2;            // superquadric: the symmetry axis, a row of W (0, 1 or 2)
   std::uint8_t pointed = 0;         // signed: bit k set when axis k (row k of W) is compressive

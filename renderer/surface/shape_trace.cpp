@@ -35,10 +35,16 @@ namespace {
 // matters.
 constexpr double kSliver = 1.0 / 32.0;
 
-// The most a span's u changes per unit along the ray, Lσ√a (glyph_shape.h).
+// The most a span's superquadric gauge N changes per unit along the ray,
+// σ√a: N is 1-Lipschitz in the glyph's own frame (glyph_shape.h), which
+// the ray crosses at σ√a per unit. N, not u, because it is the lower bound
+// before a span is evaluated that needs it (bound_row): u ≥ N, and N ≥ 1
+// where the span begins, at the edge of its bounding ellipsoid, box or
+// cylinder, each of which holds N ≤ 1. A signed glyph's cones make u's own
+// constant L = 1.2 (ShapeParams::lipschitz), and a rate of Lσ√a let the
+// bound fall a fifth faster than it can.
 double span_rate(const BlobField& field, const RaySpan& span) {
-  const ShapeParams& shape = shape_params(field, span.source);
-  return std::sqrt(span.a) * double(shape.bound_scale) * double(shape.lipschitz);
+  return std::sqrt(span.a) * double(shape_params(field, span.source).bound_scale);
 }
 }  // namespace
 
@@ -330,8 +336,8 @@ double FieldRay::newton_step(double c) const {
 // as the row.
 [[gnu::always_inline]] inline SpanBoundRow FieldRay::bound_row(std::size_t i, double from) const {
   const RaySpan& span = spans[i];
-  // Not yet evaluated, u ≥ 1 at the support's edge t0 and changes at most
-  // Lσ√a per unit (glyph_shape.h); convex, so above its tangent where it
+  // Not yet evaluated, u ≥ N ≥ 1 at the support's edge t0, and N changes
+  // at most σ√a per unit (span_rate); convex, so above its tangent where it
   // was last evaluated, which is lowest at the interval's end it falls
   // towards (its end if it falls, `from` if it rises). And g is at least
   // the span's lower bound, the bounding ellipsoid's g_e or what the box or
