@@ -366,11 +366,13 @@ int run(int argc, char** argv) {
     }));
   }
   // A render writes images (or checks them with --skip-existing): the
-  // image module loads while the first scene is read.
+  // image module loads while the first scene is read. A render that fails
+  // before it needs the module does not wait for it: main() ends with
+  // _exit, which runs none of the static destructors that must not meet
+  // the libraries' constructors still running on the loader's thread
+  // (a scene that failed at once crashed so, 1 in 150, when main returned
+  // through exit). A scene with a bad key took half a second to say so.
   hsb::preload_image_io();
-  struct FinishPreload {
-    ~FinishPreload() { hsb::finish_image_io_preload(); }
-  } finish_preload;  // however main returns
   // The batch: every scene times every swept value, this node's share,
   // each item made when its turn comes.
   hsb::Shard shard;

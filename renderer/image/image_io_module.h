@@ -51,12 +51,12 @@ const ImageIo& image_io();
 // child must not inherit the dynamic loader's lock half taken.
 void preload_image_io();
 
-// Waits for a load preload_image_io() began, if any. The process must not
-// exit while the loader runs the libraries' constructors: exit would
+// Waits for a load preload_image_io() began, if any. A process must not
+// exit() while the loader runs the libraries' constructors: exit would
 // destroy their static objects (registered with exit as they were made,
 // so destroyed first) under the constructors still using them, as a scene
 // that failed at once did now and then (a double free in libproj's).
-// main() calls it on its way out.
+// hsb's main() ends with _exit instead, which destroys nothing.
 void finish_image_io_preload();
 
 // What the module's load may still add to this process's resident memory:
