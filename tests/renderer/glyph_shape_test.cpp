@@ -129,9 +129,6 @@ TEST(GlyphShapes, KeepTheBoundsTheTracerRestsOn) {
   EXPECT_LT(mismatched, gradients / 1000);
 }
 
-// The cylinder is the least about the axis, not only a bound: the glyph's
-// equator reaches it (at 45° between its other axes, where the equatorial
-// norm is smallest), so it cuts no more than it may and no less.
 // A source the tracer has not evaluated yet is bounded from where its span
 // begins, the ray's entry into what holds its support (the bounding
 // ellipsoid narrowed to the cube and the cylinder): u ≥ 1 − σ√a (t − t0)
@@ -179,6 +176,9 @@ TEST(GlyphShapes, ASourceNotYetEvaluatedFallsNoFasterThanItsRateFromItsEntry) {
   EXPECT_GT(checked, 100000);
 }
 
+// The cylinder is the least about the axis, not only a bound: the glyph's
+// equator reaches it (at 45° between its other axes, where the equatorial
+// norm is smallest), so it cuts no more than it may and no less.
 TEST(Superquadric, SupportCylinderTouchesTheEquator) {
   for (const auto& sample : sample_shapes()) {
     ShapeParams s = sample.second;
