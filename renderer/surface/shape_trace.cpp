@@ -46,6 +46,25 @@ constexpr double kSliver = 1.0 / 32.0;
 double span_rate(const BlobField& field, const RaySpan& span) {
   return std::sqrt(span.a) * double(shape_params(field, span.source).bound_scale);
 }
+
+// Whether a ray from `start` along `direction` never reaches u = u_level
+// of the source of spatial rank `rank`, by that source's tangent plane at
+// the hit the ray leaves: u lies above the plane everywhere (it is
+// convex), and along the ray the plane starts above the level and rises.
+// A signed glyph's surface at its points lies well inside the box and
+// cylinder that settle most such sources (first_shape_entry), and a ray
+// leaving it had Newton's method take a gauge only to find u rising: on
+// fig17's beads as signed glyphs (960², 1 sample) the shadow rays sought
+// 1.22 million exact entries and found 0.14 million (as superquadrics
+// 0.29 and 0.11 million); with the planes, 2.45 -> 2.07 field evaluations
+// a shadow ray (superquadrics 2.01 -> 1.96).
+bool plane_keeps_out(const SupportPlanes& planes, std::uint32_t rank, const Vec3& start, const Vec3& direction,
+                     double u_level) {
+  const auto plane = std::lower_bound(planes.planes.begin(), planes.planes.end(), rank,
+                                      [](const SupportPlanes::Plane& p, std::uint32_t r) { return p.rank < r; });
+  if (plane == planes.planes.end() || plane->rank != rank) return false;
+  return plane->gradient.dot(direction) >= 0.0 && plane->u + plane->gradient.dot(start - planes.at) > u_level;
+}
 }  // namespace
 
 FieldRay::ShapeRay FieldRay::shape_ray(const BlobField& field, const RaySpan& span, const Vec3& origin,
@@ -92,10 +111,16 @@ double FieldRay::first_shape_entry(const BlobField& field, const Vec3& origin, c
                                    double g_level, double tmin, double tmax, TraceStats& stats) {
   // Entering the bounding ellipsoid's level surface g_e = g_level is the
   // earliest a shape's own (inside that one) can be entered.
+  // An occlusion ray leaving a glyph hit also has the hit's tangent planes
+  // (support_planes.h): a source whose plane keeps it out is not tried.
+  const SupportPlanes* planes = call_.query == CrossingQuery::any ? origin_planes_ : nullptr;
+  const Vec3 start = origin + tmin * direction;
+  const double u_level = std::sqrt(g_level);
   entries_.clear();
   for (std::uint32_t i = 0; i < spans.size(); ++i) {
     const double t = single_source_entry(spans[i], g_level, tmin, tmax);
-    if (t >= 0.0) entries_.push_back({t, i});
+    if (t >= 0.0 && !(planes && plane_keeps_out(*planes, spans[i].rank, start, direction, u_level)))
+      entries_.push_back({t, i});
   }
   // Nearest first: a source whose outer entry is past the best exact entry
   // so far cannot improve on it. (The least exact entry is the same
@@ -103,7 +128,6 @@ double FieldRay::first_shape_entry(const BlobField& field, const Vec3& origin, c
   std::sort(entries_.begin(), entries_.end(), [](const Entry& a, const Entry& b) {
     return a.t < b.t || (a.t == b.t && a.span < b.span);
   });
-  const double u_level = std::sqrt(g_level);
   double upper = -1.0;
   for (const Entry& e : entries_) {
     if (upper >= 0.0 && e.t >= upper) break;
