@@ -188,6 +188,7 @@ bool FieldRay::start_group_crossing(double tmax, double& t) {
     return false;
   };
   quadric_ = shape_is_quadric(field.shape);
+  point_floor_.clear();  // the last ray's
   stats.spans += spans.size();
   // Bounds from the sources one at a time, before anything is ordered: the
   // earliest single-source entry (first pass), then F at tmin (a ray that
@@ -231,7 +232,11 @@ bool FieldRay::start_group_crossing(double tmax, double& t) {
   stats.kernel_evaluations += 2 * spans.size();
   if (!quadric_) {
     // Blended sources whose peaks (upper bounds) sum below C
-    // leave F below it: nothing of the shapes is needed.
+    // leave F below it: nothing of the shapes is needed. A signed glyph's
+    // points bound it more tightly than its box, at a cost: asked only
+    // where the box's sum does not settle the ray, and kept for the walk.
+    if (upper < 0.0 && peaks >= c && field.shape == GlyphShape::signed_superquadric)
+      peaks = point_floors(field, origin, direction, tmin, peaks, stats);
     if (upper < 0.0 && peaks < c) return answered(-1.0);
     // An `any` query ends at an exact entry.
     if (query == CrossingQuery::any) {

@@ -171,6 +171,7 @@ class FieldRay {
   struct ShapeRay {
     Vec3 q0, v;
     double rate;
+    double u_floor;  // u ≥ u_floor from the ray's start on: a signed glyph's points' (point_floors), else 0
   };
 
   // Shapes other than the ellipsoid (shape_trace.cpp). Their g is not
@@ -187,6 +188,14 @@ class FieldRay {
   //    source, are answered without them.
   double first_shape_entry(const BlobField& field, const Vec3& origin, const Vec3& direction, double g_level,
                            double tmin, double tmax, TraceStats& stats);
+  //  - A signed glyph's points bound its u from below along the ray more
+  //    tightly than its box and cylinder (glyph_shape.h: least_point_u):
+  //    each pointed span's floor of u from tmin on (point_floor_, which
+  //    prepare_shape_rays() hands to the proofs' rows), and `peaks`, the
+  //    sum of the spans' peaks, lowered by them (peaks_ to match). Stops
+  //    once the sum is below C, which settles the ray.
+  double point_floors(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin, double peaks,
+                      TraceStats& stats);
   //  - A span's ray in its source's stored frame.
   ShapeRay shape_ray(const BlobField& field, const RaySpan& span, const Vec3& origin, const Vec3& direction) const;
   //  - A probe: F at t, over the spans whose interval holds t; keeps each
@@ -284,6 +293,7 @@ class FieldRay {
   Vec3 ray_origin_ = Vec3::Zero(), ray_direction_ = Vec3::Zero();
   // Each span's u and du/dt where a probe last evaluated it.
   mutable std::vector<double> u_, du_dt_;
+  std::vector<double> point_floor_;  // point_floors(), in the spans' order before prepare_shape_rays()
   // Where each span's u and du/dt were found (−∞ before its first).
   mutable std::vector<double> tangent_at_;
   mutable double probed_at_ = 0.0, probed_value_ = 0.0, probed_slope_ = 0.0;

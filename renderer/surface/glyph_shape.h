@@ -122,6 +122,14 @@ void shape_u_rates(GlyphShape shape, const ShapeSample* samples, int count, doub
 // shape_g_gradient() of many glyphs at once (the shading), v_s unused.
 void shape_g_gradients(GlyphShape shape, const ShapeSample* samples, int count, double* g, Vec3* gradient);
 
+// A lower bound of a signed glyph's u over [lo, hi] of the ray
+// q_s(t) = q0 + t v in the stored frame: the largest over its points of
+// the least its double cone C_k takes there (0 for a glyph without
+// points), in closed form. The box and cylinder that bound every
+// superquadric's support (ray_span.h) are loose about a point, and a ray
+// leaving a point's face sees nothing else of it before a gauge.
+double least_point_u(const ShapeParams& params, const Vec3& q0, const Vec3& v, double lo, double hi);
+
 // The ray's first t in [lo, hi] with u(q0 + t v) ≤ u_level, or −1: Newton's
 // method from lo on the convex u − u_level, whose every iterate stays at or
 // before the first root (a convex function lies above its tangents), so it

@@ -67,6 +67,24 @@ bool plane_keeps_out(const SupportPlanes& planes, std::uint32_t rank, const Vec3
 }
 }  // namespace
 
+double FieldRay::point_floors(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin,
+                              double peaks, TraceStats& stats) {
+  point_floor_.assign(spans.size(), 0.0);
+  // Until the sum is below C: that settles the ray, and a peak not
+  // lowered is still an upper bound.
+  for (std::uint32_t i = 0; i < spans.size() && peaks >= field.isovalue; ++i) {
+    const RaySpan& span = spans[i];
+    const ShapeParams& params = shape_params(field, span.source);
+    if (!params.pointed) continue;
+    const ShapeRay r = shape_ray(field, span, origin, direction);
+    const double u = point_floor_[i] = least_point_u(params, r.q0, r.v, std::max(span.t0, tmin), span.t1);
+    const double peak = kernel_value(field.kernel, std::max(u * u, span.least_lower_g()));
+    ++stats.kernel_evaluations;
+    if (peak < peaks_[i]) peaks += peak - peaks_[i], peaks_[i] = peak;
+  }
+  return peaks;
+}
+
 FieldRay::ShapeRay FieldRay::shape_ray(const BlobField& field, const RaySpan& span, const Vec3& origin,
                                        const Vec3& direction) const {
   const BlobSource& source = field.sources[span.source];
@@ -96,7 +114,13 @@ void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, co
   for (std::size_t i = 0; i < count; ++i) sorted_spans_[i] = spans[std::uint32_t(keys_[i])];
   spans.swap(sorted_spans_);
   shape_rays_.resize(count);
-  for (std::size_t i = 0; i < count; ++i) shape_rays_[i].rate = span_rate(field, spans[i]);
+  // (The points' floors, where point_floors() found them, in the spans'
+  // new order.)
+  const bool floors = point_floor_.size() == count;
+  for (std::size_t i = 0; i < count; ++i) {
+    shape_rays_[i].rate = span_rate(field, spans[i]);
+    shape_rays_[i].u_floor = floors ? point_floor_[std::uint32_t(keys_[i])] : 0.0;
+  }
   ray_made_.assign(count, 0);
   first_open_ = 0;
   ray_origin_ = origin;
@@ -227,7 +251,8 @@ void FieldRay::stage_terms(const std::vector<std::uint32_t>& terms) {
   for (std::size_t k = 0; k < terms.size(); ++k) {
     const std::uint32_t i = live_[terms[k]];
     if (!ray_made_[i]) {
-      shape_rays_[i] = shape_ray(field, spans[i], ray_origin_, ray_direction_);
+      const ShapeRay made = shape_ray(field, spans[i], ray_origin_, ray_direction_);
+      shape_rays_[i].q0 = made.q0, shape_rays_[i].v = made.v;  // its rate and floor are in already
       ray_made_[i] = 1;
     }
     const ShapeRay& r = shape_rays_[i];
@@ -365,9 +390,10 @@ double FieldRay::newton_step(double c) const {
   // was last evaluated, which is lowest at the interval's end it falls
   // towards (its end if it falls, `from` if it rises). And g is at least
   // the span's lower bound, the bounding ellipsoid's g_e or what the box or
-  // cylinder says (RaySpan::lower_a), smallest nearest its vertex.
+  // cylinder says (RaySpan::lower_a), smallest nearest its vertex. And u
+  // is at least the floor a signed glyph's points give it (point_floors).
   SpanBoundRow r{span.t1,      1.0,          -shape_rays_[i].rate, span.t0, std::max(span.lower_t, from),
-                 span.lower_t, span.lower_a, span.lower_g};
+                 span.lower_t, span.lower_a, span.lower_g, shape_rays_[i].u_floor};
   if (has_tangent(i)) {
     if (du_dt_[i] < 0.0) r.u0 = u_[i], r.rate = du_dt_[i], r.tau = tangent_at_[i];
     else r.u0 = u_[i] + du_dt_[i] * (from - tangent_at_[i]), r.rate = 0.0, r.tau = 0.0;

@@ -23,8 +23,10 @@ TEST(SpanBounds, RowsInLanesSumToTheBitsOfEachSpanAlone) {
   for (int k = 0; k < 203; ++k) {  // not a multiple of any vector width, and past two growths
     // Bounds from `from` ≤ 0.5, the smallest s asked.
     const double t_c = 4.0 * unit(rng), from = 0.5 * unit(rng);
+    // Half the rows with a floor of u (a signed glyph's points), half with none.
     pushed.push_back({from + 4.0 * unit(rng), 1.5 * unit(rng), unit(rng) < 0.2 ? 0.0 : -3.0 * unit(rng),
-                      4.0 * unit(rng), std::max(t_c, from), t_c, 5.0 * unit(rng), 1.2 * unit(rng)});
+                      4.0 * unit(rng), std::max(t_c, from), t_c, 5.0 * unit(rng), 1.2 * unit(rng),
+                      k % 2 ? 0.0 : 1.1 * unit(rng)});
     rows.push(pushed.back());
   }
   // Each row reads back as it was written, the columns kept apart.
@@ -32,7 +34,7 @@ TEST(SpanBounds, RowsInLanesSumToTheBitsOfEachSpanAlone) {
   for (std::size_t k = 0; k < rows.size(); ++k) {
     const SpanBoundRow a = rows.row(k), b = pushed[k];
     ASSERT_TRUE(a.t1 == b.t1 && a.u0 == b.u0 && a.rate == b.rate && a.tau == b.tau && a.t_near == b.t_near &&
-                a.t_c == b.t_c && a.a == b.a && a.g_min == b.g_min)
+                a.t_c == b.t_c && a.a == b.a && a.g_min == b.g_min && a.u_floor == b.u_floor)
         << "row " << k;
   }
   int nonzero = 0;
