@@ -133,13 +133,13 @@ void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, co
 
 double FieldRay::first_shape_entry(const BlobField& field, const Vec3& origin, const Vec3& direction,
                                    double g_level, double tmin, double tmax, TraceStats& stats) {
-  // Entering the bounding ellipsoid's level surface g_e = g_level is the
-  // earliest a shape's own (inside that one) can be entered.
-  // An occlusion ray leaving a glyph hit also has the hit's tangent planes
+  // An occlusion ray leaving a glyph hit has the hit's tangent planes
   // (support_planes.h): a source whose plane keeps it out is not tried.
   const SupportPlanes* planes = call_.query == CrossingQuery::any ? origin_planes_ : nullptr;
   const Vec3 start = origin + tmin * direction;
   const double u_level = std::sqrt(g_level);
+  // Entering the bounding ellipsoid's level surface g_e = g_level is the
+  // earliest a shape's own (inside that one) can be entered.
   entries_.clear();
   for (std::uint32_t i = 0; i < spans.size(); ++i) {
     const double t = single_source_entry(spans[i], g_level, tmin, tmax);
