@@ -8,9 +8,10 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <iomanip>
-#include <cmath>
+#include <limits>
 #include <random>
 
 #include "renderer/render/ray_scene.h"
@@ -302,15 +303,16 @@ TEST(GlyphShapes, SpansLowerBoundOfGHoldsAndBeatsTheEllipsoids) {
   }
 }
 
-// The least of a convex function over [lo, hi], by golden sections.
-template <class F>
-double least_of_convex(F&& f, double lo, double hi) {
-  for (int i = 0; i < 200 && hi - lo > 1e-15 * (std::fabs(lo) + std::fabs(hi)); ++i) {
-    const double m1 = lo + 0.381966 * (hi - lo), m2 = hi - 0.381966 * (hi - lo);
+// The least of a convex function over [lo, hi], by golden sections, in
+// T's precision.
+template <class T, class F>
+T least_of_convex(F&& f, T lo, T hi) {
+  for (int i = 0; i < 300 && hi - lo > std::numeric_limits<T>::epsilon() * (std::fabs(lo) + std::fabs(hi)); ++i) {
+    const T m1 = lo + T(0.381966) * (hi - lo), m2 = hi - T(0.381966) * (hi - lo);
     if (f(m1) < f(m2)) hi = m2;
     else lo = m1;
   }
-  return std::min({f(lo), f(hi), f(0.5 * (lo + hi))});
+  return std::min({f(lo), f(hi), f(T(0.5) * (lo + hi))});
 }
 
 // A signed glyph's points bound its u from below along a ray: the least of
@@ -410,13 +412,7 @@ TEST(GlyphShapes, LeastPointUHoldsWhereTheLineMeetsTheConeBadly) {
       const long double x = q0[0] + t * v[0], y = q0[1] + t * v[1], z = q0[2] + t * v[2];
       return std::sqrt(x * x + y * y) / (long double)kConeBase + std::fabs(z);
     };
-    long double a = lo, b = hi;
-    for (int k = 0; k < 300; ++k) {
-      const long double m1 = a + 0.381966L * (b - a), m2 = b - 0.381966L * (b - a);
-      if (cone(m1) < cone(m2)) b = m2;
-      else a = m1;
-    }
-    const long double reference = std::min({cone(lo), cone(hi), cone(0.5L * (a + b))});
+    const long double reference = least_of_convex(cone, (long double)lo, (long double)hi);
     const double reach = q0.cwiseAbs().sum() + v.cwiseAbs().sum() * std::max(std::fabs(lo), std::fabs(hi));
     ASSERT_LE((long double)least, reference) << std::setprecision(17) << "line " << it;
     ASSERT_GE((long double)least, reference * (1.0L - 1e-8L) - 1e-8L * reach) << std::setprecision(17) << "line " << it;
