@@ -188,7 +188,7 @@ bool FieldRay::start_group_crossing(double tmax, double& t) {
     return false;
   };
   quadric_ = shape_is_quadric(field.shape);
-  point_floor_.clear();  // the last ray's
+  point_rays_.clear();  // the last ray's
   stats.spans += spans.size();
   // Bounds from the sources one at a time, before anything is ordered: the
   // earliest single-source entry (first pass), then F at tmin (a ray that

@@ -190,8 +190,9 @@ class FieldRay {
                            double tmin, double tmax, TraceStats& stats);
   //  - A signed glyph's points bound its u from below along the ray more
   //    tightly than its box and cylinder (glyph_shape.h: least_point_u):
-  //    each pointed span's floor of u from tmin on (point_floor_, which
-  //    prepare_shape_rays() hands to the proofs' rows), and `peaks`, the
+  //    each pointed span's floor of u from tmin on, with the span's ray it
+  //    made for it (point_rays_, which prepare_shape_rays() keeps: the
+  //    floor for the proofs' rows, the ray for the probes), and `peaks`, the
   //    sum of the spans' peaks, lowered by them (peaks_ to match). Stops
   //    once the sum is below C, which settles the ray.
   double point_floors(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin, double peaks,
@@ -293,7 +294,7 @@ class FieldRay {
   Vec3 ray_origin_ = Vec3::Zero(), ray_direction_ = Vec3::Zero();
   // Each span's u and du/dt where a probe last evaluated it.
   mutable std::vector<double> u_, du_dt_;
-  std::vector<double> point_floor_;  // point_floors(), in the spans' order before prepare_shape_rays()
+  std::vector<ShapeRay> point_rays_;  // point_floors(), in the spans' order before prepare_shape_rays()
   // Where each span's u and du/dt were found (−∞ before its first).
   mutable std::vector<double> tangent_at_;
   mutable double probed_at_ = 0.0, probed_value_ = 0.0, probed_slope_ = 0.0;

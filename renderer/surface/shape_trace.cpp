@@ -69,15 +69,16 @@ bool plane_keeps_out(const SupportPlanes& planes, std::uint32_t rank, const Vec3
 
 double FieldRay::point_floors(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin,
                               double peaks, TraceStats& stats) {
-  point_floor_.assign(spans.size(), 0.0);
+  point_rays_.resize(spans.size());
   // Until the sum is below C: that settles the ray, and a peak not
-  // lowered is still an upper bound.
+  // lowered is still an upper bound. (So where the ray goes on, every
+  // pointed span has its ray and floor here.)
   for (std::uint32_t i = 0; i < spans.size() && peaks >= field.isovalue; ++i) {
     const RaySpan& span = spans[i];
     const ShapeParams& params = shape_params(field, span.source);
     if (!params.pointed) continue;
-    const ShapeRay r = shape_ray(field, span, origin, direction);
-    const double u = point_floor_[i] = least_point_u(params, r.q0, r.v, std::max(span.t0, tmin), span.t1);
+    ShapeRay& r = point_rays_[i] = shape_ray(field, span, origin, direction);
+    const double u = r.u_floor = least_point_u(params, r.q0, r.v, std::max(span.t0, tmin), span.t1);
     const double peak = kernel_value(field.kernel, std::max(u * u, span.least_lower_g()));
     ++stats.kernel_evaluations;
     if (peak < peaks_[i]) peaks += peak - peaks_[i], peaks_[i] = peak;
@@ -114,14 +115,20 @@ void FieldRay::prepare_shape_rays(const BlobField& field, const Vec3& origin, co
   for (std::size_t i = 0; i < count; ++i) sorted_spans_[i] = spans[std::uint32_t(keys_[i])];
   spans.swap(sorted_spans_);
   shape_rays_.resize(count);
-  // (The points' floors, where point_floors() found them, in the spans'
-  // new order.)
-  const bool floors = point_floor_.size() == count;
-  for (std::size_t i = 0; i < count; ++i) {
-    shape_rays_[i].rate = span_rate(field, spans[i]);
-    shape_rays_[i].u_floor = floors ? point_floor_[std::uint32_t(keys_[i])] : 0.0;
-  }
   ray_made_.assign(count, 0);
+  // A pointed span's ray and floor, where point_floors() made them, in the
+  // spans' new order.
+  const bool points = point_rays_.size() == count;
+  for (std::size_t i = 0; i < count; ++i) {
+    ShapeRay& r = shape_rays_[i];
+    if (points && shape_params(field, spans[i].source).pointed) {
+      r = point_rays_[std::uint32_t(keys_[i])];
+      ray_made_[i] = 1;
+    } else {
+      r.u_floor = 0.0;
+      r.rate = span_rate(field, spans[i]);
+    }
+  }
   first_open_ = 0;
   ray_origin_ = origin;
   ray_direction_ = direction;
@@ -252,7 +259,7 @@ void FieldRay::stage_terms(const std::vector<std::uint32_t>& terms) {
     const std::uint32_t i = live_[terms[k]];
     if (!ray_made_[i]) {
       const ShapeRay made = shape_ray(field, spans[i], ray_origin_, ray_direction_);
-      shape_rays_[i].q0 = made.q0, shape_rays_[i].v = made.v;  // its rate and floor are in already
+      shape_rays_[i].q0 = made.q0, shape_rays_[i].v = made.v;  // its rate and floor (0) are in already
       ray_made_[i] = 1;
     }
     const ShapeRay& r = shape_rays_[i];
