@@ -702,6 +702,52 @@ TEST(GlyphShapes, ATracerKeepsNothingOfTheRayBefore) {
   }
 }
 
+// A signed glyph's span whose points keep K at 0 all along the ray adds
+// nothing anywhere on it, and a ray that goes on past the peaks leaves it
+// out of its walk (point_floors). Only such spans go: every span a ray
+// loses holds K at 0 from its points' floor, or begins beyond the entry
+// that answers the ray. (The answers themselves are the dense sampling's,
+// TracerFindsEveryCrossingDenseSamplingFinds.)
+TEST(GlyphShapes, SpansTheirPointsKeepAtZeroAreLeftOut) {
+  const TracedCrowd crowd(Blend::sum, GlyphShape::signed_superquadric);
+  const BlobField& field = crowd.field;
+  std::mt19937 rng(43);
+  std::uniform_real_distribution<double> u(-0.4, 0.4);
+  std::normal_distribution<double> n;
+  int lost_zero = 0, rays_losing = 0;
+  for (int r = 0; r < 1000; ++r) {
+    const Vec3 o = r % 2 ? 3.0 * Vec3(n(rng), n(rng), n(rng)).normalized() : Vec3(u(rng), u(rng), u(rng));
+    const Vec3 d = r % 2 ? (Vec3(u(rng), u(rng), u(rng)) - o).normalized() : Vec3(n(rng), n(rng), n(rng)).normalized();
+    const RayInterval ray{o, d, 0.0, 1e30};
+    FieldRay tracer;
+    TraceStats stats;
+    crowd.blobs.collect_spans(&ray, 1, &tracer);
+    const std::vector<RaySpan> before = tracer.spans;
+    if (before.empty()) continue;
+    const double t = tracer.first_crossing(field, o, d, 0.0, 1e30, crowd.settings, stats, CrossingQuery::first);
+    std::vector<std::uint32_t> kept;
+    for (const RaySpan& s : tracer.spans) kept.push_back(s.source);
+    std::sort(kept.begin(), kept.end());
+    int lost_here = 0;
+    for (const RaySpan& s : before) {
+      if (std::binary_search(kept.begin(), kept.end(), s.source)) continue;
+      if (t >= 0.0 && s.t0 > t) continue;  // beyond the answering entry
+      const ShapeParams& params = shape_params(field, s.source);
+      ASSERT_TRUE(params.pointed) << "ray " << r << " lost source " << s.source;
+      const BlobSource& source = field.sources[s.source];
+      const Mat3 w = shape_matrix(source);
+      const Vec3 q0 = w * (o - Vec3(source.centre[0], source.centre[1], source.centre[2])), v = w * d;
+      const double floor = least_point_u(params, q0, v, std::max(s.t0, 0.0), s.t1);
+      ASSERT_EQ(kernel_value(field.kernel, floor * floor), 0.0) << "ray " << r << " lost source " << s.source;
+      ++lost_here;
+    }
+    lost_zero += lost_here;
+    rays_losing += lost_here > 0;
+  }
+  EXPECT_GT(rays_losing, 40);
+  EXPECT_GT(lost_zero, 60);
+}
+
 // An occlusion ray that leaves a glyph hit starts its walk from the hit's
 // tangent planes (support_planes.h) instead of evaluating the sources
 // around its start: the same answer for every ray, blocked or not, with
