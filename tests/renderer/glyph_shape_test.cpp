@@ -736,7 +736,7 @@ TEST(GlyphShapes, SpansTheirPointsKeepAtZeroAreLeftOut) {
       ASSERT_TRUE(params.pointed) << "ray " << r << " lost source " << s.source;
       const BlobSource& source = field.sources[s.source];
       const Mat3 w = shape_matrix(source);
-      const Vec3 q0 = w * (o - Vec3(source.centre[0], source.centre[1], source.centre[2])), v = w * d;
+      const Vec3 q0 = scaled_offset(source, w, o), v = w * d;
       const double floor = least_point_u(params, q0, v, std::max(s.t0, 0.0), s.t1);
       ASSERT_EQ(kernel_value(field.kernel, floor * floor), 0.0) << "ray " << r << " lost source " << s.source;
       ++lost_here;
