@@ -339,7 +339,7 @@ std::size_t BlobGeometry::query_spans(const RayInterval* rays, FieldRay* tracers
   rtcInitIntersectContext(&query.embree);
   query.field = &field_;
   const SpanKernels& kernels = span_kernels(active_isa());
-  query.ray_spans = shape_is_quadric(field_.shape) ? kernels.ray_spans : kernels.ray_spans_boxed;
+  query.ray_spans = kernels.for_shape(field_.shape);
   query.tracers = tracers;
   query.candidates = 0;
   query.stop_at_entry = crossing == CrossingQuery::any;

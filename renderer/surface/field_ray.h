@@ -194,9 +194,7 @@ class FieldRay {
   //    made for it (point_rays_, which prepare_shape_rays() keeps: the
   //    floor for the proofs' rows, the ray for the probes), and `peaks`, the
   //    sum of the spans' peaks, lowered by them (peaks_ to match). Stops
-  //    once the sum is below C, which settles the ray. Where it does not,
-  //    the spans whose floor leaves K at 0 all along are dropped: they add
-  //    nothing to F or its gradient anywhere on the ray.
+  //    once the sum is below C, which settles the ray.
   double point_floors(const BlobField& field, const Vec3& origin, const Vec3& direction, double tmin, double peaks,
                       TraceStats& stats);
   //  - A span's ray in its source's stored frame.

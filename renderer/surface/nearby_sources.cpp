@@ -25,8 +25,10 @@ void NearbySources::add(const BlobField& field, std::uint32_t index, std::uint32
   const int lane = chunk.count++;
   for (int k = 0; k < 9; ++k) chunk.w[k][lane] = source.w[std::size_t(k)];
   for (int k = 0; k < 3; ++k) chunk.c[k][lane] = source.centre[std::size_t(k)];
-  chunk.set_support(lane, source_support(field, index));
+  const ShapeSupport support = source_support(field, index);
+  chunk.set_support(lane, support);
   chunk.boxed = !shape_is_quadric(field.shape);
+  chunk.pointed |= support.pointed;
   chunk.index[lane] = index;
   chunk.rank[lane] = rank;
   ++size_;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <type_traits>
 
 namespace hsb {
 
@@ -130,6 +131,71 @@ inline void clip_to_cylinder(const ScaledRay& r, double radius, const double (&a
   span.enters = span.enters & !outside & (span.t0 <= span.t1);
 }
 
+// A fourth stage for signed glyphs: the span's end narrowed to the double
+// cone about axis k, ‖q_⊥k‖ ≤ ρ (box − |q_k|), and the span dropped where
+// the ray misses it: run on the lanes whose source has a point on axis k
+// (`cone` 1; 0 leaves the lane's span to the bit). Its start stays where
+// the box and cylinder put it: there the superquadric's gauge N is at
+// least 1, and N falls no faster than σ√a, which the tracer's bound of a
+// span not yet evaluated rests on (shape_trace.cpp, span_rate). At a
+// cone's side only u ≥ 1, and u may fall 1.2 times as fast.
+//
+// The double cone is two solid cones, one from each apex q_k = ±box
+// towards the other: where m = box ∓ q_k ≥ 0 and f = ρ² m² − ‖q_⊥k‖² ≥ 0,
+// f(t) = A t² + 2 B t + C along the ray, A the same for both. Within the
+// box |q_k| < box, so m > 0 all along the span, and of the two cones that
+// f ≥ 0 describes (the solid one and its mirror beyond the apex) only the
+// solid one meets the span. So, each cone convex:
+//  - A < 0 (the ray steeper than the cone's side): f ≥ 0 between its
+//    roots, or nowhere;
+//  - A > 0 (the ray within the cone's opening): f ≥ 0 outside them, the
+//    solid cone's side the one where m grows, beyond the larger root if m
+//    grows with t, else before the smaller.
+// The roots come as q/A and C/q, q = −(B + sgn B √(B² − AC)), which do not
+// cancel, from one division. Where A nearly cancels (the ray along the
+// cone's side) the cone cuts nothing. The cone is widened by 10⁻⁶ of
+// itself, as the cylinder is, so round-off never cuts the glyph: a ray
+// that grazes the true cone meets the widened one with a discriminant far
+// above the rounding of B² − AC.
+[[gnu::always_inline]] inline void clip_to_nappe(double m0, double m1, double a, bool decided, double b_across,
+                                                 double c_across, double rho2, double& lo, double& hi,
+                                                 bool& never) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const double b = rho2 * (m0 * m1) - b_across, c = rho2 * (m0 * m0) - c_across;
+  const double disc = b * b - a * c;
+  const double root = std::sqrt(disc > 0.0 ? disc : 0.0);
+  const double q = -(b + std::copysign(root, b));
+  const double inverse = 1.0 / (a * q);  // q/A = q²/(Aq), C/q = AC/(Aq)
+  const double r1 = (q * q) * inverse, r2 = q != 0.0 ? (a * c) * inverse : r1;
+  const double low = r1 < r2 ? r1 : r2, high = r1 < r2 ? r2 : r1;
+  const bool opening = a > 0.0;
+  const double f_lo = !decided ? -inf : (opening ? (m1 > 0.0 ? high : -inf) : low);
+  const double f_hi = !decided ? inf : (opening ? (m1 > 0.0 ? inf : low) : high);
+  lo = lo < f_lo ? f_lo : lo;
+  hi = f_hi < hi ? f_hi : hi;
+  never = never | (decided & !opening & (disc < 0.0));
+}
+
+template <int K>
+[[gnu::always_inline]] inline void clip_to_cone(const ScaledRay& r, double box, double cone, LaneSpan& span) {
+  constexpr double rho2 = (kConeBase * (1.0 + 1e-6)) * (kConeBase * (1.0 + 1e-6));
+  constexpr int k = K, i = (K + 1) % 3, j = (K + 2) % 3;
+  const double apex = box * (1.0 + 1e-6);
+  const double a_across = r.wd[i] * r.wd[i] + r.wd[j] * r.wd[j];
+  const double b_across = r.wd[i] * r.wp[i] + r.wd[j] * r.wp[j];
+  const double c_across = r.wp[i] * r.wp[i] + r.wp[j] * r.wp[j];
+  const double steep = rho2 * (r.wd[k] * r.wd[k]);
+  const double a = steep - a_across;
+  const bool decided = std::fabs(a) > 1e-6 * (steep + a_across);
+  double lo = span.t0, hi = span.t1;
+  bool never = false;
+  clip_to_nappe(apex - r.wp[k], -r.wd[k], a, decided, b_across, c_across, rho2, lo, hi, never);
+  clip_to_nappe(apex + r.wp[k], r.wd[k], a, decided, b_across, c_across, rho2, lo, hi, never);
+  const bool cut = cone != 0.0;
+  span.t1 = cut ? hi : span.t1;
+  span.enters = span.enters & !(cut & (never | (lo > hi)));
+}
+
 // The least value of a vertex form on the span: where the span comes
 // nearest its vertex.
 inline double least_on_span(const VertexForm& f, const LaneSpan& span) {
@@ -196,6 +262,21 @@ inline void store(const LaneSpan& span, SpanLanes& spans, int i) {
   inside = span.enters;
 }
 
+// And by the fourth on axis k (clip_to_cone): only the span's end and
+// whether it enters change.
+template <int K>
+[[gnu::always_inline]] inline void cone_lane(const ScaledRay& r, double box, double cone, SpanLanes& spans, int i,
+                                             std::int64_t& inside) {
+  LaneSpan span{spans.t0[i], spans.t1[i], 0.0, 0.0, 0.0, {}, inside != 0};
+  clip_to_cone<K>(r, box, cone, span);
+  spans.t1[i] = span.t1;
+  inside = span.enters;
+}
+
+// How far a kernel narrows a span: not at all (the ellipsoid), to the box
+// and cylinder, or to those and the double cones.
+enum class Narrowing { none, boxed, pointed };
+
 // The lane loops. They have no branches, so the compiler turns them into
 // SIMD at whatever width the instruction set of the function they are
 // inlined into allows (below): the same operations in the same order on
@@ -204,8 +285,15 @@ inline void store(const LaneSpan& span, SpanLanes& spans, int i) {
 // ellipsoid's support: in 53% of the span query's calls on fig05 as
 // superquadrics none does, and the third stage costs more than the first
 // two. (The second loop works out each lane's scaled ray again, the same
-// bits, rather than store and load it.)
-template <bool Boxed>
+// bits, rather than store and load it.) A signed glyph's cones are a loop
+// an axis after that, while some lane is still inside.
+//
+// The lambdas are forced inline: with the cones' loops a third caller,
+// GCC left `scaled` out of line, and a loop that calls it is not
+// vectorised (the box's loop ran one lane at a time). The cone's axis is a
+// constant for the same reason: a ray's components indexed by a variable
+// kept its loop from vectorising.
+template <Narrowing N>
 __attribute__((always_inline)) inline unsigned ray_spans_lanes(const BlobSource& s, const ShapeSupport& support,
                                                                const RayLanes& __restrict rays, int first, int count,
                                                                SpanLanes& __restrict spans) {
@@ -216,10 +304,10 @@ __attribute__((always_inline)) inline unsigned ray_spans_lanes(const BlobSource&
   components_across(support.axis, across);
   std::int64_t inside[kMaxPacket];  // as wide as a double, so the loop keeps one vector width
   const int end = first + count;
-  const auto scaled = [&](int i) {
+  const auto scaled = [&](int i) __attribute__((always_inline)) {
     return scaled_ray(w, cx, cy, cz, rays.ox[i], rays.oy[i], rays.oz[i], rays.dx[i], rays.dy[i], rays.dz[i]);
   };
-  const auto mask = [&] {
+  const auto mask = [&]() __attribute__((always_inline)) {
     unsigned bits = 0;
     for (int i = first; i < end; ++i) bits |= unsigned(inside[i]) << i;
     return bits;
@@ -229,25 +317,34 @@ __attribute__((always_inline)) inline unsigned ray_spans_lanes(const BlobSource&
     store(span, spans, i);
     inside[i] = span.enters;
   }
-  if (!Boxed || mask() == 0) return mask();
+  if (N == Narrowing::none || mask() == 0) return mask();
   for (int i = first; i < end; ++i) narrow_lane(scaled(i), box, radius, across, spans, i, inside[i]);
+  // (A glyph in tension every way has no point.)
+  if (N == Narrowing::pointed) {
+    const auto cones = [&](auto axis) __attribute__((always_inline)) {
+      if ((support.pointed & (1u << axis.value)) && mask() != 0)
+        for (int i = first; i < end; ++i) cone_lane<axis.value>(scaled(i), box, 1.0, spans, i, inside[i]);
+    };
+    cones(std::integral_constant<int, 0>{}), cones(std::integral_constant<int, 1>{}),
+        cones(std::integral_constant<int, 2>{});
+  }
   return mask();
 }
 
 // The same formula the other way round: one ray against a packet of
 // sources (a bundle of short rays tested against the sources near them).
-template <bool Boxed>
+template <Narrowing N>
 __attribute__((always_inline)) inline unsigned source_spans_lanes(const SourceLanes& __restrict sources, const Vec3& o,
                                                                   const Vec3& d, double tmin, double tmax,
                                                                   SpanLanes& __restrict spans) {
   const double ox = o.x(), oy = o.y(), oz = o.z(), dx = d.x(), dy = d.y(), dz = d.z();
   std::int64_t inside[kMaxPacket];
-  const auto scaled = [&](int i) {
+  const auto scaled = [&](int i) __attribute__((always_inline)) {
     const double w[9] = {sources.w[0][i], sources.w[1][i], sources.w[2][i], sources.w[3][i], sources.w[4][i],
                          sources.w[5][i], sources.w[6][i], sources.w[7][i], sources.w[8][i]};
     return scaled_ray(w, sources.c[0][i], sources.c[1][i], sources.c[2][i], ox, oy, oz, dx, dy, dz);
   };
-  const auto mask = [&] {
+  const auto mask = [&]() __attribute__((always_inline)) {
     unsigned bits = 0;
     for (int i = 0; i < kMaxPacket; ++i) bits |= unsigned(inside[i]) << i;
     return bits & ((1u << sources.count) - 1u);
@@ -257,10 +354,19 @@ __attribute__((always_inline)) inline unsigned source_spans_lanes(const SourceLa
     store(span, spans, i);
     inside[i] = span.enters;
   }
-  if (!Boxed || mask() == 0) return mask();
+  if (N == Narrowing::none || mask() == 0) return mask();
   for (int i = 0; i < kMaxPacket; ++i) {
     const double across[3] = {sources.across[0][i], sources.across[1][i], sources.across[2][i]};
     narrow_lane(scaled(i), sources.box[i], sources.radius[i], across, spans, i, inside[i]);
+  }
+  if (N == Narrowing::pointed) {
+    const auto cones = [&](auto axis) __attribute__((always_inline)) {
+      if ((sources.pointed & (1u << axis.value)) && mask() != 0)
+        for (int i = 0; i < kMaxPacket; ++i)
+          cone_lane<axis.value>(scaled(i), sources.box[i], sources.cone[axis.value][i], spans, i, inside[i]);
+    };
+    cones(std::integral_constant<int, 0>{}), cones(std::integral_constant<int, 1>{}),
+        cones(std::integral_constant<int, 2>{});
   }
   return mask();
 }
@@ -268,24 +374,26 @@ __attribute__((always_inline)) inline unsigned source_spans_lanes(const SourceLa
 // One variant of each loop, with and without the box, per instruction set
 // (isa_variants.h).
 #define HSB_SPAN_KERNELS(suffix, target_isa)                                                                      \
-  template <bool Boxed>                                                                                           \
+  template <Narrowing N>                                                                                          \
   __attribute__((target(target_isa))) unsigned ray_spans_##suffix(                                               \
       const BlobSource& s, const ShapeSupport& support, const RayLanes& __restrict rays, int first, int count,    \
       SpanLanes& __restrict spans) {                                                                              \
-    return ray_spans_lanes<Boxed>(s, support, rays, first, count, spans);                                         \
+    return ray_spans_lanes<N>(s, support, rays, first, count, spans);                                             \
   }                                                                                                               \
-  template <bool Boxed>                                                                                           \
+  template <Narrowing N>                                                                                          \
   __attribute__((target(target_isa))) unsigned source_spans_##suffix(const SourceLanes& __restrict sources,       \
                                                                      const Vec3& o, const Vec3& d, double tmin,   \
                                                                      double tmax, SpanLanes& __restrict spans) {  \
-    return source_spans_lanes<Boxed>(sources, o, d, tmin, tmax, spans);                                           \
+    return source_spans_lanes<N>(sources, o, d, tmin, tmax, spans);                                               \
   }
 
 HSB_FOR_EACH_ISA(HSB_SPAN_KERNELS)
 #undef HSB_SPAN_KERNELS
 
-#define HSB_KERNEL_SET(suffix) \
-  {ray_spans_##suffix<false>, ray_spans_##suffix<true>, source_spans_##suffix<false>, source_spans_##suffix<true>}
+#define HSB_KERNEL_SET(suffix)                                                                           \
+  {ray_spans_##suffix<Narrowing::none>,    ray_spans_##suffix<Narrowing::boxed>,                                \
+   ray_spans_##suffix<Narrowing::pointed>, source_spans_##suffix<Narrowing::none>,                              \
+   source_spans_##suffix<Narrowing::boxed>, source_spans_##suffix<Narrowing::pointed>}
 // In InstructionSet order.
 constexpr SpanKernels kKernels[] = {HSB_KERNEL_SET(sse2), HSB_KERNEL_SET(sse42), HSB_KERNEL_SET(avx),
                                     HSB_KERNEL_SET(avx2), HSB_KERNEL_SET(avx512)};
@@ -300,13 +408,17 @@ const SpanKernels& span_kernels(InstructionSet isa) { return kKernels[std::size_
 unsigned ray_spans(const BlobSource& s, const ShapeSupport& support, const RayLanes& rays, int first, int count,
                    SpanLanes& spans) {
   const SpanKernels& kernels = span_kernels(active_isa());
-  return (support.bounded() ? kernels.ray_spans_boxed : kernels.ray_spans)(s, support, rays, first, count, spans);
+  const SpanKernels::RaySpans kernel =
+      support.pointed ? kernels.ray_spans_pointed : (support.bounded() ? kernels.ray_spans_boxed : kernels.ray_spans);
+  return kernel(s, support, rays, first, count, spans);
 }
 
 unsigned source_spans(const SourceLanes& sources, const Vec3& o, const Vec3& d, double tmin, double tmax,
                       SpanLanes& spans) {
   const SpanKernels& kernels = span_kernels(active_isa());
-  return (sources.boxed ? kernels.source_spans_boxed : kernels.source_spans)(sources, o, d, tmin, tmax, spans);
+  const SpanKernels::SourceSpans kernel = sources.pointed ? kernels.source_spans_pointed
+                                          : (sources.boxed ? kernels.source_spans_boxed : kernels.source_spans);
+  return kernel(sources, o, d, tmin, tmax, spans);
 }
 
 bool ray_span(const BlobSource& s, std::uint32_t index, std::uint32_t rank, const Vec3& o, const Vec3& d, double tmin,
@@ -321,6 +433,9 @@ bool ray_span(const BlobSource& s, std::uint32_t index, std::uint32_t rank, cons
     double across[3];
     components_across(support.axis, across);
     clip_to_support(r, support.box, support.radius, across, lane);
+    if (lane.enters && (support.pointed & 1u)) clip_to_cone<0>(r, support.box, 1.0, lane);
+    if (lane.enters && (support.pointed & 2u)) clip_to_cone<1>(r, support.box, 1.0, lane);
+    if (lane.enters && (support.pointed & 4u)) clip_to_cone<2>(r, support.box, 1.0, lane);
   }
   if (!lane.enters) return false;
   span = RaySpan{lane.t0, lane.t1, lane.a, lane.t_c, lane.g_min, index, rank, lane.lower.a, lane.lower.t_v,

@@ -72,10 +72,18 @@ struct RayLanes {
 // nothing either. kNoBox: the support is the ellipsoid's own.
 constexpr double kNoBox = std::numeric_limits<double>::infinity();
 
+//
+// A signed glyph's support is also inside the double cone about each axis
+// k that ends in points, ‖q_⊥k‖ ≤ ρ (box − |q_k|) (u ≥ C_k, glyph_shape.h):
+// a ray through the cylinder that passes beside a point meets nothing of
+// it, and one that leaves through a point's side has left it. Under the
+// point load, where glyphs are compressed every way, the cones leave a
+// shadow ray on fig08 21 of the 78 spans the box and cylinder let through.
 struct ShapeSupport {
   double box = kNoBox;     // |q_k| ≤ box on every axis
   double radius = kNoBox;  // ‖q_⊥‖ ≤ radius across `axis`
   int axis = 2;            // the symmetry axis, a row of W
+  unsigned pointed = 0;    // bit k: inside the double cone about axis k too
   bool bounded() const { return box != kNoBox; }
 };
 
@@ -91,7 +99,13 @@ inline ShapeSupport source_support(const BlobField& field, std::size_t i) {
   if (shape_is_quadric(field.shape)) return {};
   const ShapeParams& shape = field.shapes[i];
   const double box = 1.0 / double(shape.bound_scale);
-  return {box, support_cylinder_radius(shape) * box, shape.axis};
+  return {box, support_cylinder_radius(shape) * box, shape.axis, shape.pointed};
+}
+
+// The double cones as the span kernels take them, a factor an axis: 1
+// where bit k of `pointed` is set, else 0.
+inline void cone_factors(unsigned pointed, double (&cone)[3]) {
+  for (int k = 0; k < 3; ++k) cone[k] = pointed & (1u << k) ? 1.0 : 0.0;
 }
 
 // The spans of one source on lanes [first, first + count) of `rays`, in the
@@ -128,13 +142,16 @@ struct SourceLanes {
   alignas(64) double w[9][kMaxPacket];
   alignas(64) double c[3][kMaxPacket];
   // Read when `boxed`: each source's ShapeSupport, its axis as
-  // components_across gives it.
+  // components_across gives it (and when `pointed`, its cones as
+  // cone_factors gives them).
   alignas(64) double box[kMaxPacket], radius[kMaxPacket];
   alignas(64) double across[3][kMaxPacket];
+  alignas(64) double cone[3][kMaxPacket];
   std::uint32_t index[kMaxPacket];
   std::uint32_t rank[kMaxPacket];
   int count = 0;  // lanes [0, count) hold sources
   bool boxed = false;  // whether the sources' spans are narrowed to their boxes and cylinders
+  unsigned pointed = 0;  // the axes some source's span is narrowed to the double cone about
 
   // Lane `lane`'s support.
   void set_support(int lane, const ShapeSupport& support) {
@@ -142,6 +159,8 @@ struct SourceLanes {
     double factors[3];
     components_across(support.axis, factors);
     for (int k = 0; k < 3; ++k) across[k][lane] = factors[k];
+    cone_factors(support.pointed, factors);
+    for (int k = 0; k < 3; ++k) cone[k][lane] = factors[k];
   }
 };
 
@@ -151,16 +170,23 @@ struct SourceLanes {
 unsigned source_spans(const SourceLanes& sources, const Vec3& o, const Vec3& d, double tmin, double tmax,
                       SpanLanes& spans);
 
-// The two lane loops above compiled for one instruction set, without and
-// with boxes; ray_spans() and source_spans() call those of active_isa().
-// Every variant gives the same bits (the tests hold them to it).
+// The two lane loops above compiled for one instruction set, without
+// boxes, with boxes and cylinders, and with those and double cones;
+// ray_spans() and source_spans() call those of active_isa(). Every variant
+// gives the same bits (the tests hold them to it), and the pointed ones on
+// a support without points those of the boxed ones.
 struct SpanKernels {
   using RaySpans = unsigned (*)(const BlobSource& s, const ShapeSupport& support, const RayLanes& rays, int first,
                                 int count, SpanLanes& spans);
   using SourceSpans = unsigned (*)(const SourceLanes& sources, const Vec3& o, const Vec3& d, double tmin,
                                    double tmax, SpanLanes& spans);
-  RaySpans ray_spans, ray_spans_boxed;
-  SourceSpans source_spans, source_spans_boxed;
+  RaySpans ray_spans, ray_spans_boxed, ray_spans_pointed;
+  SourceSpans source_spans, source_spans_boxed, source_spans_pointed;
+  // The ray kernel for the sources of a field of `shape`.
+  RaySpans for_shape(GlyphShape shape) const {
+    return shape_is_quadric(shape) ? ray_spans
+                                   : (shape == GlyphShape::signed_superquadric ? ray_spans_pointed : ray_spans_boxed);
+  }
 };
 const SpanKernels& span_kernels(InstructionSet isa);
 

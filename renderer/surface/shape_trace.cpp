@@ -83,17 +83,6 @@ double FieldRay::point_floors(const BlobField& field, const Vec3& origin, const 
     ++stats.kernel_evaluations;
     if (peak < peaks_[i]) peaks += peak - peaks_[i], peaks_[i] = peak;
   }
-  if (peaks < field.isovalue) return peaks;
-  // The ray goes on: the spans whose floor leaves K at 0 all along add
-  // nothing to it, and are left out. Under the point load they are nearly
-  // half of such a ray's spans (fig05 and fig08 as signed glyphs, 480²),
-  // each otherwise a gauge at its first probe, a row in every proof and an
-  // event of the sweep. Leaving them out took those renders 6 % less time
-  // (960², medians of 7), the same pictures to the bit.
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < spans.size(); ++i)
-    if (peaks_[i] > 0.0) spans[kept] = spans[i], peaks_[kept] = peaks_[i], point_rays_[kept++] = point_rays_[i];
-  spans.resize(kept), peaks_.resize(kept), point_rays_.resize(kept);
   return peaks;
 }
 

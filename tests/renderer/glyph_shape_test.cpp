@@ -262,6 +262,82 @@ TEST(GlyphShapes, InfluenceBoxesAndSpansHoldTheWholeSupport) {
   }
 }
 
+// Each glyph of `field` that has a point: f(i, its shape, its source, W_s,
+// its centre).
+template <class F>
+void for_each_pointed_glyph(const BlobField& field, F&& f) {
+  for (std::size_t i = 0; i < field.sources.size(); ++i) {
+    const ShapeParams& params = shape_params(field, i);
+    if (!params.pointed) continue;
+    const BlobSource& source = field.sources[i];
+    f(i, params, source, shape_matrix(source), Vec3(source.centre[0], source.centre[1], source.centre[2]));
+  }
+}
+
+// A signed glyph's span ends where the ray leaves the double cones about
+// its points, and is dropped where it misses one (ray_span.cpp,
+// clip_to_cone); its start stays the box's and cylinder's. No point of the
+// glyph's support is cut off: every sample of the box's span with u < 1
+// lies in the cones' span. The cones cut much, and where they end a span
+// the ray is on a cone's side (C_k = 1). Rays through random glyphs'
+// supports from every side and distance.
+TEST(GlyphShapes, SignedGlyphsSpansEndWhereTheyLeaveTheirPoints) {
+  std::mt19937 rng(37);
+  std::normal_distribution<double> n;
+  std::uniform_real_distribution<double> u(0.05, 1.0);
+  const BlobField field = random_glyph_field(rng, GlyphShape::signed_superquadric);
+  int spans = 0, dropped = 0, shortened = 0, on_a_side = 0;
+  for_each_pointed_glyph(field, [&](std::size_t i, const ShapeParams& params, const BlobSource& source, const Mat3& w,
+                                    const Vec3& c) {
+    ShapeSupport boxed = source_support(field, i);
+    boxed.pointed = 0;
+    const auto cones = [&](const Vec3& x) {  // the largest C_k, in the glyph's own frame
+      const Vec3 q = double(params.bound_scale) * (w * (x - c));
+      double most = 0.0;
+      for (int k = 0; k < 3; ++k)
+        if (params.pointed & (1u << k))
+          most = std::max(most, std::hypot(q[(k + 1) % 3], q[(k + 2) % 3]) / kConeBase + std::fabs(q[k]));
+      return most;
+    };
+    for (int k = 0; k < 100; ++k) {
+      Vec3 o, d;
+      RaySpan box_span, span;
+      // Half the rays aimed at the support, half at its box's corners.
+      if (!ray_through_support(field, i, rng, n, u, o, d, box_span)) continue;
+      if (k % 2) {
+        const Vec3 corner = c + w.inverse() * (boxed.box * Vec3(n(rng), n(rng), n(rng)).cwiseSign());
+        d = (corner - o).normalized();
+      }
+      if (!ray_span(source, std::uint32_t(i), 0, o, d, 0.0, 1e9, box_span, boxed)) continue;
+      ++spans;
+      const bool enters = ray_span(source, std::uint32_t(i), 0, o, d, 0.0, 1e9, span, source_support(field, i));
+      for (int s = 0; s <= 400; ++s) {
+        const double t = box_span.t0 + (box_span.t1 - box_span.t0) * s / 400.0;
+        if (source_g(field, i, o + t * d) >= 1.0) continue;
+        ASSERT_TRUE(enters) << "source " << i << " ray " << k << ": dropped, yet u < 1 at t " << t;
+        ASSERT_LE(t, span.t1) << "source " << i << " ray " << k;
+      }
+      if (!enters) {
+        ++dropped;
+        continue;
+      }
+      ASSERT_EQ(span.t0, box_span.t0) << "source " << i << " ray " << k;
+      ASSERT_LE(span.t1, box_span.t1) << "source " << i << " ray " << k;
+      if (span.t1 < box_span.t1) {
+        ++shortened;
+        const double at_end = cones(o + span.t1 * d);
+        EXPECT_GE(at_end, 1.0 - 1e-9) << "source " << i << " ray " << k;
+        on_a_side += at_end < 1.0 + 1e-5;
+      }
+    }
+  });
+  EXPECT_GT(spans, 2000);
+  EXPECT_GT(dropped, spans / 25);
+  EXPECT_GT(shortened, spans / 2);
+  // (Not every one: a ray along a cone's side is left to the others.)
+  EXPECT_GT(on_a_side, shortened * 9 / 10);
+}
+
 // A span's lower bound of g (RaySpan::lower_a) is one: g never falls
 // below it anywhere on the span, whatever the glyph and ray. And where it
 // is taken from the box or the cylinder it is larger than the bounding
@@ -328,12 +404,8 @@ TEST(GlyphShapes, SignedGlyphsPointsBoundUFromBelowAlongARay) {
   std::uniform_real_distribution<double> u(0.05, 1.0);
   const BlobField field = random_glyph_field(rng, GlyphShape::signed_superquadric);
   int spans = 0, tighter = 0;
-  for (std::size_t i = 0; i < field.sources.size(); ++i) {
-    const ShapeParams& params = shape_params(field, i);
-    if (!params.pointed) continue;
-    const BlobSource& source = field.sources[i];
-    const Mat3 w = shape_matrix(source);
-    const Vec3 c(source.centre[0], source.centre[1], source.centre[2]);
+  for_each_pointed_glyph(field, [&](std::size_t i, const ShapeParams& params, const BlobSource&, const Mat3& w,
+                                    const Vec3& c) {
     const double sigma = params.bound_scale;
     for (int k = 0; k < 100; ++k) {
       Vec3 o, d;
@@ -363,7 +435,7 @@ TEST(GlyphShapes, SignedGlyphsPointsBoundUFromBelowAlongARay) {
       ASSERT_LE(least, least_u) << "source " << i << " ray " << k;
       if (least * least > 1.2 * span.least_lower_g() + 0.01) ++tighter;
     }
-  }
+  });
   EXPECT_GT(spans, 2000);
   EXPECT_GT(tighter, spans / 2);
 }
@@ -700,52 +772,6 @@ TEST(GlyphShapes, ATracerKeepsNothingOfTheRayBefore) {
     EXPECT_GT(hits, 150);
     EXPECT_GT(misses, 150);
   }
-}
-
-// A signed glyph's span whose points keep K at 0 all along the ray adds
-// nothing anywhere on it, and a ray that goes on past the peaks leaves it
-// out of its walk (point_floors). Only such spans go: every span a ray
-// loses holds K at 0 from its points' floor, or begins beyond the entry
-// that answers the ray. (The answers themselves are the dense sampling's,
-// TracerFindsEveryCrossingDenseSamplingFinds.)
-TEST(GlyphShapes, SpansTheirPointsKeepAtZeroAreLeftOut) {
-  const TracedCrowd crowd(Blend::sum, GlyphShape::signed_superquadric);
-  const BlobField& field = crowd.field;
-  std::mt19937 rng(43);
-  std::uniform_real_distribution<double> u(-0.4, 0.4);
-  std::normal_distribution<double> n;
-  int lost_zero = 0, rays_losing = 0;
-  for (int r = 0; r < 1000; ++r) {
-    const Vec3 o = r % 2 ? 3.0 * Vec3(n(rng), n(rng), n(rng)).normalized() : Vec3(u(rng), u(rng), u(rng));
-    const Vec3 d = r % 2 ? (Vec3(u(rng), u(rng), u(rng)) - o).normalized() : Vec3(n(rng), n(rng), n(rng)).normalized();
-    const RayInterval ray{o, d, 0.0, 1e30};
-    FieldRay tracer;
-    TraceStats stats;
-    crowd.blobs.collect_spans(&ray, 1, &tracer);
-    const std::vector<RaySpan> before = tracer.spans;
-    if (before.empty()) continue;
-    const double t = tracer.first_crossing(field, o, d, 0.0, 1e30, crowd.settings, stats, CrossingQuery::first);
-    std::vector<std::uint32_t> kept;
-    for (const RaySpan& s : tracer.spans) kept.push_back(s.source);
-    std::sort(kept.begin(), kept.end());
-    int lost_here = 0;
-    for (const RaySpan& s : before) {
-      if (std::binary_search(kept.begin(), kept.end(), s.source)) continue;
-      if (t >= 0.0 && s.t0 > t) continue;  // beyond the answering entry
-      const ShapeParams& params = shape_params(field, s.source);
-      ASSERT_TRUE(params.pointed) << "ray " << r << " lost source " << s.source;
-      const BlobSource& source = field.sources[s.source];
-      const Mat3 w = shape_matrix(source);
-      const Vec3 q0 = scaled_offset(source, w, o), v = w * d;
-      const double floor = least_point_u(params, q0, v, std::max(s.t0, 0.0), s.t1);
-      ASSERT_EQ(kernel_value(field.kernel, floor * floor), 0.0) << "ray " << r << " lost source " << s.source;
-      ++lost_here;
-    }
-    lost_zero += lost_here;
-    rays_losing += lost_here > 0;
-  }
-  EXPECT_GT(rays_losing, 40);
-  EXPECT_GT(lost_zero, 60);
 }
 
 // An occlusion ray that leaves a glyph hit starts its walk from the hit's

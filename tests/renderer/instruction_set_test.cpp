@@ -72,15 +72,21 @@ TEST(SpanKernels, EveryInstructionSetGivesTheScalarBits) {
       rays.set(i, o, d, i % 3 == 0 ? 0.0 : distance * 0.9, i % 4 == 0 ? INFINITY : distance * 1.1);
     }
     const int first = trial % 2 ? 0 : 8, count = trial % 2 ? kMaxPacket : 8;
-    // Without a box, and with one and a cylinder about each axis that cut
-    // the ellipsoid's support.
+    // Without a box, with one and a cylinder about each axis that cut the
+    // ellipsoid's support, and with those and the double cones of a signed
+    // glyph's points, on every set of axes (none: a superquadric's support
+    // through the pointed kernel).
     ShapeSupport support;
     if (trial % 3 == 0) support = {1.0 / 1.5, (1.0 + 0.4 * unit(rng)) / 1.5, trial / 3 % 3};
+    if (trial % 3 == 1) support = {1.0 / 1.5, (1.0 + 0.4 * unit(rng)) / 1.5, trial / 3 % 3, unsigned(trial / 3 % 8)};
+    const auto ray_kernel = [&](const SpanKernels& kernels) {
+      if (trial % 3 == 1) return kernels.ray_spans_pointed;
+      return support.bounded() ? kernels.ray_spans_boxed : kernels.ray_spans;
+    };
     for (InstructionSet isa : supported_isas()) {
       SpanLanes spans;
       const SpanKernels& kernels = span_kernels(isa);
-      const unsigned mask = (support.bounded() ? kernels.ray_spans_boxed : kernels.ray_spans)(source, support, rays,
-                                                                                              first, count, spans);
+      const unsigned mask = ray_kernel(kernels)(source, support, rays, first, count, spans);
       for (int i = first; i < first + count; ++i) {
         RaySpan alone;
         const bool enters = ray_span(source, 7, 0, Vec3(rays.ox[i], rays.oy[i], rays.oz[i]),
@@ -107,9 +113,11 @@ TEST(SpanKernels, EveryInstructionSetGivesTheScalarBits) {
     }
     lanes.count = int(listed.size());
     lanes.boxed = support.bounded();
-    std::vector<ShapeSupport> supports;  // each source's own axis and radius
+    lanes.pointed = trial % 3 == 1 ? 7u : 0u;
+    std::vector<ShapeSupport> supports;  // each source's own axis, radius and points
     for (int k = 0; k < kMaxPacket; ++k) {
-      supports.push_back(support.bounded() ? ShapeSupport{support.box, support.radius * (1.0 + 0.1 * unit(rng)), k % 3}
+      supports.push_back(support.bounded() ? ShapeSupport{support.box, support.radius * (1.0 + 0.1 * unit(rng)), k % 3,
+                                                          lanes.pointed ? unsigned(k % 8) : 0u}
                                            : support);
       lanes.set_support(k, supports.back());
     }
@@ -121,8 +129,9 @@ TEST(SpanKernels, EveryInstructionSetGivesTheScalarBits) {
     for (InstructionSet isa : supported_isas()) {
       SpanLanes spans;
       const SpanKernels& kernels = span_kernels(isa);
-      const unsigned mask =
-          (lanes.boxed ? kernels.source_spans_boxed : kernels.source_spans)(lanes, o, d, 0.0, INFINITY, spans);
+      const unsigned mask = (lanes.pointed ? kernels.source_spans_pointed
+                                           : (lanes.boxed ? kernels.source_spans_boxed : kernels.source_spans))(
+          lanes, o, d, 0.0, INFINITY, spans);
       for (int k = 0; k < lanes.count; ++k) {
         RaySpan alone;
         const bool enters =
