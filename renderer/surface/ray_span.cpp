@@ -25,7 +25,7 @@ struct ScaledRay {
   bool line_enters() const { return (a > 0.0) & (a_g_min < a); }  // false for NaN and a = 0
 };
 
-inline ScaledRay scaled_ray(const double (&w)[9], double cx, double cy, double cz, double ox, double oy, double oz,
+[[gnu::always_inline]] inline ScaledRay scaled_ray(const double (&w)[9], double cx, double cy, double cz, double ox, double oy, double oz,
                             double dx, double dy, double dz) {
   // In the source's scaled frame q(t) = W(o − c) + t W d, and g = |q|².
   const double px = ox - cx, py = oy - cy, pz = oz - cz;
@@ -61,7 +61,7 @@ struct LaneSpan {
 };
 
 // The second stage: the support's interval on the ray, clipped to [tmin, tmax].
-inline LaneSpan finish_span(const ScaledRay& r, double tmin, double tmax) {
+[[gnu::always_inline]] inline LaneSpan finish_span(const ScaledRay& r, double tmin, double tmax) {
   // One division for three quotients: SIMD division is slow.
   const double inv_a = 1.0 / r.a;
   const double tc = -r.half_b * inv_a;
@@ -81,7 +81,7 @@ inline LaneSpan finish_span(const ScaledRay& r, double tmin, double tmax) {
 // g: u ≥ |q_k|/box (the gauge is at least its largest component,
 // glyph_shape.h), so g ≥ (wd_k/box)² (t − centre)², or the constant
 // (wp_k/box)² along a ray parallel to the slab.
-inline void clip_to_box(const ScaledRay& r, double box, LaneSpan& span, VertexForm (&slabs)[3]) {
+[[gnu::always_inline]] inline void clip_to_box(const ScaledRay& r, double box, LaneSpan& span, VertexForm (&slabs)[3]) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   const double inv_box2 = 1.0 / (box * box);
   bool outside = false;
@@ -105,7 +105,7 @@ inline void clip_to_box(const ScaledRay& r, double box, LaneSpan& span, VertexFo
 // the plane across). A ray along the axis is inside everywhere or nowhere.
 // `wall` gets what the cylinder says of g: u ≥ ‖q_⊥‖/radius (glyph_shape.h,
 // support_cylinder_radius), so g ≥ that quadratic over radius².
-inline void clip_to_cylinder(const ScaledRay& r, double radius, const double (&across)[3], LaneSpan& span,
+[[gnu::always_inline]] inline void clip_to_cylinder(const ScaledRay& r, double radius, const double (&across)[3], LaneSpan& span,
                              VertexForm& wall) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   double a = 0.0, half_b = 0.0, p = 0.0, x = 0.0;
@@ -198,7 +198,7 @@ template <int K>
 
 // The least value of a vertex form on the span: where the span comes
 // nearest its vertex.
-inline double least_on_span(const VertexForm& f, const LaneSpan& span) {
+[[gnu::always_inline]] inline double least_on_span(const VertexForm& f, const LaneSpan& span) {
   const double above = f.t_v < span.t0 ? span.t0 : f.t_v;
   const double d = (above > span.t1 ? span.t1 : above) - f.t_v;
   return f.a * d * d + f.g_v;
@@ -214,7 +214,7 @@ inline double least_on_span(const VertexForm& f, const LaneSpan& span) {
 // one sample: 3.72 -> 2.27 probes a shadow ray, 0.53 -> 0.43 a camera
 // ray. Each is shrunk by 10⁻⁶ of itself, as σ is for g_e, against the
 // rounding of t − t_v where t is far larger.
-inline void clip_to_support(const ScaledRay& r, double box, double radius, const double (&across)[3],
+[[gnu::always_inline]] inline void clip_to_support(const ScaledRay& r, double box, double radius, const double (&across)[3],
                             LaneSpan& span) {
   VertexForm slabs[3], wall;
   clip_to_box(r, box, span, slabs);
@@ -233,7 +233,7 @@ inline void clip_to_support(const ScaledRay& r, double box, double radius, const
   keep_if_better(wall);
 }
 
-inline void store(const LaneSpan& span, SpanLanes& spans, int i) {
+[[gnu::always_inline]] inline void store(const LaneSpan& span, SpanLanes& spans, int i) {
   spans.t0[i] = span.t0;
   spans.t1[i] = span.t1;
   spans.a[i] = span.a;
@@ -288,11 +288,12 @@ enum class Narrowing { none, boxed, pointed };
 // bits, rather than store and load it.) A signed glyph's cones are a loop
 // an axis after that, while some lane is still inside.
 //
-// The lambdas are forced inline: with the cones' loops a third caller,
-// GCC left `scaled` out of line, and a loop that calls it is not
-// vectorised (the box's loop ran one lane at a time). The cone's axis is a
-// constant for the same reason: a ray's components indexed by a variable
-// kept its loop from vectorising.
+// The stages and the lambdas are forced inline: with the cones' loops and
+// kernels more callers, GCC left `scaled` and clip_to_support out of line,
+// and a loop that calls a function is not vectorised (the box's loop ran
+// one lane at a time, and superquadrics' renders took a quarter longer).
+// The cone's axis is a constant for the same reason: a ray's components
+// indexed by a variable kept its loop from vectorising.
 template <Narrowing N>
 __attribute__((always_inline)) inline unsigned ray_spans_lanes(const BlobSource& s, const ShapeSupport& support,
                                                                const RayLanes& __restrict rays, int first, int count,
