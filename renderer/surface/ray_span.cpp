@@ -142,23 +142,27 @@ struct LaneSpan {
 //
 // The double cone is two solid cones, one from each apex q_k = ±box
 // towards the other: where m = box ∓ q_k ≥ 0 and f = ρ² m² − ‖q_⊥k‖² ≥ 0,
-// f(t) = A t² + 2 B t + C along the ray, A the same for both. Within the
-// box |q_k| < box, so m > 0 all along the span, and of the two cones that
-// f ≥ 0 describes (the solid one and its mirror beyond the apex) only the
-// solid one meets the span. So, each cone convex:
+// f(t0 + τ) = A τ² + 2 B τ + C along the ray, A the same for both. Within
+// the box |q_k| < box, so m > 0 all along the span, and of the two cones
+// that f ≥ 0 describes (the solid one and its mirror beyond the apex) only
+// the solid one meets the span. So, each cone convex:
 //  - A < 0 (the ray steeper than the cone's side): f ≥ 0 between its
 //    roots, or nowhere;
 //  - A > 0 (the ray within the cone's opening): f ≥ 0 outside them, the
 //    solid cone's side the one where m grows, beyond the larger root if m
 //    grows with t, else before the smaller.
-// The roots come as q/A and C/q, q = −(B + sgn B √(B² − AC)), which do not
-// cancel, from one division. Where A nearly cancels (the ray along the
-// cone's side) the cone cuts nothing. The cone is widened by 10⁻⁶ of
-// itself, as the cylinder is, so round-off never cuts the glyph: a ray
-// that grazes the true cone meets the widened one with a discriminant far
-// above the rounding of B² − AC.
+// The quadratic is in τ = t − t0, about the span's start t0, a point of
+// the box (|q| ≤ √3 box), not about the ray's origin: from a camera D
+// glyph sizes away, C and B grow as D² and D, and C's rounding (ε D²)
+// moved the roots as far, 10⁻⁵ of the glyph at D = 10⁵, past the widening
+// below. The roots come as q/A and C/q, q = −(B + sgn B √(B² − AC)),
+// which do not cancel, from one division. Where A nearly cancels (the ray
+// along the cone's side) the cone cuts nothing. The cone is widened by
+// 10⁻⁶ of itself, as the cylinder is, so round-off never cuts the glyph:
+// a ray that grazes the true cone meets the widened one with a
+// discriminant far above the rounding of B² − AC.
 [[gnu::always_inline]] inline void clip_to_nappe(double m0, double m1, double a, bool decided, double b_across,
-                                                 double c_across, double rho2, double& lo, double& hi,
+                                                 double c_across, double rho2, double t0, double& lo, double& hi,
                                                  bool& never) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   const double b = rho2 * (m0 * m1) - b_across, c = rho2 * (m0 * m0) - c_across;
@@ -167,7 +171,7 @@ struct LaneSpan {
   const double q = -(b + std::copysign(root, b));
   const double inverse = 1.0 / (a * q);  // q/A = q²/(Aq), C/q = AC/(Aq)
   const double r1 = (q * q) * inverse, r2 = q != 0.0 ? (a * c) * inverse : r1;
-  const double low = r1 < r2 ? r1 : r2, high = r1 < r2 ? r2 : r1;
+  const double low = t0 + (r1 < r2 ? r1 : r2), high = t0 + (r1 < r2 ? r2 : r1);
   const bool opening = a > 0.0;
   const double f_lo = !decided ? -inf : (opening ? (m1 > 0.0 ? high : -inf) : low);
   const double f_hi = !decided ? inf : (opening ? (m1 > 0.0 ? inf : low) : high);
@@ -181,16 +185,18 @@ template <int K>
   constexpr double rho2 = (kConeBase * (1.0 + 1e-6)) * (kConeBase * (1.0 + 1e-6));
   constexpr int k = K, i = (K + 1) % 3, j = (K + 2) % 3;
   const double apex = box * (1.0 + 1e-6);
+  const double t0 = span.t0;  // q(t0 + τ) = p + τ wd
+  const double p_k = r.wp[k] + t0 * r.wd[k], p_i = r.wp[i] + t0 * r.wd[i], p_j = r.wp[j] + t0 * r.wd[j];
   const double a_across = r.wd[i] * r.wd[i] + r.wd[j] * r.wd[j];
-  const double b_across = r.wd[i] * r.wp[i] + r.wd[j] * r.wp[j];
-  const double c_across = r.wp[i] * r.wp[i] + r.wp[j] * r.wp[j];
+  const double b_across = r.wd[i] * p_i + r.wd[j] * p_j;
+  const double c_across = p_i * p_i + p_j * p_j;
   const double steep = rho2 * (r.wd[k] * r.wd[k]);
   const double a = steep - a_across;
   const bool decided = std::fabs(a) > 1e-6 * (steep + a_across);
   double lo = span.t0, hi = span.t1;
   bool never = false;
-  clip_to_nappe(apex - r.wp[k], -r.wd[k], a, decided, b_across, c_across, rho2, lo, hi, never);
-  clip_to_nappe(apex + r.wp[k], r.wd[k], a, decided, b_across, c_across, rho2, lo, hi, never);
+  clip_to_nappe(apex - p_k, -r.wd[k], a, decided, b_across, c_across, rho2, t0, lo, hi, never);
+  clip_to_nappe(apex + p_k, r.wd[k], a, decided, b_across, c_across, rho2, t0, lo, hi, never);
   const bool cut = cone != 0.0;
   span.t1 = cut ? hi : span.t1;
   span.enters = span.enters & !(cut & (never | (lo > hi)));
