@@ -69,6 +69,19 @@ Box3 influence_bounds(const BlobField& field, std::size_t i) {
     const Vec3 across = (semi_axes[a].cwiseAbs2() + semi_axes[b].cwiseAbs2()).cwiseSqrt();
     const Vec3 cylinder = semi_axes[shape.axis].cwiseAbs() + support_cylinder_radius(shape) * across;
     half = half.cwiseMin(cube.cwiseMin(cylinder) / double(shape.bound_scale));
+    // A signed glyph's double cone about each axis k with points
+    // (glyph_shape.h: C_k ≤ u) is the hull of its apexes ±semi-axis k and
+    // its base, the circle of radius ρ across k: along world axis j it
+    // reaches the larger of the apex's component and ρ times the base's.
+    // Under the point load, glyphs compressed every way lie aslant, and
+    // their cube's corners stick out far past the cones' sides.
+    for (int k = 0; k < 3; ++k) {
+      if (!(shape.pointed & (1u << k))) continue;
+      const int i1 = (k + 1) % 3, j1 = (k + 2) % 3;
+      const Vec3 across_k = (semi_axes[i1].cwiseAbs2() + semi_axes[j1].cwiseAbs2()).cwiseSqrt();
+      const Vec3 bicone = semi_axes[k].cwiseAbs().cwiseMax(kConeBase * across_k);
+      half = half.cwiseMin(bicone / double(shape.bound_scale));
+    }
   }
   const Vec3 c(s.centre[0], s.centre[1], s.centre[2]);
   return {c - half, c + half};

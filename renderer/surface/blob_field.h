@@ -95,8 +95,9 @@ inline Vec3 scaled_offset(const BlobSource& s, const Mat3& w, const Vec3& x) {
 // bounding ellipsoid g_e ≤ 1, narrowed to the boxes of the cube and of the
 // cylinder about the symmetry axis that hold its shape's support
 // (glyph_shape.h), |q_k| ≤ 1 and ‖q_⊥‖ ≤ support_cylinder_radius in the
-// glyph's own frame, wherever they are tighter: up to √3 times for a sharp
-// glyph along the world's axes, never for the ellipsoid itself.
+// glyph's own frame, and a signed glyph's double cones about its points,
+// wherever they are tighter: up to √3 times for a sharp glyph along the
+// world's axes, never for the ellipsoid itself.
 Box3 influence_bounds(const BlobField& field, std::size_t i);
 
 // Union of all sources' influence bounds.

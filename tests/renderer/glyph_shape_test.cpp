@@ -262,6 +262,31 @@ TEST(GlyphShapes, InfluenceBoxesAndSpansHoldTheWholeSupport) {
   }
 }
 
+// A signed glyph's box is also its double cones' (influence_bounds): never
+// larger than the same glyph's as a superquadric, and much smaller for
+// most glyphs with a point turned aslant, where the cube's corners stick
+// out beyond the cones' sides. (The same draws make both fields: a point
+// changes neither W_s nor σ.) It fails when the cones' boxes are left out.
+TEST(GlyphShapes, SignedGlyphsBoxesAreTheirConesWhereTighter) {
+  std::mt19937 rng_signed(41), rng_superquadric(41);
+  const BlobField signed_field = random_glyph_field(rng_signed, GlyphShape::signed_superquadric);
+  const BlobField superquadrics = random_glyph_field(rng_superquadric, GlyphShape::superquadric);
+  int pointed = 0, tighter = 0;
+  for (std::size_t i = 0; i < signed_field.sources.size(); ++i) {
+    const Vec3 narrowed = influence_bounds(signed_field, i).size();
+    const Vec3 plain = influence_bounds(superquadrics, i).size();
+    ASSERT_TRUE((narrowed.array() <= plain.array()).all()) << "source " << i;
+    if (!shape_params(signed_field, i).pointed) {
+      EXPECT_EQ(narrowed, plain) << "source " << i;
+      continue;
+    }
+    ++pointed;
+    tighter += narrowed.prod() < 0.8 * plain.prod();
+  }
+  EXPECT_GT(pointed, 30);
+  EXPECT_GT(tighter, pointed / 2);
+}
+
 // Each glyph of `field` that has a point: f(i, its shape, its source, W_s,
 // its centre).
 template <class F>
