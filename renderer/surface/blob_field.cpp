@@ -51,36 +51,38 @@ Box3 influence_bounds(const BlobField& field, std::size_t i) {
   // The ellipsoid's semi-axis k is row k of W_s divided by its squared
   // length (W_s's rows are orthogonal), so its half-extent along world
   // axis j is the length of the j-th components of those semi-axis
-  // vectors; the cube's, whose half-edges are the semi-axes over σ, is
-  // their sum; the cylinder's (support_cylinder_radius), the axis's
-  // component plus its radius times the length of the other two.
+  // vectors. A superquadric's point x = c + Σ_k q_k semi-axis_k / σ (q in
+  // its own frame) has x_j − c_j = a·q / σ, a_k the j-th component of
+  // semi-axis k: its support reaches superquadric_reach(a) / σ, the
+  // support's own extent, where the cube and cylinder that hold it (up to
+  // √3 times the glyph along an aslant diagonal) overshoot.
   const BlobSource& s = field.sources[i];
-  Vec3 semi_axes[3], ellipsoid = Vec3::Zero(), cube = Vec3::Zero();
+  Vec3 semi_axes[3], ellipsoid = Vec3::Zero();
   for (int k = 0; k < 3; ++k) {
     const Vec3 row(s.w[3 * k], s.w[3 * k + 1], s.w[3 * k + 2]);
     semi_axes[k] = row / row.squaredNorm();
     ellipsoid += semi_axes[k].cwiseAbs2();
-    cube += semi_axes[k].cwiseAbs();
   }
   Vec3 half = ellipsoid.cwiseSqrt();
   if (!shape_is_quadric(field.shape)) {
     const ShapeParams& shape = field.shapes[i];
-    const int a = (shape.axis + 1) % 3, b = (shape.axis + 2) % 3;
-    const Vec3 across = (semi_axes[a].cwiseAbs2() + semi_axes[b].cwiseAbs2()).cwiseSqrt();
-    const Vec3 cylinder = semi_axes[shape.axis].cwiseAbs() + support_cylinder_radius(shape) * across;
-    half = half.cwiseMin(cube.cwiseMin(cylinder) / double(shape.bound_scale));
+    const double sigma = double(shape.bound_scale);
+    for (int j = 0; j < 3; ++j) {
+      const Vec3 a(semi_axes[0][j], semi_axes[1][j], semi_axes[2][j]);
+      half[j] = std::min(half[j], superquadric_reach(shape, a) / sigma);
+    }
     // A signed glyph's double cone about each axis k with points
     // (glyph_shape.h: C_k ≤ u) is the hull of its apexes ±semi-axis k and
     // its base, the circle of radius ρ across k: along world axis j it
     // reaches the larger of the apex's component and ρ times the base's.
     // Under the point load, glyphs compressed every way lie aslant, and
-    // their cube's corners stick out far past the cones' sides.
+    // the superquadric's corners stick out far past the cones' sides.
     for (int k = 0; k < 3; ++k) {
       if (!(shape.pointed & (1u << k))) continue;
       const int i1 = (k + 1) % 3, j1 = (k + 2) % 3;
       const Vec3 across_k = (semi_axes[i1].cwiseAbs2() + semi_axes[j1].cwiseAbs2()).cwiseSqrt();
       const Vec3 bicone = semi_axes[k].cwiseAbs().cwiseMax(kConeBase * across_k);
-      half = half.cwiseMin(bicone / double(shape.bound_scale));
+      half = half.cwiseMin(bicone / sigma);
     }
   }
   const Vec3 c(s.centre[0], s.centre[1], s.centre[2]);

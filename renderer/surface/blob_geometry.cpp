@@ -184,7 +184,8 @@ std::vector<BlobGeometry::ListedSource> BlobGeometry::listed_sources(const BlobF
   const double g_level = level_g(field.kernel, field.isovalue);
   std::vector<ListedSource> listed(field.sources.size());
   for (std::size_t i = 0; i < listed.size(); ++i)
-    listed[i] = {source_support(field, i), inner_level_g(field, std::uint32_t(i), g_level), ranks[i]};
+    listed[i] = {influence_bounds(field, i), source_support(field, i), inner_level_g(field, std::uint32_t(i), g_level),
+                 ranks[i]};
   return listed;
 }
 
@@ -250,7 +251,7 @@ void BlobGeometry::span_bounds(const RTCBoundsFunctionArguments* args) {
 }
 
 Box3 BlobGeometry::listed_bounds(std::size_t i) const {
-  const Box3 influence = influence_bounds(field_, i);
+  const Box3& influence = listed_[i].influence;
   if (listed_scale_ == 1.0) return influence;
   const BlobSource& s = field_.sources[i];
   const Vec3 centre(s.centre[0], s.centre[1], s.centre[2]);
@@ -473,7 +474,7 @@ bool BlobGeometry::gather_nearby(const Box3& region, std::size_t limit, NearbySo
   // neighbours for the list's boxes.
   std::sort(scratch.begin(), scratch.end(),
             [&](std::uint32_t a, std::uint32_t b) { return listed_[a].rank < listed_[b].rank; });
-  for (const std::uint32_t i : scratch) nearby.add(field_, i, listed_[i].rank);
+  for (const std::uint32_t i : scratch) nearby.add(field_, i, listed_[i].rank, listed_[i].influence);
   return true;
 }
 

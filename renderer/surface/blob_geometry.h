@@ -154,10 +154,13 @@ class BlobGeometry {
   double first_window_;  // length of the first query window along a ray
   double listed_scale_;  // listed_bounds(): the level radius for a union, else 1
   // What the span BVH's callback asks of each source, worked out once: its
-  // spatial rank (spatial_rank.h), its box and cylinder (source_support) and
+  // spatial rank (spatial_rank.h), its box and cylinder (source_support),
   // the level of g_e inside which it alone reaches C (inner_level_g), which
-  // took a division each for every candidate box.
+  // took a division each for every candidate box, and its influence box,
+  // which the gathering of nearby sources asks of every candidate (a
+  // superquadric's, superquadric_reach, takes a dozen powers).
   struct ListedSource {
+    Box3 influence;
     ShapeSupport support;
     double g_inner;
     std::uint32_t rank;

@@ -279,6 +279,22 @@ double support_cylinder_radius(const ShapeParams& params) {
   return (1.0 + 1e-6) * std::pow(2.0, 0.5 * std::max(0.0, 1.0 - double(params.alpha)));
 }
 
+namespace {
+// ‖(x, y)‖_p for p ≥ 1, its larger term divided out so that no power
+// under- or overflows.
+double pair_norm(double x, double y, double p) {
+  const double largest = std::max(std::fabs(x), std::fabs(y));
+  if (largest == 0.0) return 0.0;
+  return largest * std::pow(std::pow(std::fabs(x) / largest, p) + std::pow(std::fabs(y) / largest, p), 1.0 / p);
+}
+}  // namespace
+
+double superquadric_reach(const ShapeParams& params, const Vec3& a) {
+  const int z = params.axis, i = (z + 1) % 3, j = (z + 2) % 3;
+  const double equator = pair_norm(a[i], a[j], 2.0 / (2.0 - double(params.alpha)));
+  return (1.0 + 1e-6) * pair_norm(equator, a[z], 2.0 / (2.0 - double(params.beta)));
+}
+
 ShapeParams signed_params(const Vec3& radii, const Vec3& eigenvalues, double sharpness, SignConvention sign) {
   ShapeParams s = superquadric_params(radii, sharpness);
   add_points(s, eigenvalues, sign);

@@ -93,6 +93,16 @@ struct ShapeParams {
 // u ≥ N keeps it inside the same cylinder. Rounded up by 10⁻⁶, as σ.
 double support_cylinder_radius(const ShapeParams& params);
 
+// How far a superquadric's support N(q) ≤ 1 reaches along a, in the
+// glyph's own frame q = σ q_s: max a·q over it, its support function,
+// which is N's dual norm. N nests a 2/α-norm in a 2/β-norm, and the dual
+// of such a nest is the nest of the duals,
+//   h(a) = ‖(‖(a_a, a_b)‖_{2/(2−α)}, a_z)‖_{2/(2−β)},
+// so an aslant glyph's box is its support's own, where the cube and
+// cylinder that hold it overshoot (influence_bounds). Rounded up by 10⁻⁶,
+// as σ.
+double superquadric_reach(const ShapeParams& params, const Vec3& a);
+
 // Whether g is the quadratic g_e itself: F is then a polynomial along a ray
 // for the polynomial kernels (the exact intersector), one source alone is
 // entered where g_e reaches its level, and a source past its closest

@@ -7,9 +7,8 @@ void NearbySources::clear() {
   size_ = 0;
 }
 
-void NearbySources::add(const BlobField& field, std::uint32_t index, std::uint32_t rank) {
+void NearbySources::add(const BlobField& field, std::uint32_t index, std::uint32_t rank, const Box3& influence) {
   const BlobSource& source = field.sources[index];
-  const Box3 bounds = influence_bounds(field, index);
   if (size_ == used_chunks_ * kMaxPacket) {
     if (used_chunks_ == chunks_.size()) {
       chunks_.emplace_back();
@@ -18,9 +17,9 @@ void NearbySources::add(const BlobField& field, std::uint32_t index, std::uint32
     // Empty lanes hold W = 0: no ray enters them, and no NaN or denormal
     // slows the lane arithmetic down.
     chunks_[used_chunks_] = SourceLanes{};
-    chunk_bounds_[used_chunks_++] = bounds;
+    chunk_bounds_[used_chunks_++] = influence;
   }
-  chunk_bounds_[used_chunks_ - 1].extend(bounds);
+  chunk_bounds_[used_chunks_ - 1].extend(influence);
   SourceLanes& chunk = chunks_[used_chunks_ - 1];
   const int lane = chunk.count++;
   for (int k = 0; k < 9; ++k) chunk.w[k][lane] = source.w[std::size_t(k)];

@@ -20,8 +20,9 @@ namespace hsb {
 class NearbySources {
  public:
   void clear();
-  // The field's source number `index`, of spatial rank `rank`.
-  void add(const BlobField& field, std::uint32_t index, std::uint32_t rank);
+  // The field's source number `index`, of spatial rank `rank`, whose
+  // influence box is `influence` (influence_bounds).
+  void add(const BlobField& field, std::uint32_t index, std::uint32_t rank, const Box3& influence);
   std::size_t size() const { return size_; }
 
   // Appends to `spans` the span of every listed source whose support the

@@ -197,6 +197,46 @@ TEST(Superquadric, SupportCylinderTouchesTheEquator) {
   }
 }
 
+// superquadric_reach is the support's own extent along every direction a:
+// no point of N = 1 reaches further, and Hölder's equality case, nested as
+// N is, gives the point that reaches it (N(q*) = 1, a·q* = h(a)). Glyphs
+// from round to sharp (sharpness 3 and 6).
+TEST(Superquadric, ReachIsTheSupportsOwnAlongEveryDirection) {
+  std::mt19937 rng(5);
+  std::normal_distribution<double> n;
+  // The unit p-norm vector that a·w = ‖a‖_{p*} picks (p* = dual), for a pair.
+  const auto holder = [](double x, double y, double dual, double& wx, double& wy) {
+    const double norm = std::pow(std::pow(std::fabs(x), dual) + std::pow(std::fabs(y), dual), 1.0 / dual);
+    wx = std::copysign(std::pow(std::fabs(x) / norm, dual - 1.0), x);
+    wy = std::copysign(std::pow(std::fabs(y) / norm, dual - 1.0), y);
+    return norm;
+  };
+  for (const auto& sample : sample_shapes()) {
+    ShapeParams s = sample.second;
+    s.pointed = 0;
+    const int z = s.axis, i = (z + 1) % 3, j = (z + 2) % 3;
+    const double sigma = s.bound_scale;
+    for (int k = 0; k < 50; ++k) {
+      const Vec3 a(n(rng), n(rng), n(rng));
+      const double reach = superquadric_reach(s, a);
+      double wi, wj, e, wz;
+      const double equator = holder(a[i], a[j], 2.0 / (2.0 - s.alpha), wi, wj);
+      const double whole = holder(equator, a[z], 2.0 / (2.0 - s.beta), e, wz);
+      Vec3 q;
+      q[i] = e * wi, q[j] = e * wj, q[z] = wz;
+      ASSERT_NEAR(shape_g(GlyphShape::superquadric, s, q / sigma), 1.0, 1e-9) << "α " << s.alpha << " β " << s.beta;
+      ASSERT_NEAR(a.dot(q), whole, 1e-12 * whole);
+      ASSERT_GE(reach, whole);
+      ASSERT_LE(reach, whole * (1.0 + 2e-6));
+      for (int m = 0; m < 40; ++m) {  // and no other point of the surface beyond it
+        const Vec3 p = Vec3(n(rng), n(rng), n(rng));
+        const Vec3 on = p / std::sqrt(shape_g(GlyphShape::superquadric, s, p / sigma));
+        ASSERT_LE(a.dot(on), reach) << "α " << s.alpha << " β " << s.beta;
+      }
+    }
+  }
+}
+
 // 60 glyphs of `shape` turned every way, of radii 0.05 to 1 and eigenvalues
 // of either sign, scattered about the origin.
 BlobField random_glyph_field(std::mt19937& rng, GlyphShape shape) {
@@ -227,8 +267,8 @@ bool ray_through_support(const BlobField& field, std::size_t i, std::mt19937& rn
 }
 
 // Every point of every glyph's support, turned any way in the world, lies
-// in its influence box (the tightest of the ellipsoid's, the cube's and
-// the cylinder's boxes), and a ray through it collects a span that holds
+// in its influence box (the tighter of the ellipsoid's and the support's
+// own, and a signed glyph's cones'), and a ray through it collects a span that holds
 // it: no part of a glyph is cut off by the bounds that make rays cheap.
 TEST(GlyphShapes, InfluenceBoxesAndSpansHoldTheWholeSupport) {
   std::mt19937 rng(23);

@@ -44,7 +44,7 @@ Vec3 random_direction(std::mt19937& rng) {
 TEST(NearbySources, SpansAreEachSourcesOwnInListOrder) {
   const BlobField field = crowd(50, 1);
   NearbySources list;
-  for (std::uint32_t i = 0; i < field.sources.size(); ++i) list.add(field, i, i);
+  for (std::uint32_t i = 0; i < field.sources.size(); ++i) list.add(field, i, i, influence_bounds(field, i));
   ASSERT_EQ(list.size(), field.sources.size());
   std::mt19937 rng(2);
   std::uniform_real_distribution<double> unit(-0.5, 0.5);
