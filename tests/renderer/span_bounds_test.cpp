@@ -42,8 +42,8 @@ TEST(SpanBounds, RowsInLanesSumToTheBitsOfEachSpanAlone) {
     for (const double s : {0.5, 2.0, 3.7, 9.0})
       // Every prefix the proofs ask for: fewer rows than one group, whole
       // groups, and groups with a rest.
-      for (const std::size_t count : {std::size_t{0}, std::size_t{5}, std::size_t{8}, std::size_t{64},
-                                      std::size_t{197}, rows.size()}) {
+      for (const std::size_t count : {std::size_t{0}, std::size_t{1}, std::size_t{2}, std::size_t{3}, std::size_t{4},
+                                      std::size_t{5}, std::size_t{8}, std::size_t{64}, std::size_t{197}, rows.size()}) {
         // Row k into running sum k mod 8, the sums added pairwise.
         double sums[kSumLanes] = {};
         for (std::size_t k = 0; k < count; ++k) {
