@@ -82,7 +82,7 @@ Box3 influence_bounds(const BlobField& field, std::size_t i) {
       const int i1 = (k + 1) % 3, j1 = (k + 2) % 3;
       const Vec3 across_k = (semi_axes[i1].cwiseAbs2() + semi_axes[j1].cwiseAbs2()).cwiseSqrt();
       const Vec3 bicone = semi_axes[k].cwiseAbs().cwiseMax(kConeBase * across_k);
-      half = half.cwiseMin(bicone / sigma);
+      half = half.cwiseMin((1.0 + 1e-6) * bicone / sigma);  // rounded up, as the reach
     }
   }
   const Vec3 c(s.centre[0], s.centre[1], s.centre[2]);

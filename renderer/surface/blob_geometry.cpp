@@ -273,7 +273,9 @@ void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
     ++query->candidates;
     const unsigned k = checked_ray_index(embree_rays, 1, 0);
     RaySpan span;
-    if (ray_span(source, args->primID, rank, r.origin(int(k)), r.direction(int(k)), r.tmin[k], r.tmax[k], span, support)) {
+    const Vec3 o = r.origin(int(k)), d = r.direction(int(k));
+    if (ray_span(source, args->primID, rank, o, d, r.tmin[k], r.tmax[k], span, support) &&
+        narrow_to_influence(query->field->shape, listed.influence, o, d, span)) {
       query->tracers[k].spans.push_back(span);
       if (span.g_min < g_inner) prune_beyond_entry(*query, span, g_inner, k, embree_rays, 1, 0);
     }
@@ -316,13 +318,18 @@ void BlobGeometry::span_intersect(const RTCIntersectFunctionNArguments* args) {
     entered = query->ray_spans(source, support, gathered, 0, int(n), spans) & valid;
     offset = 0;
   }
+  const GlyphShape shape = query->field->shape;
+  const unsigned reaching = lanes_reaching(spans, offset, int(n), g_inner);
   for (unsigned rest = entered; rest; rest &= rest - 1) {
     const unsigned i = unsigned(__builtin_ctz(rest));
-    spans.append(int(i) + offset, args->primID, rank, query->tracers[index[i]].spans);
-  }
-  for (unsigned rest = entered & lanes_reaching(spans, offset, int(n), g_inner); rest; rest &= rest - 1) {
-    const unsigned i = unsigned(__builtin_ctz(rest));
-    prune_beyond_entry(*query, spans.span(int(i) + offset, args->primID, rank), g_inner, index[i], embree_rays, n, i);
+    const unsigned k = index[i];
+    std::vector<RaySpan>& list = query->tracers[k].spans;
+    spans.append(int(i) + offset, args->primID, rank, list);
+    if (!narrow_to_influence(shape, listed.influence, r.origin(int(k)), r.direction(int(k)), list.back())) {
+      list.pop_back();
+      continue;
+    }
+    if (reaching & (1u << i)) prune_beyond_entry(*query, list.back(), g_inner, k, embree_rays, n, i);
   }
   // No hit is reported: traversal goes on and visits every crossed box it
   // has not pruned.

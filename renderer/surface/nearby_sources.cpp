@@ -20,6 +20,9 @@ void NearbySources::add(const BlobField& field, std::uint32_t index, std::uint32
     chunk_bounds_[used_chunks_++] = influence;
   }
   chunk_bounds_[used_chunks_ - 1].extend(influence);
+  if (boxes_.size() == size_) boxes_.emplace_back();
+  boxes_[size_] = influence;
+  shape_ = field.shape;
   SourceLanes& chunk = chunks_[used_chunks_ - 1];
   const int lane = chunk.count++;
   for (int k = 0; k < 9; ++k) chunk.w[k][lane] = source.w[std::size_t(k)];
@@ -43,6 +46,7 @@ void NearbySources::collect_spans(const Vec3& o, const Vec3& d, double tmin, dou
     for (unsigned entered = source_spans(chunk, o, d, tmin, tmax, lanes); entered; entered &= entered - 1) {
       const int i = __builtin_ctz(entered);
       lanes.append(i, chunk.index[i], chunk.rank[i], spans);
+      if (!narrow_to_influence(shape_, boxes_[c * kMaxPacket + std::size_t(i)], o, d, spans.back())) spans.pop_back();
     }
   }
 }

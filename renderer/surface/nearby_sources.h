@@ -26,12 +26,15 @@ class NearbySources {
   std::size_t size() const { return size_; }
 
   // Appends to `spans` the span of every listed source whose support the
-  // ray o + t d crosses within [tmin, tmax], in the order they were added.
+  // ray o + t d crosses within [tmin, tmax], in the order they were added,
+  // each narrowed to its influence box as the span BVH's are.
   void collect_spans(const Vec3& o, const Vec3& d, double tmin, double tmax, std::vector<RaySpan>& spans) const;
 
  private:
   std::vector<SourceLanes> chunks_;  // [0, used_chunks_) are in use; kept for reuse
   std::vector<Box3> chunk_bounds_;   // each chunk's sources' influence boxes together
+  std::vector<Box3> boxes_;          // each listed source's own, in the order added (narrow_to_influence)
+  GlyphShape shape_ = GlyphShape::ellipsoid;
   std::size_t used_chunks_ = 0;
   std::size_t size_ = 0;
 };

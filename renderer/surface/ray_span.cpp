@@ -446,7 +446,15 @@ bool ray_span(const BlobSource& s, std::uint32_t index, std::uint32_t rank, cons
   }
   if (!lane.enters) return false;
   span = RaySpan{lane.t0, lane.t1, lane.a, lane.t_c, lane.g_min, index, rank, lane.lower.a, lane.lower.t_v,
-                 lane.lower.g_v};
+                 lane.lower.g_v, lane.t0};
+  return true;
+}
+
+bool narrow_to_influence(GlyphShape shape, const Box3& influence, const Vec3& o, const Vec3& d, RaySpan& span) {
+  if (shape_is_quadric(shape)) return true;
+  const auto [t0, t1] = ray_interval_in(influence, o, d, span.t0, span.t1);
+  if (!(t0 <= t1)) return false;
+  span.t0 = t0, span.t1 = t1;
   return true;
 }
 

@@ -32,6 +32,11 @@ struct RaySpan {
   // quadratic above, or a tighter one from the shape's box or cylinder
   // (ray_span.cpp, clip_to_support).
   double lower_a = 0.0, lower_t = 0.0, lower_g = 0.0;
+  // Where the span's own bounds (the bounding ellipsoid, a shape's box and
+  // cylinder) let it begin: t0 until narrow_to_influence() moves t0 on to
+  // the influence box. u ≥ N ≥ 1 here, where the tracer's bound of a span
+  // not yet evaluated starts falling (shape_trace.cpp, span_rate).
+  double edge = 0.0;
 
   double g(double t) const { return a * (t - t_c) * (t - t_c) + g_min; }
   // The lower bound's least value on [t0, t1].
@@ -118,7 +123,7 @@ struct SpanLanes {
 
   // Lane i as the span of source number `source`, of spatial rank `rank`.
   RaySpan span(int i, std::uint32_t source, std::uint32_t rank) const {
-    return RaySpan{t0[i], t1[i], a[i], t_c[i], g_min[i], source, rank, lower_a[i], lower_t[i], lower_g[i]};
+    return RaySpan{t0[i], t1[i], a[i], t_c[i], g_min[i], source, rank, lower_a[i], lower_t[i], lower_g[i], t0[i]};
   }
   // The same appended to `list`, written there field by field: a span
   // made on the stack and copied in whole was read back in 16-byte pieces
@@ -128,9 +133,25 @@ struct SpanLanes {
     RaySpan& s = list.emplace_back();
     s.t0 = t0[i], s.t1 = t1[i], s.a = a[i], s.t_c = t_c[i], s.g_min = g_min[i];
     s.lower_a = lower_a[i], s.lower_t = lower_t[i], s.lower_g = lower_g[i];
-    s.source = source, s.rank = rank;
+    s.source = source, s.rank = rank, s.edge = t0[i];
   }
 };
+
+// A collected span narrowed to its source's influence box (influence_bounds),
+// false where nothing of it is left (a span of an ellipsoid is left as it
+// is: its box holds it). A shape's box is its support's own extent, and a
+// signed glyph's that of its cones, tighter than the bounds a span is cut
+// from (its ellipsoid, box and cylinder; a pointed span begins where
+// those do), so a span can begin before its box, or lie beside it. The
+// span BVH finds a source only where the ray crosses its box, and stops
+// at the first entry it proves (blob_geometry.cpp, prune_beyond_entry):
+// were a span to begin before its box, whether it was collected would
+// depend on the order the traversal met the boxes in, and a list of
+// nearby sources, which tests no source's own box, would collect it where
+// the traversal does not; the crossing would move in its last bits. The
+// support lies inside the box, so nothing of it is cut off. (t0 moves;
+// `edge` stays where u ≥ N ≥ 1.)
+bool narrow_to_influence(GlyphShape shape, const Box3& influence, const Vec3& o, const Vec3& d, RaySpan& span);
 // `support`: the source's (source_support).
 unsigned ray_spans(const BlobSource& s, const ShapeSupport& support, const RayLanes& rays, int first, int count,
                    SpanLanes& spans);

@@ -132,14 +132,16 @@ TEST(GlyphShapes, KeepTheBoundsTheTracerRestsOn) {
   EXPECT_LT(mismatched, gradients / 1000);
 }
 
-// A source the tracer has not evaluated yet is bounded from where its span
-// begins, the ray's entry into what holds its support (the bounding
-// ellipsoid narrowed to the cube and the cylinder): u ≥ 1 − σ√a (t − t0)
+// A source the tracer has not evaluated yet is bounded from its span's
+// edge, the ray's entry into what holds its support (the bounding
+// ellipsoid narrowed to the cube and the cylinder): u ≥ 1 − σ√a (t − edge)
 // (shape_trace.cpp: span_rate), for every shape. A signed glyph's u
 // changes up to 1.2 times as fast as that along a ray (its cones), yet the
-// bound holds: u ≥ N, the superquadric's gauge, which is at least 1 at t0
-// and 1-Lipschitz. Along random rays through single glyphs of every
-// proportion, sharpness and sign pattern, the real spans.
+// bound holds: u ≥ N, the superquadric's gauge, which is at least 1 at the
+// edge and 1-Lipschitz. Not from t0 where the influence box moved it on
+// (narrow_to_influence): outside a signed glyph's cones only u ≥ 1 holds
+// (it fails there). Along random rays through single glyphs of every
+// proportion, sharpness and sign pattern, the spans a query collects.
 TEST(GlyphShapes, ASourceNotYetEvaluatedFallsNoFasterThanItsRateFromItsEntry) {
   std::mt19937 rng(13);
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -168,7 +170,8 @@ TEST(GlyphShapes, ASourceNotYetEvaluatedFallsNoFasterThanItsRateFromItsEntry) {
           for (int k = 0; k <= 200; ++k) {
             const double t = span.t0 + (span.t1 - span.t0) * k / 200.0;
             const double u_t = std::sqrt(source_g(field, 0, o + t * d));
-            const double bound = 1.0 - rate * (t - span.t0);
+            ASSERT_LE(span.edge, span.t0);
+          const double bound = 1.0 - rate * (t - span.edge);
             ASSERT_GE(u_t, bound - 1e-9) << glyph_shape_name(shape) << " glyph " << glyph << " ray " << r << " t " << t;
             ++checked;
           }
@@ -673,6 +676,61 @@ struct TracedCrowd {
   const EmbreeDevice device;
   const BlobGeometry blobs;
 };
+
+// Every span a query collects lies in its source's influence box
+// (narrow_to_influence), however it is collected: the span BVH's
+// traversal, which stops at the first entry it proves, and a list of
+// nearby sources, which tests no source's own box, hold the same sources
+// and give the same crossing to the bit. A shape's box is its support's
+// own and a signed glyph's its cones', tighter than the bounds a span is
+// cut from: spans that began before their boxes made the two disagree
+// (fails without the narrowing).
+TEST(GlyphShapes, ListedAndTraversedSpansAgreeInsideTheirBoxes) {
+  for (const GlyphShape shape : {GlyphShape::superquadric, GlyphShape::signed_superquadric}) {
+    SCOPED_TRACE(glyph_shape_name(shape));
+    const TracedCrowd crowd(Blend::sum, shape);
+    const BlobField& field = crowd.field;
+    NearbySources list;
+    std::vector<std::uint32_t> scratch;
+    ASSERT_TRUE(crowd.blobs.gather_nearby(influence_bounds(field), field.sources.size(), list, scratch));
+    std::mt19937 rng(47);
+    std::uniform_real_distribution<double> u(-0.4, 0.4);
+    std::normal_distribution<double> n;
+    int spans = 0, hits = 0;
+    for (int r = 0; r < 400; ++r) {
+      const Vec3 o = r % 2 ? 3.0 * Vec3(n(rng), n(rng), n(rng)).normalized() : Vec3(u(rng), u(rng), u(rng));
+      const Vec3 d = r % 2 ? (Vec3(u(rng), u(rng), u(rng)) - o).normalized() : Vec3(n(rng), n(rng), n(rng)).normalized();
+      const RayInterval ray{o, d, 0.0, 8.0};
+      std::vector<RaySpan> listed_spans;
+      list.collect_spans(o, d, ray.tmin, ray.tmax, listed_spans);
+      FieldRay gathered;
+      crowd.blobs.collect_spans(&ray, 1, &gathered);
+      for (const std::vector<RaySpan>* collected : {&listed_spans, &gathered.spans})
+        for (const RaySpan& span : *collected) {
+          const Box3 box = influence_bounds(field, span.source);
+          const auto [entry, exit] = ray_interval_in(box, o, d, ray.tmin, ray.tmax);
+          ASSERT_LE(entry, span.t0) << "ray " << r << " source " << span.source;
+          ASSERT_GE(exit, span.t1) << "ray " << r << " source " << span.source;
+          ++spans;
+        }
+      TraceStats stats;
+      FieldRay near, traversed;
+      const double a = crowd.blobs.first_crossing_near(list, ray, near, stats, CrossingQuery::first);
+      const double b = crowd.blobs.first_crossing_traversed(ray, traversed, stats, CrossingQuery::first);
+      ASSERT_EQ(a, b) << "ray " << r;
+      const auto sources = [](const FieldRay& tracer) {
+        std::vector<std::uint32_t> s;
+        for (const RaySpan& span : tracer.spans) s.push_back(span.source);
+        std::sort(s.begin(), s.end());
+        return s;
+      };
+      ASSERT_EQ(sources(near), sources(traversed)) << "ray " << r;
+      hits += a >= 0.0;
+    }
+    EXPECT_GT(spans, 1000);
+    EXPECT_GT(hits, 100);
+  }
+}
 
 TEST(GlyphShapes, TracerFindsEveryCrossingDenseSamplingFinds) {
   for (const auto& [shape, blend] : {std::pair{GlyphShape::superquadric, Blend::sum}, {GlyphShape::superquadric, Blend::max},
