@@ -164,14 +164,14 @@ double FieldRay::drop_spans_beyond_first_entry(const BlobField& field, double tm
     if (t >= 0.0 && (upper < 0.0 || t < upper)) upper = t;
   }
   // A span query stops collecting at such an entry (blob_geometry.cpp):
-  // which sources beyond the earliest one it holds depends on the order
-  // the traversal met them in. None of them is non-zero before that entry,
-  // where the answer lies, so all are left out, and the answer is the same
-  // to the bit however the spans were gathered (a list, a traversal, any
-  // BVH width). (The entering source itself begins before its entry, and
-  // stays.)
+  // which sources whose boxes the ray enters beyond the earliest one it
+  // holds depends on the order the traversal met them in. None of them is
+  // non-zero before that entry, where the answer lies, so all are left
+  // out, and the answer is the same to the bit however the spans were
+  // gathered (a list, a traversal, any BVH width). (The entering source
+  // itself is entered inside its box, and stays.)
   if (upper >= 0.0)
-    spans.erase(std::remove_if(spans.begin(), spans.end(), [&](const RaySpan& s) { return s.t0 > upper; }),
+    spans.erase(std::remove_if(spans.begin(), spans.end(), [&](const RaySpan& s) { return s.box_t0 > upper; }),
                 spans.end());
   return upper;
 }

@@ -454,7 +454,7 @@ bool narrow_to_influence(GlyphShape shape, const Box3& influence, const Vec3& o,
   if (shape_is_quadric(shape)) return true;
   const auto [t0, t1] = ray_interval_in(influence, o, d, span.t0, span.t1);
   if (!(t0 <= t1)) return false;
-  span.t0 = t0, span.t1 = t1;
+  span.box_t0 = t0, span.t1 = t1;
   return true;
 }
 

@@ -32,11 +32,11 @@ struct RaySpan {
   // quadratic above, or a tighter one from the shape's box or cylinder
   // (ray_span.cpp, clip_to_support).
   double lower_a = 0.0, lower_t = 0.0, lower_g = 0.0;
-  // Where the span's own bounds (the bounding ellipsoid, a shape's box and
-  // cylinder) let it begin: t0 until narrow_to_influence() moves t0 on to
-  // the influence box. u ≥ N ≥ 1 here, where the tracer's bound of a span
-  // not yet evaluated starts falling (shape_trace.cpp, span_rate).
-  double edge = 0.0;
+  // Where the ray enters the source's influence box, at or after t0
+  // (narrow_to_influence): nothing of the support lies before it. Which
+  // spans a crossing keeps beyond the first entry it proves is decided by
+  // it (FieldRay::drop_spans_beyond_first_entry).
+  double box_t0 = 0.0;
 
   double g(double t) const { return a * (t - t_c) * (t - t_c) + g_min; }
   // The lower bound's least value on [t0, t1].
@@ -133,24 +133,29 @@ struct SpanLanes {
     RaySpan& s = list.emplace_back();
     s.t0 = t0[i], s.t1 = t1[i], s.a = a[i], s.t_c = t_c[i], s.g_min = g_min[i];
     s.lower_a = lower_a[i], s.lower_t = lower_t[i], s.lower_g = lower_g[i];
-    s.source = source, s.rank = rank, s.edge = t0[i];
+    s.source = source, s.rank = rank, s.box_t0 = t0[i];
   }
 };
 
-// A collected span narrowed to its source's influence box (influence_bounds),
-// false where nothing of it is left (a span of an ellipsoid is left as it
-// is: its box holds it). A shape's box is its support's own extent, and a
-// signed glyph's that of its cones, tighter than the bounds a span is cut
-// from (its ellipsoid, box and cylinder; a pointed span begins where
-// those do), so a span can begin before its box, or lie beside it. The
-// span BVH finds a source only where the ray crosses its box, and stops
-// at the first entry it proves (blob_geometry.cpp, prune_beyond_entry):
-// were a span to begin before its box, whether it was collected would
-// depend on the order the traversal met the boxes in, and a list of
-// nearby sources, which tests no source's own box, would collect it where
-// the traversal does not; the crossing would move in its last bits. The
-// support lies inside the box, so nothing of it is cut off. (t0 moves;
-// `edge` stays where u ≥ N ≥ 1.)
+// A collected span narrowed to its source's influence box (influence_bounds):
+// its end to where the ray leaves the box, and box_t0 to where it enters;
+// false where the ray misses the box on the span (a span of an ellipsoid
+// is left as it is: its box holds it). A shape's box is its support's own
+// extent, and a signed glyph's that of its cones, tighter than the bounds
+// a span is cut from (its ellipsoid, box and cylinder; a pointed span
+// begins where those do), so a span can begin before its box, or lie
+// beside it. The span BVH finds a source only where the ray crosses its
+// box, and stops at the first entry it proves (blob_geometry.cpp,
+// prune_beyond_entry): whether it collected a span whose box begins past
+// that entry depends on the order the traversal met the boxes in, and a
+// list of nearby sources, which tests no source's own box, collects spans
+// beside their boxes that the traversal does not; the crossing would move
+// in its last bits. The support lies inside the box, so nothing of it is
+// cut off. t0 stays where the span's own bounds begin, where u ≥ N ≥ 1 and
+// the tracer's bound of a span not yet evaluated starts to fall (from a
+// cone's side only u ≥ 1 holds, and the walk, a bound that jumped where
+// such a span began, crept towards each: fig08 as signed glyphs took 24 %
+// more time).
 bool narrow_to_influence(GlyphShape shape, const Box3& influence, const Vec3& o, const Vec3& d, RaySpan& span);
 // `support`: the source's (source_support).
 unsigned ray_spans(const BlobSource& s, const ShapeSupport& support, const RayLanes& rays, int first, int count,

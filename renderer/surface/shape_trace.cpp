@@ -392,15 +392,14 @@ double FieldRay::newton_step(double c) const {
 // as the row.
 [[gnu::always_inline]] inline SpanBoundRow FieldRay::bound_row(std::size_t i, double from) const {
   const RaySpan& span = spans[i];
-  // Not yet evaluated, u ≥ N ≥ 1 at the support's edge (RaySpan::edge,
-  // where the span began before narrow_to_influence), and N changes at
-  // most σ√a per unit (span_rate); convex, so above its tangent where it
+  // Not yet evaluated, u ≥ N ≥ 1 at the support's edge t0, and N changes
+  // at most σ√a per unit (span_rate); convex, so above its tangent where it
   // was last evaluated, which is lowest at the interval's end it falls
   // towards (its end if it falls, `from` if it rises). And g is at least
   // the span's lower bound, the bounding ellipsoid's g_e or what the box or
   // cylinder says (RaySpan::lower_a), smallest nearest its vertex. And u
   // is at least the floor a signed glyph's points give it (point_floors).
-  SpanBoundRow r{span.t1,      1.0,          -shape_rays_[i].rate, span.edge, std::max(span.lower_t, from),
+  SpanBoundRow r{span.t1,      1.0,          -shape_rays_[i].rate, span.t0, std::max(span.lower_t, from),
                  span.lower_t, span.lower_a, span.lower_g, shape_rays_[i].u_floor};
   if (has_tangent(i)) {
     if (du_dt_[i] < 0.0) r.u0 = u_[i], r.rate = du_dt_[i], r.tau = tangent_at_[i];

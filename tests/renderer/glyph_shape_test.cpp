@@ -132,15 +132,15 @@ TEST(GlyphShapes, KeepTheBoundsTheTracerRestsOn) {
   EXPECT_LT(mismatched, gradients / 1000);
 }
 
-// A source the tracer has not evaluated yet is bounded from its span's
-// edge, the ray's entry into what holds its support (the bounding
-// ellipsoid narrowed to the cube and the cylinder): u ≥ 1 − σ√a (t − edge)
+// A source the tracer has not evaluated yet is bounded from where its span
+// begins, the ray's entry into what holds its support (the bounding
+// ellipsoid narrowed to the cube and the cylinder): u ≥ 1 − σ√a (t − t0)
 // (shape_trace.cpp: span_rate), for every shape. A signed glyph's u
 // changes up to 1.2 times as fast as that along a ray (its cones), yet the
-// bound holds: u ≥ N, the superquadric's gauge, which is at least 1 at the
-// edge and 1-Lipschitz. Not from t0 where the influence box moved it on
-// (narrow_to_influence): outside a signed glyph's cones only u ≥ 1 holds
-// (it fails there). Along random rays through single glyphs of every
+// bound holds: u ≥ N, the superquadric's gauge, which is at least 1 at t0
+// and 1-Lipschitz. (Not from where the ray enters the influence box,
+// RaySpan::box_t0: at a signed glyph's cones only u ≥ 1 holds, and it
+// fails there.) Along random rays through single glyphs of every
 // proportion, sharpness and sign pattern, the spans a query collects.
 TEST(GlyphShapes, ASourceNotYetEvaluatedFallsNoFasterThanItsRateFromItsEntry) {
   std::mt19937 rng(13);
@@ -170,8 +170,7 @@ TEST(GlyphShapes, ASourceNotYetEvaluatedFallsNoFasterThanItsRateFromItsEntry) {
           for (int k = 0; k <= 200; ++k) {
             const double t = span.t0 + (span.t1 - span.t0) * k / 200.0;
             const double u_t = std::sqrt(source_g(field, 0, o + t * d));
-            ASSERT_LE(span.edge, span.t0);
-          const double bound = 1.0 - rate * (t - span.edge);
+            const double bound = 1.0 - rate * (t - span.t0);
             ASSERT_GE(u_t, bound - 1e-9) << glyph_shape_name(shape) << " glyph " << glyph << " ray " << r << " t " << t;
             ++checked;
           }
@@ -677,8 +676,9 @@ struct TracedCrowd {
   const BlobGeometry blobs;
 };
 
-// Every span a query collects lies in its source's influence box
-// (narrow_to_influence), however it is collected: the span BVH's
+// Every span a query collects ends in its source's influence box, and
+// knows where the ray enters it (narrow_to_influence), however it is
+// collected: the span BVH's
 // traversal, which stops at the first entry it proves, and a list of
 // nearby sources, which tests no source's own box, hold the same sources
 // and give the same crossing to the bit. A shape's box is its support's
@@ -709,7 +709,8 @@ TEST(GlyphShapes, ListedAndTraversedSpansAgreeInsideTheirBoxes) {
         for (const RaySpan& span : *collected) {
           const Box3 box = influence_bounds(field, span.source);
           const auto [entry, exit] = ray_interval_in(box, o, d, ray.tmin, ray.tmax);
-          ASSERT_LE(entry, span.t0) << "ray " << r << " source " << span.source;
+          ASSERT_LE(span.t0, span.box_t0) << "ray " << r << " source " << span.source;
+          ASSERT_LE(entry, span.box_t0) << "ray " << r << " source " << span.source;
           ASSERT_GE(exit, span.t1) << "ray " << r << " source " << span.source;
           ++spans;
         }
