@@ -92,12 +92,11 @@ inline Vec3 scaled_offset(const BlobSource& s, const Mat3& w, const Vec3& x) {
 }
 
 // An axis-aligned box holding source i's influence: the box of its
-// bounding ellipsoid g_e ≤ 1, narrowed to the boxes of the cube and of the
-// cylinder about the symmetry axis that hold its shape's support
-// (glyph_shape.h), |q_k| ≤ 1 and ‖q_⊥‖ ≤ support_cylinder_radius in the
-// glyph's own frame, and a signed glyph's double cones about its points,
-// wherever they are tighter: up to √3 times for a sharp glyph along the
-// world's axes, never for the ellipsoid itself.
+// bounding ellipsoid g_e ≤ 1, narrowed to its shape's support's own box
+// (superquadric_reach, glyph_shape.h) and a signed glyph's to its double
+// cones' boxes, wherever they are tighter: up to √3 times for a sharp
+// glyph aslant, never for the ellipsoid itself. A span the tracer collects
+// is narrowed to it (narrow_to_influence, ray_span.h).
 Box3 influence_bounds(const BlobField& field, std::size_t i);
 
 // Union of all sources' influence bounds.
