@@ -19,6 +19,7 @@
 #include "renderer/surface/field_ray.h"
 #include "renderer/surface/glyph_shape.h"
 #include "tests/renderer/sampled_crossing.h"
+#include "tests/renderer/span_sources.h"
 
 namespace hsb {
 namespace {
@@ -719,13 +720,7 @@ TEST(GlyphShapes, ListedAndTraversedSpansAgreeInsideTheirBoxes) {
       const double a = crowd.blobs.first_crossing_near(list, ray, near, stats, CrossingQuery::first);
       const double b = crowd.blobs.first_crossing_traversed(ray, traversed, stats, CrossingQuery::first);
       ASSERT_EQ(a, b) << "ray " << r;
-      const auto sources = [](const FieldRay& tracer) {
-        std::vector<std::uint32_t> s;
-        for (const RaySpan& span : tracer.spans) s.push_back(span.source);
-        std::sort(s.begin(), s.end());
-        return s;
-      };
-      ASSERT_EQ(sources(near), sources(traversed)) << "ray " << r;
+      ASSERT_EQ(span_sources(near), span_sources(traversed)) << "ray " << r;
       hits += a >= 0.0;
     }
     EXPECT_GT(spans, 1000);

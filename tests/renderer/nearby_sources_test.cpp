@@ -14,6 +14,7 @@
 #include "renderer/surface/nearby_sources.h"
 #include "renderer/surface/single_source.h"
 #include "renderer/surface/spatial_rank.h"
+#include "tests/renderer/span_sources.h"
 
 namespace hsb {
 namespace {
@@ -145,13 +146,7 @@ TEST_F(CrowdScene, ListedAndTraversedRaysAgreeToTheBit) {
       // the traversal stops where the ray enters a source's own level
       // surface, and the crossing keeps only the sources that begin
       // before that entry, from either.
-      const auto sources = [](const FieldRay& tracer) {
-        std::vector<std::uint32_t> s;
-        for (const RaySpan& span : tracer.spans) s.push_back(span.source);
-        std::sort(s.begin(), s.end());
-        return s;
-      };
-      ASSERT_EQ(sources(listed), sources(traversed)) << "ray " << r;
+      ASSERT_EQ(span_sources(listed), span_sources(traversed)) << "ray " << r;
       // Fewer sources reach the traversal than the list holds.
       std::vector<RaySpan> all;
       list.collect_spans(ray.origin, ray.direction, ray.tmin, ray.tmax, all);
