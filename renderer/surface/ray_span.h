@@ -77,7 +77,6 @@ struct RayLanes {
 // nothing either. kNoBox: the support is the ellipsoid's own.
 constexpr double kNoBox = std::numeric_limits<double>::infinity();
 
-//
 // A signed glyph's support is also inside the double cone about each axis
 // k that ends in points, ‖q_⊥k‖ ≤ ρ (box − |q_k|) (u ≥ C_k, glyph_shape.h):
 // a ray through the cylinder that passes beside a point meets nothing of
