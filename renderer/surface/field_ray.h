@@ -262,7 +262,7 @@ class FieldRay {
   bool refine_step(double& t);
   // What the walk was doing when its probe was staged (a probe's
   // completion, stage_completion(), keeps its probe's stage).
-  enum class WalkStage { first_probe, step_probe, refinement };
+  enum class WalkStage { first_probe, step_probe, lookahead, refinement };
   struct Walk {
     WalkStage stage = WalkStage::first_probe;
     double tmax = 0.0;

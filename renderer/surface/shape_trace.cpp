@@ -35,6 +35,20 @@ namespace {
 // matters.
 constexpr double kSliver = 1.0 / 32.0;
 
+// An occlusion ray asks only whether F reaches C anywhere on it. Where a
+// probe finds F this near C and rising, the walk stages its step's probe
+// only after one this many of Newton's steps ahead, past the crossing
+// where F bends away from its tangent (a sharp glyph's edge): F ≥ C
+// there answers the ray. Approached from below, each probe closed about
+// nine tenths of the gap left to C (fig17's beads as superquadrics: a
+// shadow ray through a second bead took 9 probes, at 0.47, 0.61, 0.69,
+// 0.95, 0.993, 0.9989, 0.9998, 0.99998 and 1.0001 of C). Twice the step,
+// from 0.9 of C: 1.97 -> 1.82 field evaluations a shadow ray (960², one
+// sample), −1.6 % of the render's instructions; from anywhere below C, or
+// at 1.25 steps, fewer answered and more were spent.
+constexpr double kLookaheadFrom = 0.9;
+constexpr double kLookahead = 2.0;
+
 // The most a span's superquadric gauge N changes per unit along the ray,
 // σ√a: N is 1-Lipschitz in the glyph's own frame (glyph_shape.h), which
 // the ray crosses at σ√a per unit. N, not u, because it is the lower bound
@@ -535,6 +549,16 @@ bool FieldRay::walk_on(double f, double& t) {
     stage_completion();
     return true;
   }
+  if (w.stage == WalkStage::lookahead) {
+    // F ≥ C there answers an occlusion ray; else the step's own probe.
+    if (f >= c) {
+      t = probed_at_;
+      return false;
+    }
+    w.stage = WalkStage::step_probe;
+    stage_shape_probe(w.next, Probe::bound);
+    return true;
+  }
   if (w.stage == WalkStage::first_probe) {
     if (f >= c) {
       t = w.t;
@@ -589,6 +613,15 @@ bool FieldRay::walk_step(double& t) {
   // ray keeps the min_step, which lands past C surely and answers it.
   if (at_surface && call_.query == CrossingQuery::first)
     w.next = std::min(w.next, w.t + newton + 0.25 * crossing_tolerance(w.t, w.t));
+  if (call_.query == CrossingQuery::any && !at_surface && probed_slope_ > 0.0 &&
+      probed_value_ >= kLookaheadFrom * c) {
+    const double ahead = w.t + kLookahead * newton;
+    if (ahead > w.next && ahead < w.tmax) {
+      w.stage = WalkStage::lookahead;
+      stage_shape_probe(ahead, Probe::bound);
+      return true;
+    }
+  }
   w.stage = WalkStage::step_probe;
   stage_shape_probe(w.next, Probe::bound);
   return true;
