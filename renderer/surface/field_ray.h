@@ -254,6 +254,8 @@ class FieldRay {
   //  - A proof from the walk's point, and the next probe staged beyond
   //    it, or the answer (−1: none before tmax).
   bool walk_step(double& t);
+  //    The step's own probe, at walk_.next (true: staged).
+  bool stage_step_probe();
   //  - The crossing inside a bracket F(lo) < C ≤ F(hi), hi the last probe,
   //    to the precision refine() gives, by Newton's method with the probes'
   //    slopes: the next probe staged, or the answer `t`.

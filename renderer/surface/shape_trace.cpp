@@ -351,11 +351,10 @@ namespace {
 // side. 2·10⁻¹⁰ of the distance along the ray is under a millionth of a
 // pixel at a 30° field 1000 pixels wide, and under a hundred-thousandth
 // of the shadow rays' offset (render.shadow_offset, a tenth of a pixel);
-// it lets the probe
-// that Newton's method lands just past the crossing end the refinement
-// (refine_step), where 10⁻¹⁴ took one more from the other side (fig17's
-// beads as superquadrics, 960², one sample: 5.68 -> 4.80 field
-// evaluations a camera ray, the picture the same to the byte).
+// it lets the probe that Newton's method lands just past the crossing end
+// the refinement (refine_step), where 10⁻¹⁴ took one more from the other
+// side (fig17's beads as superquadrics, 960², one sample: 5.68 -> 4.80
+// field evaluations a camera ray, the picture the same to the byte).
 double crossing_tolerance(double lo, double hi) { return 1e-10 * (std::fabs(lo) + std::fabs(hi)) + 1e-300; }
 }  // namespace
 
@@ -555,9 +554,7 @@ bool FieldRay::walk_on(double f, double& t) {
       t = probed_at_;
       return false;
     }
-    w.stage = WalkStage::step_probe;
-    stage_shape_probe(w.next, Probe::bound);
-    return true;
+    return stage_step_probe();
   }
   if (w.stage == WalkStage::first_probe) {
     if (f >= c) {
@@ -622,8 +619,12 @@ bool FieldRay::walk_step(double& t) {
       return true;
     }
   }
-  w.stage = WalkStage::step_probe;
-  stage_shape_probe(w.next, Probe::bound);
+  return stage_step_probe();
+}
+
+bool FieldRay::stage_step_probe() {
+  walk_.stage = WalkStage::step_probe;
+  stage_shape_probe(walk_.next, Probe::bound);
   return true;
 }
 
