@@ -164,6 +164,33 @@ std::string readable_extensions_text() {
   return text;
 }
 
+std::string unknown_file_message(const std::string& path, const std::string& toml_error) {
+  const std::string head = file_head(path, 64);
+  // Text: printable ASCII, UTF-8's bytes and white space, no NUL.
+  const bool text = !head.empty() && std::all_of(head.begin(), head.end(), [](char c) {
+    const auto u = static_cast<unsigned char>(c);
+    return u >= 0x20 || c == '\n' || c == '\r' || c == '\t';
+  });
+  std::string seen;
+  if (head.empty()) {
+    seen = "it is empty";
+  } else if (text) {
+    std::string line = head.substr(0, head.find_first_of("\r\n"));
+    if (line.size() > 40) line = line.substr(0, 40) + "...";
+    seen = "it is text beginning \"" + line + "\"";
+  } else {
+    static const char* const hex = "0123456789abcdef";
+    seen = "it is binary, beginning";
+    for (std::size_t i = 0; i < std::min<std::size_t>(head.size(), 8); ++i) {
+      const auto u = static_cast<unsigned char>(head[i]);
+      seen += std::string(" ") + hex[u >> 4] + hex[u & 15];
+    }
+  }
+  return path + ": neither a scene nor a data file hsb knows: " + seen +
+         "; not TOML (" + toml_error + "), and no data format has its extension or first bytes. hsb reads "
+         "scenes (.toml) and " + readable_formats_text();
+}
+
 std::string unreadable_format_message(const std::string& path) {
   const DataFormat* by_name = format_by_extension(path);
   const DataFormat* by_content = format_by_content(path);

@@ -55,6 +55,12 @@ bool is_known_data_file(const std::string& path);
 // reads. "" when it reads it.
 std::string unreadable_format_message(const std::string& path);
 
+// What a file that is neither a scene (TOML that parses) nor data of a
+// format hsb knows is, in one line: what its first bytes look like (text,
+// quoted; or binary, in hex), and what hsb reads. `toml_error` is TOML's
+// own word on it ("1:7: expected '='"), said last.
+std::string unknown_file_message(const std::string& path, const std::string& toml_error);
+
 // "legacy VTK (.vtk), VTK XML image data (.vti), ...": what hsb reads.
 std::string readable_formats_text();
 

@@ -545,6 +545,17 @@ SceneSpec load_scene(const std::string& path, const std::vector<std::string>& ov
   std::ostringstream text;
   text << in.rdbuf();
   if (!in) throw SceneError(path + ": cannot read the scene file");
+  // A file named as no scene that TOML cannot parse is some other file: said
+  // as what it is, not as a TOML syntax error on its first line.
+  if (std::filesystem::path(path).extension() != ".toml") {
+    try {
+      (void)toml::parse(text.str(), path);
+    } catch (const toml::parse_error& e) {
+      throw SceneError(unknown_file_message(path, std::to_string(e.source().begin.line) + ":" +
+                                                      std::to_string(e.source().begin.column) + ": " +
+                                                      std::string(e.description())));
+    }
+  }
   return load_scene_text(text.str(), path, std::filesystem::path(path).parent_path().string(), overrides);
 }
 

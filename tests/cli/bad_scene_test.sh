@@ -47,6 +47,14 @@ grep -q 'double_glazing.vtu: trajectories.method = "tensorlines" follows a tenso
 
 "$hsb" render "$work/missing.toml" -o "$work/out" 2> "$work/err"
 [[ $? -ne 0 ]] || fail "exit status 0 for a missing scene"
+# A file of no kind hsb knows is said as what its first bytes are, not as
+# a TOML syntax error on its first line.
+printf '    1C                                                                     1\n' > "$work/result.xyz"
+"$hsb" render "$work/result.xyz" -o "$work/unknown" 2> "$work/err"
+[[ $? -ne 0 ]] || fail "exit status 0 for a file of no known kind"
+grep -q "result.xyz: neither a scene nor a data file hsb knows: it is text beginning \"    1C" "$work/err" \
+  || fail "unexpected message: $(cat "$work/err")"
+[[ $(wc -l < "$work/err") -eq 1 ]] || fail "more than one line: $(cat "$work/err")"
 # info and export on the project's real data.
 "$hsb" info "$src/scenes/data/cylinder_stress_coarse.vtu" > "$work/info" 2>&1 || fail "info: $(cat "$work/info")"
 grep -q "10784 vtkTetra" "$work/info" || fail "info lacks the cell types: $(cat "$work/info")"

@@ -81,5 +81,17 @@ TEST(DataFormats, AFileHsbDoesNotReadIsSaidAsWhatItIs) {
   EXPECT_FALSE(is_known_data_file(write("scene.toml", "NRRD0005\n")));
 }
 
+TEST(DataFormats, AFileOfNoKnownKindSaysWhatItsFirstBytesAre) {
+  const std::string text = write("plate.xyz", "    1C                                                 \n");
+  const std::string said = unknown_file_message(text, "1:7: expected '='");
+  EXPECT_EQ(said.rfind(text + ": neither a scene nor a data file hsb knows: it is text beginning \"    1C", 0), 0u)
+      << said;
+  EXPECT_NE(said.find("not TOML (1:7: expected '=')"), std::string::npos) << said;
+  EXPECT_NE(said.find("hsb reads scenes (.toml) and legacy VTK (.vtk)"), std::string::npos) << said;
+  const std::string binary = unknown_file_message(write("blob.bin", std::string("\x7f\x00\x01\xfe" "ELF", 7)), "1:1: x");
+  EXPECT_NE(binary.find("it is binary, beginning 7f 00 01 fe 45 4c 46"), std::string::npos) << binary;
+  EXPECT_NE(unknown_file_message(write("void.dat", ""), "").find("it is empty"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace hsb
