@@ -266,17 +266,6 @@ void warn_about_the_result(GlyphScene& scene, std::size_t seeds) {
 
 namespace {
 
-// The eigenvalue of the family traced: a major trajectory shows λ1 along
-// it, the stress it carries.
-ColorScalar family_eigenvalue(EigenFamily family) {
-  switch (family) {
-    case EigenFamily::major: return ColorScalar::lambda1;
-    case EigenFamily::medium: return ColorScalar::lambda2;
-    case EigenFamily::minor: return ColorScalar::lambda3;
-  }
-  return ColorScalar::lambda1;
-}
-
 // The colour scalar, resolved: the traced family's eigenvalue for tensors
 // and the speed for a flow by default; one that the data cannot give is
 // an error.
@@ -556,6 +545,17 @@ EvenTrajectories trace_evenly(GlyphScene& scene, const BodyLattice& body, const 
 
 }  // namespace
 
+std::vector<double> color_range_values(const GlyphScene& scene) {
+  std::vector<double> values;
+  values.reserve(scene.sources.size() + scene.color_sample.size() + 2);
+  for (const GlyphSource& s : scene.sources) values.push_back(s.scalar);
+  // Without glyphs there is nothing to colour, and no range to widen.
+  if (values.empty()) return values;
+  values.insert(values.end(), scene.color_sample.begin(), scene.color_sample.end());
+  if (scene.color_extremes) values.insert(values.end(), scene.color_extremes->begin(), scene.color_extremes->end());
+  return values;
+}
+
 GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
                              const std::function<void(const Box3& domain)>& with_domain) {
   if (spec.placement == SourcePlacement::curve || spec.placement == SourcePlacement::list) {
@@ -627,10 +627,16 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   std::vector<EigenFamily> families = {EigenFamily::major};
   if (!flow && !spec.trajectory.families.empty())
     families = spec.trajectory.families;
-  else if (!flow && even && scene.placement == SourcePlacement::along_trajectories && !spec.trajectory.tensorlines)
+  // Diffusion draws its fibres, the major family: a minor eigenvector
+  // runs across them.
+  else if (!flow && even && scene.placement == SourcePlacement::along_trajectories && !spec.trajectory.tensorlines &&
+           scene.quantity != DataQuantity::diffusion)
     families = automatic_families(body_eigenvalues);
   scene.color = resolve_color(spec, loaded, families, scene.placement, scene.quantity);
-  if (tensors) scene.color_extremes = data_color_extremes(*tensors, scene.color);
+  if (tensors) {
+    scene.color_extremes = data_color_extremes(*tensors, scene.color, families);
+    if (scene.color_extremes) scene.color_sample = data_color_sample(*tensors, scene.color, families);
+  }
   scene.values = resolve_lengths(spec, scene.domain, loaded, separation, families, scene.quantity);
   scene.values.region = region;
   if (region.above || spec.trajectory.stop_below) {

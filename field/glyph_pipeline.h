@@ -227,6 +227,7 @@ struct GlyphScene {
   // glyphs may not reach (field/glyphs/data_extremes.h); none where the
   // data has no values of its own or the colour is not the tensor's.
   std::optional<std::array<double, 2>> color_extremes;
+  std::vector<double> color_sample;  // the same scalar at some of the data's points (data_color_sample)
   std::string anatomical_frame;          // where the axes point ("RAS"), where the file says; else ""
   GlyphValues values;
   std::vector<std::string> warnings;     // about the data, for the user
@@ -262,6 +263,13 @@ LoadedField make_field(const DataSpec& spec);
 // thread count. `with_domain`, when given, is called with the data's
 // bounds as soon as they are known, before any trajectory is traced (the
 // renderer checks the scene's lengths against them there).
+// The values an automatic colour range spans: the glyphs' scalars, and
+// the data's own (its sample and extremes), so that a stress
+// concentration the lines do not reach (a notch's or a hole's edge) is
+// coloured near its peak, unless the range's fence finds it singular
+// (renderer/image/colormap.h: auto_scale).
+std::vector<double> color_range_values(const GlyphScene& scene);
+
 GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
                              const std::function<void(const Box3& domain)>& with_domain = {});
 

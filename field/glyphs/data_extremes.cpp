@@ -42,14 +42,29 @@ std::array<double, 2> eigenvalue_bounds(const Sym3& t, ColorScalar which) {
 
 }  // namespace
 
-std::optional<std::array<double, 2>> data_color_extremes(const TensorField& field, ColorScalar color) {
+ColorScalar family_eigenvalue(EigenFamily family) {
+  switch (family) {
+    case EigenFamily::major: return ColorScalar::lambda1;
+    case EigenFamily::medium: return ColorScalar::lambda2;
+    case EigenFamily::minor: return ColorScalar::lambda3;
+  }
+  return ColorScalar::lambda1;
+}
+
+std::optional<std::array<double, 2>> data_color_extremes(const TensorField& field, ColorScalar color,
+                                                         const std::vector<EigenFamily>& families) {
   if (!needs_tensors(color) || color == ColorScalar::direction || natural_range(color)) return std::nullopt;
   const std::vector<Sym3>* values = held_values(field);
   if (!values) return std::nullopt;
   // The scalars whose least and largest values bound the bar's ends: a
-  // family's eigenvalue is λ1 on tension lines and λ3 on compression lines.
-  const bool families = color == ColorScalar::family_eigenvalue;
-  const ColorScalar low = families ? ColorScalar::lambda3 : color, high = families ? ColorScalar::lambda1 : color;
+  // family's eigenvalue is λ1 on tension lines and λ3 on compression lines,
+  // and the lowest family drawn (minor, medium, major) has the least.
+  if (color == ColorScalar::family_eigenvalue && families.empty()) return std::nullopt;
+  const bool by_family = color == ColorScalar::family_eigenvalue;
+  const EigenFamily lowest = by_family ? *std::max_element(families.begin(), families.end()) : EigenFamily::major;
+  const EigenFamily highest = by_family ? *std::min_element(families.begin(), families.end()) : EigenFamily::major;
+  const ColorScalar low = by_family ? family_eigenvalue(lowest) : color,
+                    high = by_family ? family_eigenvalue(highest) : color;
   using Range = std::array<double, 2>;
   const Range none{INFINITY, -INFINITY};
   const auto each_block = [&](auto&& body, auto&& join) {
@@ -97,6 +112,25 @@ std::optional<std::array<double, 2>> data_color_extremes(const TensorField& fiel
       joined);
   if (!(r[0] <= r[1])) return std::nullopt;
   return r;
+}
+
+std::vector<double> data_color_sample(const TensorField& field, ColorScalar color,
+                                      const std::vector<EigenFamily>& families, std::size_t most) {
+  std::vector<double> sample;
+  if (!needs_tensors(color) || color == ColorScalar::direction || natural_range(color) || most == 0) return sample;
+  const std::vector<Sym3>* values = held_values(field);
+  if (!values) return sample;
+  const bool by_family = color == ColorScalar::family_eigenvalue;
+  const std::size_t stride = std::max<std::size_t>(1, (values->size() + most - 1) / most);
+  for (std::size_t i = 0; i < values->size(); i += stride) {
+    const Sym3& t = (*values)[i];
+    if (!t.holds_data()) continue;
+    const Vec3 l = eigenvalues(t);
+    if (!by_family) sample.push_back(color_scalar(l, color));
+    else
+      for (EigenFamily f : families) sample.push_back(color_scalar(l, family_eigenvalue(f)));
+  }
+  return sample;
 }
 
 }  // namespace hsb

@@ -47,12 +47,15 @@ ColorScale shared_scale(const std::vector<std::unique_ptr<PreparedScene>>& panel
   const bool all_given = std::all_of(panels.begin(), panels.end(), [&](const auto& p) {
     return p->spec.color.range && *p->spec.color.range == *first.spec.color.range;
   });
-  std::vector<double> values;
-  for (const auto& p : panels)
+  std::vector<double> values, reach;  // the glyphs' colour values; those the range spans
+  for (const auto& p : panels) {
     for (const GlyphSource& s : p->glyphs.sources) values.push_back(s.scalar);
+    const std::vector<double> spanned = color_range_values(p->glyphs);
+    reach.insert(reach.end(), spanned.begin(), spanned.end());
+  }
   const ColorSpec& c = first.spec.color;
   ColorScale scale = all_given ? first.scale
-                               : auto_scale(*first.scale.map, values, c.symmetric.value_or(first.scale.map->diverging), c.log);
+                               : auto_scale(*first.scale.map, reach, c.symmetric.value_or(first.scale.map->diverging), c.log);
   record_extremes(scale, values);
   return scale;
 }

@@ -106,12 +106,13 @@ bool carries_stress_sign(ColorScalar scalar) {
 // tension (warm) whichever sign the data calls positive, so that a
 // geomechanics figure and a mechanics one of the same state look alike:
 // with compression positive it is reversed.
-ColorScale color_scale(const SceneSpec& scene, ColorScalar scalar, const std::vector<GlyphSource>& sources,
-                       const std::optional<std::array<double, 2>>& data_extremes) {
+ColorScale color_scale(const SceneSpec& scene, const GlyphScene& glyphs) {
   const ColorSpec& spec = scene.color;
+  const ColorScalar scalar = glyphs.color;
+  const std::optional<std::array<double, 2>>& data_extremes = glyphs.color_extremes;
   std::vector<double> values;
-  values.reserve(sources.size());
-  for (const GlyphSource& s : sources) values.push_back(s.scalar);
+  values.reserve(glyphs.sources.size());
+  for (const GlyphSource& s : glyphs.sources) values.push_back(s.scalar);
   // A bounded measure spans its whole range, and picks its colormap by it.
   const std::optional<std::array<double, 2>> natural = spec.log ? std::nullopt : natural_range(scalar);
   const Colormap* automatic =
@@ -122,7 +123,7 @@ ColorScale color_scale(const SceneSpec& scene, ColorScalar scalar, const std::ve
   const Colormap& map = *automatic;
   ColorScale scale{&map, 0.0, 1.0, spec.log};
   if (!spec.range && !natural) {
-    scale = auto_scale(map, values, spec.symmetric.value_or(map.diverging), spec.log);
+    scale = auto_scale(map, color_range_values(glyphs), spec.symmetric.value_or(map.diverging), spec.log);
   } else {
     const std::array<double, 2> range = spec.range ? *spec.range : *natural;
     scale.lo = range[0], scale.hi = range[1];
@@ -439,7 +440,7 @@ std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManageme
   const Box3& domain = p.glyphs.domain;
   const double diagonal = domain.diagonal();
 
-  p.scale = color_scale(s, p.glyphs.color, p.glyphs.sources, p.glyphs.color_extremes);
+  p.scale = color_scale(s, p.glyphs);
   p.resolve("color.map", p.scale.map->name);
   p.resolve("color.range", toml::array{p.scale.lo, p.scale.hi});
   std::vector<std::array<float, 3>> colors;

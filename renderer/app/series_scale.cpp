@@ -22,7 +22,7 @@ std::string number(double v) {
 
 std::vector<std::string> shared_series_settings(const std::vector<SeriesMember>& members) {
   if (members.empty()) return {};
-  std::vector<double> scalars;
+  std::vector<double> scalars, reach;  // the glyphs' colour values; those the range spans
   GlyphMapping smallest;
   smallest.scale = std::numeric_limits<double>::infinity();
   SceneSpec first;
@@ -31,6 +31,8 @@ std::vector<std::string> shared_series_settings(const std::vector<SeriesMember>&
     SceneSpec spec = load_scene_or_data_file(members[i].scene, members[i].overrides);
     const GlyphScene glyphs = build_glyph_scene(spec.pipeline, glyph_extent(spec.surface));
     for (const GlyphSource& s : glyphs.sources) scalars.push_back(s.scalar);
+    const std::vector<double> spanned = color_range_values(glyphs);
+    reach.insert(reach.end(), spanned.begin(), spanned.end());
     if (!glyphs.sources.empty() && glyphs.values.mapping.scale < smallest.scale) {
       smallest = glyphs.values.mapping;
       largest = i;
@@ -48,7 +50,7 @@ std::vector<std::string> shared_series_settings(const std::vector<SeriesMember>&
   const Colormap& map = colormap_for(color.map, scalars, color.log);
   if (!color.map) pinned.push_back("color.map=\"" + map.name + "\"");
   if (!color.range && !scalars.empty()) {
-    const ColorScale scale = auto_scale(map, scalars, color.symmetric.value_or(map.diverging), color.log);
+    const ColorScale scale = auto_scale(map, reach, color.symmetric.value_or(map.diverging), color.log);
     pinned.push_back("color.range=[" + number(scale.lo) + ", " + number(scale.hi) + "]");
   }
   // One picture size and one camera, those of the step with the largest
