@@ -3,7 +3,8 @@
 # folder given as the first argument) by running every generator in this
 # folder with Debian's interpreter, /usr/bin/python3 (it has vtk 9.1, numpy,
 # meshio 5, nibabel 5, netCDF4, gmsh and python3-sfepy; the python3 first on
-# PATH may lack them). teem_helix*.py call /usr/bin/teem-tend and
+# PATH may lack them). dwi_mrtrix.py, dwi_dipy.py and dwi_teem.py call
+# mrtrix3's, python3-dipy's and teem-apps' tools. teem_helix*.py call /usr/bin/teem-tend and
 # /usr/bin/teem-unu (Debian's teem-apps). The output is deterministic: the
 # same bytes from run to run. See README.md here.
 #
@@ -22,7 +23,8 @@ export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1   # same sums every run
 for script in lame_cylinder kirsch_plate_blocks kirsch_plate_series \
               teem_helix teem_helix_detached dti_fsl_dtifit \
               dti_fsl_left_hemisphere dti_symmatrix_intent sierra_style moose_style sfepy_bracket \
-              plane_stress_quads aster_plane_strain kirsch_plate_cloud lame_cylinder_shell; do
+              plane_stress_quads aster_plane_strain kirsch_plate_cloud lame_cylinder_shell \
+              dwi_mrtrix dwi_dipy dwi_teem; do
   echo "run_all: $script"
   (cd "$here" && "$PY" "$script.py" "$out")
 done
