@@ -25,7 +25,9 @@ namespace hsb {
 LoadedField make_field(const DataSpec& spec) {
   LoadedField loaded;
   if (spec.kind == DataKind::vtk_file) {
-    VtkData data = load_vtk_data(spec.file);
+    VtkFileSpec file = spec.file;
+    file.quantity = spec.quantity;
+    VtkData data = load_vtk_data(file);
     loaded.field = std::move(data.field);
     loaded.vectors = std::move(data.vectors);
     loaded.color = std::move(data.color);
@@ -36,6 +38,7 @@ LoadedField make_field(const DataSpec& spec) {
     loaded.warnings = std::move(data.warnings);
     loaded.sites = std::move(data.sites);
     loaded.no_volume = std::move(data.no_volume);
+    loaded.quantity = data.quantity;
     if (const auto* mesh = dynamic_cast<const MeshField<Vec3>*>(loaded.vectors.get()))
       for (const Vec3& v : mesh->values()) loaded.max_speed = std::max(loaded.max_speed, v.norm());
   } else {
@@ -410,20 +413,6 @@ std::vector<Vec3> eigenvalues_at(const std::vector<Vec3>& points, const TensorFi
   return values;
 }
 
-// The eigenvalues on a 16³ grid over the data's bounds: enough to tell
-// what the data holds.
-std::vector<Vec3> eigenvalues_on_grid(const TensorField& tensors) {
-  constexpr int n = 16;
-  const Box3 b = tensors.bounds();
-  std::vector<Vec3> points;
-  points.reserve(std::size_t(n * n * n));
-  for (int i = 0; i < n * n * n; ++i) {
-    const Vec3 cell_centre((i % n + 0.5) / n, (i / n % n + 0.5) / n, (i / (n * n) + 0.5) / n);
-    points.push_back(b.lo + b.size().cwiseProduct(cell_centre));
-  }
-  return eigenvalues_at(points, tensors);
-}
-
 // The families traced when the scene names none: major and minor
 // (tension and compression lines) where the body holds both signs (λ1 > 0
 // and λ3 < 0 somewhere, beyond 1 % of the largest |λ|); else the family
@@ -580,9 +569,7 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   scene.warnings = std::move(loaded.warnings);
   scene.placement = resolved_placement(spec, loaded, scene.warnings);
   // Sampled only when the scene does not say.
-  scene.quantity = data.quantity                                     ? *data.quantity
-                   : tensors && data.kind == DataKind::vtk_file ? recognised_quantity(eigenvalues_on_grid(*tensors))
-                                                                : DataQuantity::stress;
+  scene.quantity = data.quantity ? *data.quantity : loaded.quantity.value_or(DataQuantity::stress);
   // Diffusion: the fibres, where FA > 0.3, the usual threshold for white matter.
   RegionSpec region = spec.region;
   if (scene.quantity == DataQuantity::diffusion && !region.above && !flow) region.above = kDiffusionRegion;

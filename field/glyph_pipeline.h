@@ -249,6 +249,7 @@ struct LoadedField {
   std::vector<std::string> warnings;
   DataSites sites;        // the data's values where they stand (placement points, data without volume)
   std::string no_volume;  // why the data has no volume to trace in ("": it has)
+  std::optional<DataQuantity> quantity;  // a data file's tensors': given or recognised (VtkData::quantity)
 };
 
 // Builds (or reads) the data set described by `spec`. Throws DataError for

@@ -6,6 +6,8 @@
 #include <vtkDoubleArray.h>
 #include <vtkCellData.h>
 #include <vtkFieldData.h>
+#include <vtkImageData.h>
+#include <vtkMatrix3x3.h>
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
 
@@ -39,6 +41,8 @@ const std::string record_prefix = "hsb component order: ";
 const std::string default_prefix = "hsb default component order: ";
 const std::string note_prefix = "hsb reading note: ";
 const std::string frame_prefix = "hsb tensor frame: ";
+const std::string voxel_axes_prefix = "hsb voxel axes: ";
+const std::string frame_note_prefix = "hsb tensor frame note: ";
 
 // Whether `name` ends in `suffix`, case aside.
 bool ends_in(const std::string& name, const char* suffix) {
@@ -245,20 +249,61 @@ void record_writer_orders(vtkDataSet* data) {
     }
 }
 
-void record_tensor_frame(vtkFieldData* records, const std::string& name, const Mat3& frame) {
+namespace {
+
+void record_matrix(vtkFieldData* records, const std::string& name, const Mat3& m) {
   auto record = vtkSmartPointer<vtkDoubleArray>::New();
-  record->SetName((frame_prefix + name).c_str());
-  for (int k = 0; k < 9; ++k) record->InsertNextValue(frame(k / 3, k % 3));
+  record->SetName(name.c_str());
+  for (int k = 0; k < 9; ++k) record->InsertNextValue(m(k / 3, k % 3));
   records->AddArray(record);
 }
 
-std::optional<Mat3> recorded_tensor_frame(vtkDataSet* data, const std::string& name) {
-  auto* record = vtkDoubleArray::SafeDownCast(data->GetFieldData()->GetAbstractArray((frame_prefix + name).c_str()));
+std::optional<Mat3> recorded_matrix(vtkDataSet* data, const std::string& name) {
+  auto* record = vtkDoubleArray::SafeDownCast(data->GetFieldData()->GetAbstractArray(name.c_str()));
   if (!record || record->GetNumberOfValues() != 9) return std::nullopt;
-  Mat3 frame;
-  for (int k = 0; k < 9; ++k) frame(k / 3, k % 3) = record->GetValue(k);
-  if (!frame.allFinite()) return std::nullopt;
-  return frame;
+  Mat3 m;
+  for (int k = 0; k < 9; ++k) m(k / 3, k % 3) = record->GetValue(k);
+  if (!m.allFinite()) return std::nullopt;
+  return m;
+}
+
+}  // namespace
+
+void record_tensor_frame(vtkFieldData* records, const std::string& name, const Mat3& frame) {
+  record_matrix(records, frame_prefix + name, frame);
+}
+
+
+std::optional<Mat3> recorded_tensor_frame(vtkDataSet* data, const std::string& name) {
+  return recorded_matrix(data, frame_prefix + name);
+}
+
+void record_voxel_axes(vtkFieldData* records, const std::string& name, const Mat3& axes) {
+  record_matrix(records, voxel_axes_prefix + name, axes);
+}
+
+std::optional<Mat3> recorded_voxel_axes(vtkDataSet* data, const std::string& name) {
+  if (std::optional<Mat3> axes = recorded_matrix(data, voxel_axes_prefix + name)) return axes;
+  auto* image = vtkImageData::SafeDownCast(data);
+  if (!image) return std::nullopt;
+  Mat3 direction;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) direction(r, c) = image->GetDirectionMatrix()->GetElement(r, c);
+  return direction;
+}
+
+Mat3 fsl_axes(const Mat3& voxel_axes) {
+  return voxel_axes * Vec3(voxel_axes.determinant() > 0.0 ? -1.0 : 1.0, 1.0, 1.0).asDiagonal();
+}
+
+void record_frame_note(vtkFieldData* records, const std::string& name, const FrameNote& note) {
+  add_record(records, frame_note_prefix + name, {note.text, note.guess ? "guess" : "said"});
+}
+
+FrameNote recorded_frame_note(vtkDataSet* data, const std::string& name) {
+  const std::vector<std::string> record = record_of(data, frame_note_prefix + name);
+  if (record.size() != 2) return {};
+  return {record[0], record[1] == "guess"};
 }
 
 }  // namespace hsb

@@ -77,4 +77,25 @@ void record_writer_orders(vtkDataSet* data);
 void record_tensor_frame(vtkFieldData* records, const std::string& name, const Mat3& frame);
 std::optional<Mat3> recorded_tensor_frame(vtkDataSet* data, const std::string& name);
 
+// A volume's voxel axes as its file stores them (columns: the i, j, k
+// directions; NIfTI's slices may run against VTK's), from which
+// data.frame = "voxel" or "fsl" turns `name`'s tensors. Where none is
+// recorded, an image's direction matrix stands for them.
+void record_voxel_axes(vtkFieldData* records, const std::string& name, const Mat3& axes);
+std::optional<Mat3> recorded_voxel_axes(vtkDataSet* data, const std::string& name);
+
+// FSL's voxel axes from the stored ones: i reversed where they keep
+// handedness (FSL's radiological convention, as for its b-vectors).
+Mat3 fsl_axes(const Mat3& voxel_axes);
+
+// In words, the axes `name`'s tensors were read in ("FSL's voxel axes:
+// dtifit's layout"), for `hsb info`; with `guess`, the file does not say
+// and the reader chose: a warning names data.frame.
+struct FrameNote {
+  std::string text;
+  bool guess = false;
+};
+void record_frame_note(vtkFieldData* records, const std::string& name, const FrameNote& note);
+FrameNote recorded_frame_note(vtkDataSet* data, const std::string& name);
+
 }  // namespace hsb

@@ -1,14 +1,23 @@
 // NIfTI-1 and NIfTI-2 diffusion tensor volumes (.nii, .nii.gz, .hdr/.img),
 // through VTK's vtkNIFTIImageReader, placed in the scanner's space by the
-// sform (else the qform). Which of the layouts tools write it holds:
+// sform (else the qform). Which of the layouts tools write it holds, and
+// the axes its tensors are in:
 //  - the symmetric-matrix intent (1005, six values along the fifth
-//    dimension): NIfTI's lower triangle XX XY YY XZ YZ ZZ, in the space;
-//  - MRtrix's (its `descrip` says MRtrix): XX YY ZZ XY XZ YZ, in the space;
-//  - else six volumes are FSL dtifit's tensor (XX XY XZ YY YZ ZZ), which
-//    the file does not record: data.components may say otherwise. FSL's
-//    tensors are in its voxel axes, x flipped when the transform keeps
-//    handedness (FSL's radiological convention, as for its bvecs), and
-//    are turned into the space (field/reading/component_arrays.h records that).
+//    dimension): NIfTI's lower triangle XX XY YY XZ YZ ZZ. The standard
+//    names no axes for it; its usual writer, DIPY (dipy_fit_dti
+//    --nifti_tensor), fits in the axes of the b-vectors it is given, FSL's
+//    voxel axes (below), so they are read so, with a warning naming
+//    data.frame;
+//  - MRtrix's (its `descrip` says MRtrix): XX YY ZZ XY XZ YZ, in the
+//    scanner's axes, as dwi2tensor writes it;
+//  - else six volumes are FSL dtifit's tensor (XX XY XZ YY YZ ZZ; DIPY's
+//    default layout too), which the file does not record: data.components
+//    may say otherwise. Its tensors are in FSL's voxel axes, x flipped when
+//    the transform keeps handedness (FSL's radiological convention, as for
+//    its bvecs).
+// Tensors in voxel axes are turned into the space (field/reading/
+// component_arrays.h records the rotation, the voxel axes and what was
+// chosen; data.frame overrides it).
 // Nine volumes are a full 3×3 (row by row) in the space, three a vector.
 // Internal to field/; the file is parsed only in a child process.
 
@@ -142,11 +151,22 @@ vtkSmartPointer<vtkImageData> read_nifti(const std::string& path, bool scalar) {
   } else if (values == 6) {
     record_default_order(records, "tensors", "fsl",
                          "six volumes without NIfTI's symmetric-matrix intent: FSL dtifit's layout");
-    // FSL's voxel axes: the file's own (VTK reversed the slices when qfac
-    // is −1), x flipped when the file's transform keeps handedness.
-    const double qfac = reader->GetQFac() < 0 ? -1.0 : 1.0;
-    const double flip_x = (a.determinant() * qfac) > 0 ? -1.0 : 1.0;
-    record_tensor_frame(records, "tensors", direction * Vec3(flip_x, 1.0, qfac).asDiagonal());
+  }
+  // The voxel axes as the file stores them (VTK reversed the slices when
+  // qfac is −1), for data.frame; FSL's flip x where they keep handedness.
+  const Mat3 voxel_axes = direction * Vec3(1.0, 1.0, reader->GetQFac() < 0 ? -1.0 : 1.0).asDiagonal();
+  record_voxel_axes(records, "tensors", voxel_axes);
+  if (mrtrix) {
+    record_frame_note(records, "tensors", {"the scanner's axes, as MRtrix writes them"});
+  } else if (values == 6) {
+    record_tensor_frame(records, "tensors", fsl_axes(voxel_axes));
+    record_frame_note(records, "tensors",
+                      lower_triangle ? FrameNote{"FSL's voxel axes, as DIPY writes NIfTI's symmetric-matrix layout "
+                                                 "(in its b-vectors' axes)", true}
+                                     : FrameNote{"FSL's voxel axes, turned into the scanner's (FSL dtifit's and "
+                                                 "DIPY's layout)"});
+  } else {
+    record_frame_note(records, "tensors", {"the scanner's axes"});
   }
   return image;
 }

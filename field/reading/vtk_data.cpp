@@ -47,6 +47,7 @@
 #include "field/reading/data_error.h"
 #include "field/reading/data_region.h"
 #include "field/reading/dataset_reading.h"
+#include "field/reading/noisy_diffusion.h"
 #include "field/reading/plane_data.h"
 #include "field/reading/tensor_storage.h"
 #include "field/reading/vtk_session.h"
@@ -385,6 +386,26 @@ std::vector<Sym3> read_tensors(const ChosenArray& chosen, const std::string& pat
   return tensors;
 }
 
+// The rotation that takes `name`'s tensors into the data's space: the
+// scene's data.frame, else the one the reader recorded (none: they are in
+// it). A frame the reader guessed is said once, with the key.
+std::optional<Mat3> tensor_frame(const VtkFileSpec& spec, vtkDataSet* data, const std::string& name,
+                                 std::vector<std::string>& warnings) {
+  if (spec.frame == TensorFrame::automatic) {
+    if (const FrameNote note = recorded_frame_note(data, name); note.guess)
+      warnings.push_back(spec.path + ": array \"" + name + "\" read in " + note.text +
+                         "; set data.frame (\"world\", \"voxel\", \"fsl\") where its tensors are in other axes");
+    return recorded_tensor_frame(data, name);
+  }
+  if (spec.frame == TensorFrame::world) return std::nullopt;
+  const std::optional<Mat3> axes = recorded_voxel_axes(data, name);
+  if (!axes)
+    throw DataError(spec.path + ": data.frame = \"" + (spec.frame == TensorFrame::voxel ? "voxel" : "fsl") +
+                    "\" turns a volume's tensors from its voxel axes, and this file's data is no volume of voxels "
+                    "(it is a " + data->GetClassName() + ")");
+  return spec.frame == TensorFrame::voxel ? *axes : fsl_axes(*axes);
+}
+
 // The tensors of `chosen` in the data's space: in their order, and
 // turned from the axes they were written in where the file says (FSL's).
 std::vector<Sym3> tensors_of(const ChosenArray& chosen, const VtkFileSpec& spec, vtkDataSet* data,
@@ -399,7 +420,7 @@ std::vector<Sym3> tensors_of(const ChosenArray& chosen, const VtkFileSpec& spec,
   if (const std::string note = recorded_reading_note(data, chosen.name); !note.empty())
     warnings.push_back(spec.path + ": array \"" + chosen.name + "\" " + note);
   // On every core: FSL's tensors are all turned, millions of them.
-  if (const std::optional<Mat3> frame = recorded_tensor_frame(data, chosen.name))
+  if (const std::optional<Mat3> frame = tensor_frame(spec, data, chosen.name, warnings))
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tensors.size(), 8192),
                       [&](const tbb::blocked_range<std::size_t>& band) {
                         for (std::size_t i = band.begin(); i < band.end(); ++i)
@@ -625,6 +646,23 @@ VtkData load_vtk_data(const VtkFileSpec& spec) {
                                                       : static_cast<vtkDataSetAttributes*>(data->GetCellData());
       holder->RemoveArray(chosen.name.c_str());
     }
+    // What the tensors are decides how they are read: a diffusion fit's
+    // noise is no data (noisy_diffusion.h). Recognised from the file's
+    // own values, before interpolation blends noise into its neighbours.
+    // Only in a volume: a diffusion study is one, and a 2-D result's
+    // out-of-plane entries are made up (plane_data.h), which would make a
+    // plate in biaxial tension look like water.
+    const bool scan = !record_of(data, kAnatomicalFrame).empty();
+    out.quantity = spec.quantity             ? *spec.quantity
+                   : volume && !plane_of(data) ? recognised_quantity(tensors, scan)
+                                             : DataQuantity::stress;
+    if (*out.quantity == DataQuantity::diffusion) {
+      auto* image = vtkImageData::SafeDownCast(data);
+      std::array<int, 3> dims{};
+      if (image && chosen.on_points) std::copy_n(image->GetDimensions(), 3, dims.begin());
+      const NoiseLeftOut noise = leave_out_noise(tensors, image && chosen.on_points ? &dims : nullptr);
+      if (const std::string said = noise_warning(spec.path, noise); !said.empty()) out.warnings.push_back(said);
+    }
     const SharedValues<Sym3> shared(std::move(tensors));
     if (sites) out.sites.tensors = shared;
     // A grid whose tensors are zero over a background: its outline is the
@@ -758,7 +796,14 @@ std::string describe_vtk_file(const VtkFileSpec& spec) {
       out << "; " << implied.why;
     out << "\n";
   }
-  if (recorded_tensor_frame(data, chosen.name)) out << "  frame     tensors turned from the file's voxel axes into its space\n";
+  if (spec.frame != TensorFrame::automatic) {
+    const char* frames[] = {"", "the data's space itself", "the volume's voxel axes", "FSL's voxel axes"};
+    out << "  frame     " << frames[int(spec.frame)] << " (data.frame)\n";
+  } else if (const FrameNote note = recorded_frame_note(data, chosen.name); !note.text.empty()) {
+    out << "  frame     " << note.text << (note.guess ? " (a guess: data.frame overrides it)" : "") << "\n";
+  } else if (recorded_tensor_frame(data, chosen.name)) {
+    out << "  frame     tensors turned from the file's voxel axes into its space\n";
+  }
   for (const std::string& w : warnings) out << "  note      " << w.substr(w.find(": ") + 2) << "\n";
   out << range;
   for (const std::string& w : warnings) out << "  warning: " << w << "\n";

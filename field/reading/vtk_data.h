@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "base/shared_values.h"
+#include "field/data_quantity.h"
 #include "field/glyphs/triangle_mesh.h"
 #include "field/reading/site_positions.h"
 #include "field/sampling/field.h"
@@ -35,6 +36,16 @@ enum class FieldKind {
   vector,
 };
 
+// The axes a volume's tensors are written in, turned into the data's space
+// (the scanner's, for a scan) when read.
+enum class TensorFrame {
+  automatic,  // the format's or layout's own (field/reading/component_arrays.h: record_tensor_frame)
+  world,      // the data's space itself: MRtrix's, NRRD's without a measurement frame
+  voxel,      // the volume's i, j, k axes as stored
+  fsl,        // FSL's voxel axes: i reversed where the transform keeps handedness
+              // (dtifit's, and DIPY's, which fits in its b-vectors' axes)
+};
+
 struct VtkFileSpec {
   std::string path;
   std::string array;  // "" = the active tensors (or vectors), or the only such array
@@ -50,6 +61,10 @@ struct VtkFileSpec {
   // The order of 6 components (field/reading/component_order.h); "" = the order
   // the file records (field/reading/component_arrays.h), else VTK's.
   std::string components;
+  // The axes a volume's tensors are written in (TensorFrame).
+  TensorFrame frame = TensorFrame::automatic;
+  // What the tensors are; automatic: recognised from them (field/data_quantity.h).
+  std::optional<DataQuantity> quantity;
 };
 
 // The drawn array's values where they stand: its points, or its cells'
@@ -80,6 +95,8 @@ struct VtkData {
   // cloud, lines, a curved shell); "" when it has. The fields then sample
   // nothing, and the sites are the data.
   std::string no_volume;
+  // The tensors' quantity, given or recognised; none for vectors.
+  std::optional<DataQuantity> quantity;
 };
 
 // Reads the file and its tensors, or its vectors (3 components, read as

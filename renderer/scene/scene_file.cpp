@@ -91,12 +91,16 @@ void read_data(TableReader& data, DataSpec& spec, const std::string& base_dir) {
     for (const ComponentOrder& o : component_orders()) orders.emplace_back(o.name, o.name);
     // Absent: the order the file records, else VTK's (field/reading/vtk_data.h).
     if (data.has("components")) spec.file.components = data.choice<std::string>("components", orders);
+    if (data.has("frame"))
+      spec.file.frame = data.choice<TensorFrame>("frame", {{"world", TensorFrame::world},
+                                                           {"voxel", TensorFrame::voxel},
+                                                           {"fsl", TensorFrame::fsl}});
     spec.file.cell_tensors =
         data.choice<CellTensors>("cell_tensors", {{"constant", CellTensors::constant}, {"averaged", CellTensors::averaged}});
     refuse_keys(data, {"bounds", "load", "poisson_ratio", "singular_radius"}, "point_load");
   } else {
     if (file) data.fail_at("file", "applies only to data.kind = \"vtk\"");
-    refuse_keys(data, {"array", "association", "block", "cell_tensors", "components", "field", "quantity", "step"},
+    refuse_keys(data, {"array", "association", "block", "cell_tensors", "components", "field", "frame", "quantity", "step"},
                 "vtk");
     PointLoadSpec& load = spec.point_load;
     const std::vector<double> b = data.numbers("bounds");

@@ -144,9 +144,14 @@ std::vector<KeySchema> build_keys() {
       Key("data.components", T::choice, "the order of a 6-component array's tensor components")
           .choices(component_order_names())
           .derived("the order the file records (components named apart, NRRD's and NIfTI's layouts), else \"vtk\""),
+      Key("data.frame", T::choice, "the axes a volume's tensors are written in")
+          .choices({"world", "voxel", "fsl"})
+          .derived("the format's: NRRD's measurement frame, FSL's voxel axes for FSL's and NIfTI's symmetric-matrix "
+                   "layouts (dtifit's, DIPY's), the scanner's for MRtrix; else the data's space (\"world\")"),
       Key("data.quantity", T::choice, "what the tensors are: stress (or strain) or diffusion")
           .choices({"stress", "diffusion"})
-          .automatic("\"diffusion\" where the tensors are positive definite and not flat (90 % with λ3 > 0, median "
+          .automatic("\"diffusion\" where the tensors are positive definite and not flat (90 % with λ3 > 0, 20 % in a "
+                     "scan placed in anatomical space; median "
                      "λ3/λ1 ≥ 0.05) with water's mean diffusivity (1e-4 to 1e-2 mm²/s, 1e-10 to 1e-8 m²/s, 0.1 to 10 "
                      "µm²/ms); else \"stress\""),
       Key("data.field", T::choice, "read only tensors or only vectors").choices({"auto", "tensor", "vector"}).fallback("\"auto\""),

@@ -35,7 +35,7 @@ grep -q "Teem's 3D-masked-symmetric-matrix" <<<"$out" || fail "the NRRD kind not
 out=$(info dti_symmatrix_intent.nii.gz)
 grep -q "NIfTI's symmetric-matrix intent" <<<"$out" || fail "the NIfTI intent not read: $out"
 out=$(info dti_fsl_dtifit.nii.gz)
-grep -q 'data.components = "fsl"' <<<"$out" && grep -q 'frame     tensors turned' <<<"$out" ||
+grep -q 'data.components = "fsl"' <<<"$out" && grep -q "frame     FSL.s voxel axes" <<<"$out" ||
   fail "FSL's layout and frame not taken: $out"
 out=$(info plane_stress_quads.vtu)
 grep -q 'plane     a 2-D result in z = 0' <<<"$out" || fail "the 2-D result not seen as one: $out"

@@ -80,24 +80,64 @@ Mat3 turned_axes() {
   return r;
 }
 
-TEST(NiftiReading, SymmetricMatrixIntentIsTheLowerTriangleInTheSpace) {
+// FSL's voxel axes for the space's tensor S: F Rᵀ S R F, with R the voxel
+// axes and F = diag(−1, 1, 1), as `turned` keeps handedness.
+Mat3 to_fsl() { return Vec3(-1, 1, 1).asDiagonal() * turned_axes().transpose(); }
+
+// NIfTI's symmetric-matrix intent as DIPY writes it (dipy_fit_dti
+// --nifti_tensor): the lower triangle, in the b-vectors' axes, FSL's.
+TEST(NiftiReading, SymmetricMatrixIntentIsTheLowerTriangleInFslAxesAsDipyWritesIt) {
   const std::string path = write_nifti("intent.nii", {5, nx, ny, nz, 1, 6, 1, 1}, 1005, "", turned, [](int i, int j, int k) {
-    const Sym3 s = space_tensor(i, j, k);
-    return std::array<double, 6>{s.xx, s.xy, s.yy, s.xz, s.yz, s.zz};
+    const Mat3 m = to_fsl() * space_tensor(i, j, k).matrix() * to_fsl().transpose();
+    return std::array<double, 6>{m(0, 0), m(1, 0), m(1, 1), m(2, 0), m(2, 1), m(2, 2)};
   });
   expect_space_tensors(path, turned_place);
-  EXPECT_NE(describe_vtk_file({path}).find("order     recorded in the file: NIfTI's symmetric-matrix intent"),
-            std::string::npos);
+  const std::string described = describe_vtk_file({path});
+  EXPECT_NE(described.find("order     recorded in the file: NIfTI's symmetric-matrix intent"), std::string::npos);
+  EXPECT_NE(described.find("frame     FSL's voxel axes, as DIPY writes"), std::string::npos) << described;
+  // The file does not say its axes: the choice is a warning with its key.
+  const VtkData data = load_vtk_data({path});
+  ASSERT_EQ(data.warnings.size(), 1u);
+  EXPECT_NE(data.warnings[0].find("set data.frame"), std::string::npos) << data.warnings[0];
   // Placed by its sform, the world is the scanner's RAS+.
-  EXPECT_EQ(load_vtk_data({path}).anatomical_frame, "RAS");
+  EXPECT_EQ(data.anatomical_frame, "RAS");
+}
+
+// data.frame names the axes where the file's writer used others: the
+// scanner's ("world"), the voxel axes as stored, or FSL's.
+TEST(NiftiReading, DataFrameNamesTheTensorsAxes) {
+  const auto lower = [](const Mat3& m) { return std::array<double, 6>{m(0, 0), m(1, 0), m(1, 1), m(2, 0), m(2, 1), m(2, 2)}; };
+  const std::string world = write_nifti("world.nii", {5, nx, ny, nz, 1, 6, 1, 1}, 1005, "", turned,
+                                        [&](int i, int j, int k) { return lower(space_tensor(i, j, k).matrix()); });
+  VtkFileSpec spec{world};
+  spec.frame = TensorFrame::world;
+  ASSERT_TRUE(load_vtk_data(spec).warnings.empty());
+  const auto expect_read_as_space = [](const VtkFileSpec& spec) {
+    const VtkData data = load_vtk_data(spec);
+    const std::optional<Sym3> s = data.field->sample(turned_place(1, 1, 1));
+    ASSERT_TRUE(s);
+    EXPECT_LT((s->matrix() - space_tensor(1, 1, 1).matrix()).norm(), 1e-5);
+  };
+  expect_read_as_space(spec);
+  const Mat3 to_voxel = turned_axes().transpose();
+  spec.path = write_nifti("voxel.nii", {5, nx, ny, nz, 1, 6, 1, 1}, 1005, "", turned, [&](int i, int j, int k) {
+    return lower(to_voxel * space_tensor(i, j, k).matrix() * to_voxel.transpose());
+  });
+  spec.frame = TensorFrame::voxel;
+  expect_read_as_space(spec);
+  // Read in the wrong axes, the same file gives other tensors.
+  spec.frame = TensorFrame::fsl;
+  const std::optional<Sym3> wrong = load_vtk_data(spec).field->sample(turned_place(1, 1, 1));
+  ASSERT_TRUE(wrong);
+  EXPECT_GT((wrong->matrix() - space_tensor(1, 1, 1).matrix()).norm(), 0.1);
 }
 
 // Float voxels are read as floats, scaled ones (scl_slope, scl_inter) as
 // the doubles their scaling makes: both come back as the space's tensors.
 TEST(NiftiReading, RescaledVoxelsAreTheirScaledValues) {
   const auto lower_triangle = [](int i, int j, int k) {
-    const Sym3 s = space_tensor(i, j, k);
-    return std::array<double, 6>{s.xx, s.xy, s.yy, s.xz, s.yz, s.zz};
+    const Mat3 m = to_fsl() * space_tensor(i, j, k).matrix() * to_fsl().transpose();
+    return std::array<double, 6>{m(0, 0), m(1, 0), m(1, 1), m(2, 0), m(2, 1), m(2, 2)};
   };
   expect_space_tensors(write_nifti("scaled.nii", {5, nx, ny, nz, 1, 6, 1, 1}, 1005, "", turned, lower_triangle, 0.25f,
                                    -1.5f),
@@ -117,10 +157,9 @@ TEST(NiftiReading, MrtrixSaysSoInItsDescription) {
 // this transform keeps handedness: the space's tensor S is written as
 // F Rᵀ S R F, with R the voxel axes and F = diag(−1, 1, 1).
 TEST(NiftiReading, FslSixVolumesAreTurnedFromItsVoxelAxes) {
-  const Mat3 to_fsl = Vec3(-1, 1, 1).asDiagonal() * turned_axes().transpose();
   const std::string path = write_nifti("dti_tensor.nii", {4, nx, ny, nz, 6, 1, 1, 1}, 0, "FSL6.0", turned,
                                        [&](int i, int j, int k) {
-                                         const Mat3 m = to_fsl * space_tensor(i, j, k).matrix() * to_fsl.transpose();
+                                         const Mat3 m = to_fsl() * space_tensor(i, j, k).matrix() * to_fsl().transpose();
                                          return std::array<double, 6>{m(0, 0), m(0, 1), m(0, 2), m(1, 1), m(1, 2), m(2, 2)};
                                        });
   expect_space_tensors(path, turned_place);

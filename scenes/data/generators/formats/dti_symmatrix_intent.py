@@ -5,8 +5,13 @@ gzip, float32, 5-D, shape 40 x 48 x 24 x 1 x 6 (the 4th, time, axis of
 length 1; the 5th holds the matrix), intent_code 1005
 (NIFTI_INTENT_SYMMATRIX) with intent_p1 = 3 (the matrix dimension), the
 components in NIfTI's row-wise LOWER-triangle order XX, XY, YY, XZ, YZ, ZZ
-(A11, A21, A22, A31, A32, A33). The tensors are in WORLD (scanner)
-coordinates: no frame change, no x flip. Same affine as the FSL file
+(A11, A21, A22, A31, A32, A33). The standard names no axes for the
+tensors; this file holds them as DIPY writes this layout (dipy_fit_dti
+--nifti_tensor fits in the axes of its b-vectors, FSL's): in FSL's voxel
+frame, D_fsl = F R^T D_world R F exactly as dti_fsl_dtifit.nii.gz (an
+earlier version held world components, which no tool writes; hsb reads the
+layout in FSL's axes and says so, data.frame = "world" reads the other).
+Same affine as the FSL file
 (10 degrees about z, 2 mm voxels, centre at world (1.5, -17, 9) mm;
 sform_code = qform_code = 1). Units mm^2/s. Zeros (not NaN) outside the
 ellipsoidal mask.
@@ -25,6 +30,8 @@ import formats_common as fc
 a = dti_phantom.affine()
 mask, D = dti_phantom.tensors()
 order = [(0, 0), (1, 0), (1, 1), (2, 0), (2, 1), (2, 2)]
+M = dti_phantom.fsl_frame(a)                 # F R^T, as for dti_fsl_dtifit.nii.gz
+D = M @ D @ M.T                              # DIPY's (FSL's) voxel frame
 data = np.stack([D[..., i, j] for i, j in order], axis=-1)
 data[~mask] = 0.0
 data = data.astype(np.float32)[:, :, :, None, :]
@@ -34,8 +41,8 @@ hdr = img.header
 img.set_sform(a, code=1)
 img.set_qform(a, code=1)
 hdr.set_xyzt_units('mm', 'sec')
-hdr.set_intent('symmetric matrix', (3,), name='DTI')
-hdr['descrip'] = b'synthetic DTI, world frame, lower triangle'
+hdr.set_intent('symmetric matrix', (3,))  # no name, as DIPY's nifti1_symmat
+hdr['descrip'] = b''  # as DIPY (nibabel's default) leaves it
 path = fc.out_path('dti_symmatrix_intent.nii.gz')
 nib.save(img, path)
 fc.report(path)
