@@ -66,10 +66,10 @@ std::vector<DataFormat> build_formats() {
       {"VTK XML polygonal data", {".vtp"}, vtk_xml<poly_data>, &vtk_xml_reader},
       {"NRRD", {".nrrd", ".nhdr"}, nrrd, &nrrd_reader},
       {"NIfTI", {".nii", ".nii.gz", ".hdr"}, nifti, &nifti_reader},
+      {"MRtrix image", {".mif", ".mif.gz", ".mih"}, mrtrix, &mif_reader},
       {"Exodus II", {".e", ".exo", ".ex2", ".exii"}, netcdf, &exodus_reader, "", "HDF5"},
       // Known, not read yet: said as what they are.
       {"VTK HDF", {".vtkhdf", ".hdf"}, nullptr, nullptr, convert},
-      {"MRtrix image", {".mif", ".mif.gz", ".mih"}, mrtrix, nullptr, "convert it with mrconvert to NIfTI"},
       {"Gmsh mesh", {".msh"}, gmsh, nullptr, convert},
       {"Abaqus input", {".inp"}, abaqus_input, nullptr, convert},
       {"Abaqus output database", {".odb"}, nullptr, nullptr, "export the field output to .vtu (Abaqus/CAE or a VTK exporter)"},

@@ -62,5 +62,6 @@ extern const FormatReader vtk_series_reader;      // vtk_formats.cpp
 extern const FormatReader exodus_reader;          // exodus_reading.cpp
 extern const FormatReader nrrd_reader;            // nrrd_reading.cpp
 extern const FormatReader nifti_reader;           // nifti_reading.cpp
+extern const FormatReader mif_reader;             // mif_reading.cpp
 
 }  // namespace hsb

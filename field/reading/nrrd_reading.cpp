@@ -44,6 +44,7 @@
 #include "base/huge_pages.h"
 #include "base/mapped_file.h"
 #include "base/input_file.h"
+#include "field/reading/byte_numbers.h"
 #include "field/reading/component_arrays.h"
 #include "field/reading/component_order.h"
 #include "field/reading/data_error.h"
@@ -213,17 +214,6 @@ std::vector<char> rest_of(std::ifstream& in) {
   in.read(bytes.data(), std::streamsize(bytes.size()));
   bytes.resize(std::size_t(in.gcount()));
   return bytes;
-}
-
-// The number of type T at `bytes`, in the file's byte order.
-template <typename T>
-double load_number(const unsigned char* bytes, bool swap) {
-  unsigned char b[sizeof(T)];
-  std::memcpy(b, bytes, sizeof(T));
-  if (swap) std::reverse(b, b + sizeof(T));
-  T t;
-  std::memcpy(&t, b, sizeof t);
-  return double(t);
 }
 
 // The data's values as the file holds them: bytes (raw, or inflated from
