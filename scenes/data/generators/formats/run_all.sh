@@ -4,7 +4,9 @@
 # folder with Debian's interpreter, /usr/bin/python3 (it has vtk 9.1, numpy,
 # meshio 5, nibabel 5, netCDF4, gmsh and python3-sfepy; the python3 first on
 # PATH may lack them). dwi_mrtrix.py, dwi_dipy.py and dwi_teem.py call
-# mrtrix3's, python3-dipy's and teem-apps' tools. teem_helix*.py call /usr/bin/teem-tend and
+# mrtrix3's, python3-dipy's and teem-apps' tools; ccx_*.py CalculiX's ccx;
+# fenics_notched_shaft.py needs python3-dolfin, med_plate.py and the HDF5
+# ones python3-h5py. teem_helix*.py call /usr/bin/teem-tend and
 # /usr/bin/teem-unu (Debian's teem-apps). The output is deterministic: the
 # same bytes from run to run. See README.md here.
 #
@@ -24,7 +26,8 @@ for script in lame_cylinder kirsch_plate_blocks kirsch_plate_series \
               teem_helix teem_helix_detached dti_fsl_dtifit \
               dti_fsl_left_hemisphere dti_symmatrix_intent sierra_style moose_style sfepy_bracket \
               plane_stress_quads aster_plane_strain kirsch_plate_cloud lame_cylinder_shell \
-              dwi_mrtrix dwi_dipy dwi_teem; do
+              dwi_mrtrix dwi_dipy dwi_teem gmsh_views ccx_plate ccx_block med_plate \
+              fenics_notched_shaft meshio_hex vtkhdf_plate; do
   echo "run_all: $script"
   (cd "$here" && "$PY" "$script.py" "$out")
 done
