@@ -64,12 +64,12 @@ std::vector<DataFormat> build_formats() {
       {"VTK XML multiblock data set", {".vtm", ".vtmb"}, vtk_xml<multiblock>, &vtk_multiblock_reader},
       {"ParaView time series", {".pvd"}, vtk_xml<collection>, &vtk_series_reader},
       {"VTK XML polygonal data", {".vtp"}, vtk_xml<poly_data>, &vtk_xml_reader},
+      {"VTK HDF", {".vtkhdf", ".hdf"}, nullptr, &vtk_hdf_reader, "", "HDF5"},
       {"NRRD", {".nrrd", ".nhdr"}, nrrd, &nrrd_reader},
       {"NIfTI", {".nii", ".nii.gz", ".hdr"}, nifti, &nifti_reader},
       {"MRtrix image", {".mif", ".mif.gz", ".mih"}, mrtrix, &mif_reader},
       {"Exodus II", {".e", ".exo", ".ex2", ".exii"}, netcdf, &exodus_reader, "", "HDF5"},
       // Known, not read yet: said as what they are.
-      {"VTK HDF", {".vtkhdf", ".hdf"}, nullptr, nullptr, convert},
       {"Gmsh mesh", {".msh"}, gmsh, nullptr, convert},
       {"Abaqus input", {".inp"}, abaqus_input, nullptr, convert},
       {"Abaqus output database", {".odb"}, nullptr, nullptr, "export the field output to .vtu (Abaqus/CAE or a VTK exporter)"},

@@ -59,6 +59,7 @@ extern const FormatReader vtk_xml_reader;         // vtk_formats.cpp
 extern const FormatReader vtk_pieces_reader;      // vtk_formats.cpp
 extern const FormatReader vtk_multiblock_reader;  // vtk_formats.cpp
 extern const FormatReader vtk_series_reader;      // vtk_formats.cpp
+extern const FormatReader vtk_hdf_reader;         // vtk_formats.cpp
 extern const FormatReader exodus_reader;          // exodus_reading.cpp
 extern const FormatReader nrrd_reader;            // nrrd_reading.cpp
 extern const FormatReader nifti_reader;           // nifti_reading.cpp

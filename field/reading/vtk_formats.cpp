@@ -1,8 +1,10 @@
 // VTK's own formats, read by VTK's readers: legacy files, serial XML data
-// sets, parallel pieces, multiblock files and ParaView's time series. The
-// FormatReaders of the registry (field/reading/format_reader.h).
+// sets, parallel pieces, multiblock files, ParaView's time series and VTK's
+// HDF5 format (VTKHDF 1.0, vtkHDFReader). The FormatReaders of the
+// registry (field/reading/format_reader.h).
 
 #include <vtkDataSetReader.h>
+#include <vtkHDFReader.h>
 #include <vtkXMLDataElement.h>
 #include <vtkXMLDataParser.h>
 #include <vtkXMLGenericDataObjectReader.h>
@@ -113,6 +115,19 @@ vtkSmartPointer<vtkDataSet> read_xml_parts(const std::string& path, const ReadRe
   return output_of(xml_reader(path), path, vtk, [&](vtkDataObject* read) { return merged(read, path, request.block); });
 }
 
+// VTKHDF is HDF5 inside, with a /VTKHDF group that says its type: a file
+// of another kind gets a clear message before VTK's reader sees it (it
+// reports a missing group as an error of HDF5's own).
+vtkSmartPointer<vtkDataSet> read_vtk_hdf(const std::string& path, const ReadRequest&, const VtkSession& vtk) {
+  if (file_head(path, 8).rfind("\x89HDF\r\n\x1a\n", 0) != 0)
+    throw DataError(path + ": not a VTK HDF file: it is not HDF5 (no \"\\x89HDF\" signature)");
+  auto reader = vtkSmartPointer<vtkHDFReader>::New();
+  if (!reader->CanReadFile(path.c_str()))
+    throw DataError(path + ": not a VTK HDF file: an HDF5 file without VTK's /VTKHDF group (Version, Type)");
+  reader->SetFileName(path.c_str());
+  return output_of(reader, path, vtk, as_data_set);
+}
+
 // The files that `element` and the elements in it name (a piece's Source,
 // a block's or a step's file), as named in the file `from`.
 void named_files(vtkXMLDataElement* element, const std::string& from, std::vector<std::string>& out) {
@@ -174,5 +189,6 @@ const FormatReader vtk_xml_reader{read_xml};
 const FormatReader vtk_pieces_reader{read_xml_parts, nullptr, xml_parts, nullptr, true, false};
 const FormatReader vtk_multiblock_reader{read_xml_parts, nullptr, xml_parts, nullptr, true, true};
 const FormatReader vtk_series_reader{nullptr, series_step_file, nullptr, series_step_times};
+const FormatReader vtk_hdf_reader{read_vtk_hdf};
 
 }  // namespace hsb
