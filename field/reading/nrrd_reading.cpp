@@ -11,7 +11,9 @@
 //    data), 3D-symmetric-matrix (six), 3D-matrix (nine, row by row),
 //    3D-masked-matrix (ten) or 3-vector; without a kind, its count of
 //    values says which;
-//  - the `measurement frame`: tensors are turned from it into the space.
+//  - the `measurement frame`: vectors are turned from it into the space
+//    here, tensors where every format's are (field/reading/vtk_data.cpp,
+//    which data.frame can overrule), from the rotation recorded.
 // The tensors come out in VTK's order, with the layout they were read
 // from recorded (field/reading/component_arrays.h). Internal to field/. Every
 // count the header declares is checked against the bytes there are before
@@ -514,13 +516,11 @@ vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path, bool scalar) {
     const bool outside = layout.masked && !(v[0] >= 0.5);  // Teem: below 0.5 is outside the mask
     if (out_components == 9) {
       Eigen::Matrix<double, 3, 3, Eigen::RowMajor> m = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(t);
-      if (!in_space_frame) m = frame * m * frame.transpose();
       if (outside) m.setConstant(std::nan(""));
       put(m.data(), 9);
       return;
     }
     Sym3 sym = tensor_in_order(t, teem_order);
-    if (!in_space_frame) sym = Sym3::symmetric_part(frame * sym.matrix() * frame.transpose());
     std::array<double, 6> six = components_in_order(sym, vtk_order);
     if (outside) six.fill(std::nan(""));
     put(six.data(), 6);
@@ -553,6 +553,10 @@ vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path, bool scalar) {
   } else {
     image->GetPointData()->SetTensors(array);
     record_component_order(image->GetFieldData(), array->GetName(), "NRRD, " + layout.said);
+    if (!in_space_frame) record_tensor_frame(image->GetFieldData(), array->GetName(), frame);
+    record_frame_note(image->GetFieldData(), array->GetName(),
+                      {in_space_frame ? "the space's own axes (no measurement frame, or the identity)"
+                                      : "its measurement frame, turned into its space"});
   }
   return image;
 }
