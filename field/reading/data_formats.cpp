@@ -46,6 +46,8 @@ bool mrtrix(const std::string& head) { return starts(head, "mrtrix image"); }
 // Classic netCDF: the container of Exodus II files.
 bool netcdf(const std::string& head) { return starts(head, "CDF\x01") || starts(head, "CDF\x02"); }
 bool gmsh(const std::string& head) { return starts(head, "$MeshFormat"); }
+// CalculiX's results begin with the model header record, "    1C".
+bool calculix(const std::string& head) { return starts(head, "    1C"); }
 bool abaqus_input(const std::string& head) { return starts(head, "*Heading"); }
 bool xdmf(const std::string& head) { return starts(head, "Xdmf") || head.find("<Xdmf") != std::string::npos; }
 bool hdf5(const std::string& head) { return starts(head, "\x89HDF\r\n\x1a\n"); }
@@ -68,6 +70,7 @@ std::vector<DataFormat> build_formats() {
       {"NRRD", {".nrrd", ".nhdr"}, nrrd, &nrrd_reader},
       {"NIfTI", {".nii", ".nii.gz", ".hdr"}, nifti, &nifti_reader},
       {"MRtrix image", {".mif", ".mif.gz", ".mih"}, mrtrix, &mif_reader},
+      {"CalculiX results", {".frd"}, calculix, &frd_reader},
       {"Exodus II", {".e", ".exo", ".ex2", ".exii"}, netcdf, &exodus_reader, "", "HDF5"},
       // Known, not read yet: said as what they are.
       {"Gmsh mesh", {".msh"}, gmsh, nullptr, convert},

@@ -64,5 +64,6 @@ extern const FormatReader exodus_reader;          // exodus_reading.cpp
 extern const FormatReader nrrd_reader;            // nrrd_reading.cpp
 extern const FormatReader nifti_reader;           // nifti_reading.cpp
 extern const FormatReader mif_reader;             // mif_reading.cpp
+extern const FormatReader frd_reader;             // frd_reading.cpp
 
 }  // namespace hsb
