@@ -19,6 +19,7 @@ packages=(
   libopencolorio-dev
   libtomlplusplus-dev libeigen3-dev libcli11-dev
   libvtk9-dev
+  libmedc-dev libgmsh-dev libxml2-dev libhdf5-dev
   libpango1.0-dev libcairo2-dev poppler-utils
   libssl-dev
   googletest libgtest-dev

@@ -72,21 +72,17 @@ std::vector<DataFormat> build_formats() {
       {"MRtrix image", {".mif", ".mif.gz", ".mih"}, mrtrix, &mif_reader},
       {"CalculiX results", {".frd"}, calculix, &frd_reader},
       {"Exodus II", {".e", ".exo", ".ex2", ".exii"}, netcdf, &exodus_reader, "", "HDF5"},
+      {"Gmsh mesh", {".msh"}, gmsh, &gmsh_reader},
+      {"XDMF", {".xdmf", ".xmf"}, xdmf, &xdmf_reader},
+      // MED (Code_Aster, SALOME) is HDF5 inside: its signature is HDF5's.
+      {"MED (Code_Aster, Salome)", {".med", ".rmed"}, nullptr, &med_reader, "", "HDF5"},
       // Known, not read yet: said as what they are.
-      {"Gmsh mesh", {".msh"}, gmsh, nullptr, convert},
       {"Abaqus input", {".inp"}, abaqus_input, nullptr, convert},
       {"Abaqus output database", {".odb"}, nullptr, nullptr, "export the field output to .vtu (Abaqus/CAE or a VTK exporter)"},
-      // MED files are HDF5 inside. meshio knows .med only by name (-i med
-      // for .rmed), and Debian 12's meshio 5.0 fails writing MED's field
-      // records to .vtu; its legacy .vtk keeps the fields.
-      {"MED (Code_Aster, Salome)", {".med", ".rmed"}, nullptr, nullptr,
-       "convert it with meshio convert -i med FILE out.vtk, or ParaView's MED reader and Save Data", "HDF5"},
-      // meshio 5.0 writes a 2-D result's 2×2 tensors to .vtu and .vtk
-      // without their component count: ParaView's converts them whole.
-      {"XDMF", {".xdmf", ".xmf"}, xdmf, nullptr,
-       "open it in ParaView and Save Data as .vtu (meshio convert FILE out.vtu loses the component count of a "
-       "2-D result's 2×2 tensors)"},
-      {"HDF5", {".h5", ".hdf5"}, hdf5, nullptr, convert},
+      // An .h5 beside an .xdmf holds its arrays: the .xdmf says what they are.
+      {"HDF5", {".h5", ".hdf5"}, hdf5, nullptr,
+       "if it holds an XDMF file's arrays (FEniCS, meshio), give the .xdmf or .xmf beside it, which says what they "
+       "are; otherwise convert it to .vtu (meshio convert FILE out.vtu, or ParaView's Save Data)"},
       {"Gmsh or OpenFOAM results", {".pos", ".foam"}, nullptr, nullptr, convert},
   };
 }

@@ -371,7 +371,9 @@ vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSessi
     return read_dataset(file, vtk, {-1, request.block, request.scalar});
   }
   if (request.step > 0 && !reader.times)
-    throw DataError(path + ": data.step applies only to a time series (.pvd, or Exodus with time steps)");
+    throw DataError(path +
+                    ": data.step applies only to a time series (.pvd; Exodus, XDMF, MED, Gmsh or CalculiX results "
+                    "with time steps)");
   if (!request.block.empty() && !reader.has_blocks)
     throw DataError(path + ": data.block applies only to files of blocks (.vtm, Exodus); this is a " + format->name +
                     " file");

@@ -65,5 +65,8 @@ extern const FormatReader nrrd_reader;            // nrrd_reading.cpp
 extern const FormatReader nifti_reader;           // nifti_reading.cpp
 extern const FormatReader mif_reader;             // mif_reading.cpp
 extern const FormatReader frd_reader;             // frd_reading.cpp
+extern const FormatReader med_reader;             // med_reading.cpp
+extern const FormatReader gmsh_reader;            // gmsh_reading.cpp
+extern const FormatReader xdmf_reader;            // xdmf_reading.cpp
 
 }  // namespace hsb

@@ -49,10 +49,10 @@ grep -q 'double_glazing.vtu: trajectories.method = "tensorlines" follows a tenso
 [[ $? -ne 0 ]] || fail "exit status 0 for a missing scene"
 # A file of no kind hsb knows is said as what its first bytes are, not as
 # a TOML syntax error on its first line.
-printf '    1C                                                                     1\n' > "$work/result.xyz"
+printf 'x y z sxx syy szz\n0 0 0 1 2 3\n' > "$work/result.xyz"
 "$hsb" render "$work/result.xyz" -o "$work/unknown" 2> "$work/err"
 [[ $? -ne 0 ]] || fail "exit status 0 for a file of no known kind"
-grep -q "result.xyz: neither a scene nor a data file hsb knows: it is text beginning \"    1C" "$work/err" \
+grep -q "result.xyz: neither a scene nor a data file hsb knows: it is text beginning \"x y z sxx syy szz\"" "$work/err" \
   || fail "unexpected message: $(cat "$work/err")"
 [[ $(wc -l < "$work/err") -eq 1 ]] || fail "more than one line: $(cat "$work/err")"
 # info and export on the project's real data.

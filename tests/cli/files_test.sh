@@ -66,19 +66,20 @@ out=$("$hsb" render "$work/empty_sweep.toml" -o "$work/sweep" 2>&1); status=$?
 grep -q "empty_sweep.toml:4:20: sweep.glyphs.spacing lists no values" <<<"$out" || fail "empty sweep: $out"
 # A data file of a format hsb does not read, on the command line or in a
 # scene: one line naming the format, never a TOML error; info and export alike.
-printf '$MeshFormat\n4.1 0 8\n$EndMeshFormat\n' > "$work/bracket.msh"
+printf '*Heading\n bracket\n*Node\n' > "$work/bracket.inp"
 for command in render info export; do
-  args=("$work/bracket.msh")
+  args=("$work/bracket.inp")
   [[ $command == info ]] || args+=(-o "$work/formats")
   out=$("$hsb" $command "${args[@]}" 2>&1); status=$?
-  [[ $status == 1 ]] || fail "$command of a Gmsh file: exit $status: $out"
-  grep -q "bracket.msh: a file in the Gmsh mesh format (by its name and content), which hsb does not read: .*hsb reads legacy VTK" <<<"$out" ||
-    fail "$command of a Gmsh file: $out"
+  [[ $status == 1 ]] || fail "$command of an Abaqus input file: exit $status: $out"
+  grep -q "bracket.inp: a file in the Abaqus input format (by its name and content), which hsb does not read: .*hsb reads legacy VTK" <<<"$out" ||
+    fail "$command of an Abaqus input file: $out"
 done
-printf '[data]\nfile = "bracket.msh"\n' > "$work/msh_scene.toml"
-out=$("$hsb" render "$work/msh_scene.toml" -o "$work/formats" 2>&1)
-grep -q "msh_scene.toml:2:8: data.file names .*bracket.msh: a file in the Gmsh mesh format" <<<"$out" || fail "a scene naming Gmsh: $out"
-"$hsb" info --formats | grep -q "^Gmsh mesh	.msh	no: " || fail "hsb info --formats lists no Gmsh"
+printf '[data]\nfile = "bracket.inp"\n' > "$work/inp_scene.toml"
+out=$("$hsb" render "$work/inp_scene.toml" -o "$work/formats" 2>&1)
+grep -q "inp_scene.toml:2:8: data.file names .*bracket.inp: a file in the Abaqus input format" <<<"$out" || fail "a scene naming Abaqus input: $out"
+"$hsb" info --formats | grep -q "^Abaqus input	.inp	no: " || fail "hsb info --formats lists no Abaqus input"
+"$hsb" info --formats | grep -q "^Gmsh mesh	.msh	yes" || fail "hsb info --formats does not list Gmsh as read"
 "$hsb" info --formats | grep -q "^NRRD	.nrrd .nhdr	yes" || fail "hsb info --formats does not list NRRD as read"
 
 # The child that trial-reads a data file (VTK's readers crash or hang on

@@ -33,7 +33,8 @@ TEST(DataFormats, TheLongestExtensionNamesTheFormat) {
   EXPECT_EQ(format_by_extension("scene.toml"), nullptr);
   EXPECT_TRUE(is_readable_data_file("a/b/c.vtk"));
   EXPECT_TRUE(is_readable_data_file("c.pvtu"));
-  EXPECT_FALSE(is_readable_data_file("c.msh"));
+  EXPECT_TRUE(is_readable_data_file("c.msh"));
+  EXPECT_FALSE(is_readable_data_file("c.inp"));
 }
 
 TEST(DataFormats, TheFirstBytesNameTheFormat) {
@@ -57,20 +58,21 @@ TEST(DataFormats, AFileStemLosesItsWholeExtension) {
 }
 
 TEST(DataFormats, AFileHsbDoesNotReadIsSaidAsWhatItIs) {
-  const std::string msh = write("bracket.msh", "$MeshFormat\n4.1 0 8\n");
-  const std::string message = unreadable_format_message(msh);
-  EXPECT_EQ(message.rfind(msh + ": a file in the Gmsh mesh format (by its name and content), which hsb does not read: ", 0), 0u) << message;
+  const std::string inp = write("bracket.inp", "*Heading\n bracket\n");
+  const std::string message = unreadable_format_message(inp);
+  EXPECT_EQ(message.rfind(inp + ": a file in the Abaqus input format (by its name and content), which hsb does not read: ", 0), 0u) << message;
   EXPECT_EQ(unreadable_format_message(write("helix.nrrd", "NRRD0004\n")), "");  // read since NRRD got its reader
   EXPECT_NE(message.find("hsb reads legacy VTK (.vtk), VTK XML image data (.vti)"), std::string::npos) << message;
   // Under a name hsb reads, the content is what it is.
   const std::string disguised = write("brain.vtu", nifti_header());
   EXPECT_NE(unreadable_format_message(disguised).find("a file in the NIfTI format (by its content)"), std::string::npos);
   // A Code_Aster result is HDF5 inside: MED by its name, not HDF5 by its
-  // content, with the meshio command that converts one (-i med: meshio
-  // knows .rmed by no name).
-  const std::string rmed = unreadable_format_message(write("result.rmed", std::string("\x89HDF\r\n\x1a\n", 8)));
-  EXPECT_NE(rmed.find("a file in the MED (Code_Aster, Salome) format (by its name)"), std::string::npos) << rmed;
-  EXPECT_NE(rmed.find("meshio convert -i med "), std::string::npos) << rmed;
+  // content, and read since MED got its reader.
+  EXPECT_EQ(unreadable_format_message(write("result.rmed", std::string("\x89HDF\r\n\x1a\n", 8))), "");
+  // Abaqus's own database: named, with what to do.
+  const std::string odb = unreadable_format_message(write("result.odb", std::string("\x00\x01", 2)));
+  EXPECT_NE(odb.find("a file in the Abaqus output database format (by its name), which hsb does not read: export"),
+            std::string::npos) << odb;
   const std::string legacy = write("beam.vtu", "# vtk DataFile Version 4.2\n");
   EXPECT_NE(unreadable_format_message(legacy).find("give it its format's extension (.vtk)"), std::string::npos);
   // What it reads says nothing; nor does a readable name over unknown bytes
