@@ -12,7 +12,7 @@ cd "$(dirname "$0")/.."
 
 packages=(python3-sfepy python3-vtk9 python3-numpy python3-scipy
           python3-meshio python3-nibabel python3-netcdf4 python3-gmsh netcdf-bin teem-apps
-          mrtrix3 python3-dipy calculix-ccx python3-h5py python3-dolfin)
+          mrtrix3 python3-dipy calculix-ccx python3-h5py python3-dolfin python3-dolfinx)
 missing=()
 for p in "${packages[@]}"; do
   status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)

@@ -713,6 +713,47 @@ vtkSmartPointer<vtkUnstructuredGrid> uniform_grid(Reading& reading, xmlNodePtr n
   return grid;
 }
 
+// What names a uniform grid's mesh: its Topology's and Geometry's data
+// (where they are, or their inline numbers) and shapes. Grids of one key
+// are one mesh: dolfinx writes the mesh once as a grid of its own and each
+// function as a temporal collection of grids that include it.
+std::string mesh_key(const Reading& reading, xmlNodePtr grid) {
+  std::string key;
+  for (const char* part : {"Topology", "Geometry"})
+    for (xmlNodePtr node : children(grid, part)) {
+      const xmlNodePtr whole = resolved(reading, node);
+      key += std::string(part) + ":" + attribute(whole, "TopologyType") + attribute(whole, "GeometryType") + ";";
+      for (xmlNodePtr item : children(whole, "DataItem")) {
+        const xmlNodePtr data = resolved(reading, item);
+        key += attribute(data, "Dimensions") + "@" + trimmed(text_of(data)) + ";";
+      }
+    }
+  return key;
+}
+
+// The uniform grids of one step as data sets: those of one mesh (mesh_key)
+// made one, with all their attributes, the mesh read once.
+std::vector<std::pair<std::string, vtkSmartPointer<vtkUnstructuredGrid>>> grids_of_step(
+    Reading& reading, const std::vector<xmlNodePtr>& leaves, std::set<std::string>& tensor6) {
+  std::vector<std::pair<std::string, vtkSmartPointer<vtkUnstructuredGrid>>> grids;
+  std::map<std::string, std::size_t> by_mesh;
+  std::vector<bool> named_by_data;  // a grid is named after the first that brings data, not a bare mesh
+  for (xmlNodePtr leaf : leaves) {
+    const bool data = !children(leaf, "Attribute").empty();
+    const auto [at, first] = by_mesh.emplace(mesh_key(reading, leaf), grids.size());
+    if (first) {
+      grids.emplace_back(attribute(leaf, "Name"), uniform_grid(reading, leaf, tensor6));
+      named_by_data.push_back(data);
+      continue;
+    }
+    auto& [name, grid] = grids[at->second];
+    for (xmlNodePtr attribute_node : children(leaf, "Attribute"))
+      add_attribute(reading, resolved(reading, attribute_node), grid, tensor6);
+    if (data && !named_by_data[at->second]) name = attribute(leaf, "Name"), named_by_data[at->second] = true;
+  }
+  return grids;
+}
+
 enum class GridKind { uniform, temporal, spatial };
 
 GridKind kind_of(const Reading& reading, xmlNodePtr grid) {
@@ -818,14 +859,15 @@ vtkSmartPointer<vtkDataSet> read_xdmf(const std::string& path, const ReadRequest
     throw DataError(path + ": no uniform <Grid> at step " + std::to_string(std::max(request.step, 0)));
 
   std::set<std::string> tensor6;
+  const auto grids = grids_of_step(reading, leaves, tensor6);
   vtkSmartPointer<vtkDataObject> read;
-  if (leaves.size() == 1) {
-    read = uniform_grid(reading, leaves.front(), tensor6);
+  if (grids.size() == 1) {
+    read = grids.front().second;
   } else {
     auto blocks = vtkSmartPointer<vtkMultiBlockDataSet>::New();
-    for (std::size_t i = 0; i < leaves.size(); ++i) {
-      blocks->SetBlock(unsigned(i), uniform_grid(reading, leaves[i], tensor6));
-      const std::string name = attribute(leaves[i], "Name");
+    for (std::size_t i = 0; i < grids.size(); ++i) {
+      blocks->SetBlock(unsigned(i), grids[i].second);
+      const std::string& name = grids[i].first;
       blocks->GetMetaData(unsigned(i))
           ->Set(vtkCompositeDataSet::NAME(), (name.empty() ? "grid " + std::to_string(i) : name).c_str());
     }

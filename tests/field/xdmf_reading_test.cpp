@@ -1,4 +1,4 @@
-// XDMF with HDF5 heavy data as FEniCS/dolfin 2019 and meshio 5 write it
+// XDMF with HDF5 heavy data as FEniCS (dolfin 2019, dolfinx 0.5) and meshio 5 write it
 // (scenes/data/generators/formats/README_xdmf_hdf.md): the mesh, cells
 // wound as VTK winds them, both time steps of dolfin's series (the second
 // takes the mesh by xi:include), a cell-centred tensor, meshio's Tensor6
@@ -35,6 +35,7 @@ const std::string formats = std::string(HSB_SOURCE_DIR) + "/scenes/data/formats/
 const std::string shaft = formats + "fenics_shaft.xdmf";
 const std::string shaft_dg0 = formats + "fenics_shaft_dg0.xdmf";
 const std::string beam = formats + "meshio_hex_beam.xdmf";
+const std::string dolfinx_plate = formats + "dolfinx_plate.xdmf";
 
 // The grid the reader makes of `path`, before hsb's checks.
 vtkSmartPointer<vtkUnstructuredGrid> read_grid(const std::string& path, int step = -1) {
@@ -343,6 +344,37 @@ TEST(XdmfReading, ATruncatedHeavyDataFileIsSaidSo) {
   const std::string error = read_error(path);
   EXPECT_NE(error.find(path), std::string::npos) << error;
   EXPECT_NE(error.find("fenics_shaft.h5"), std::string::npos) << error;
+}
+
+// dolfinx 0.5 writes the mesh once as a grid of its own and each function
+// as a temporal collection of grids that include it: one mesh, whose
+// arrays at a time are all its functions' then.
+TEST(XdmfReading, DolfinxsFunctionsShareTheirMesh) {
+  ASSERT_EQ(xdmf_reader.times(dolfinx_plate), (std::vector<double>{1.0, 2.0}));
+  const vtkSmartPointer<vtkUnstructuredGrid> first = read_grid(dolfinx_plate, 0), second = read_grid(dolfinx_plate, 1);
+  ASSERT_TRUE(first && second);
+  EXPECT_EQ(first->GetNumberOfPoints(), 1712);
+  EXPECT_EQ(first->GetNumberOfCells(), 5795);
+  vtkDataArray* stress = first->GetPointData()->GetArray("stress");
+  ASSERT_TRUE(stress);
+  ASSERT_TRUE(first->GetPointData()->GetArray("displacement"));
+  EXPECT_EQ(first->GetPointData()->GetTensors(), stress);
+  // Load factor 2 is twice load factor 1; the peak, Kirsch's 3σ and a
+  // little more for the plate's width, on top of the hole.
+  vtkDataArray* doubled = second->GetPointData()->GetArray("stress");
+  ASSERT_TRUE(doubled);
+  double peak = 0.0;
+  vtkIdType at = -1;
+  for (vtkIdType i = 0; i < stress->GetNumberOfTuples(); ++i) {
+    EXPECT_NEAR(doubled->GetComponent(i, 0), 2.0 * stress->GetComponent(i, 0), 1e-9);
+    const double l1 = eigenvalues(Sym3::symmetric_part(tensor_at(stress, i)))(0);
+    if (l1 > peak) peak = l1, at = i;
+  }
+  EXPECT_NEAR(peak, 32.44, 0.01);
+  double p[3];
+  first->GetPoint(at, p);
+  EXPECT_NEAR(std::hypot(p[0], p[1]), 1.0, 0.01);  // on the hole
+  EXPECT_GT(std::fabs(p[1]), 0.99);                 // at its top or bottom
 }
 
 }  // namespace

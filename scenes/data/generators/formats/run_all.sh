@@ -5,9 +5,10 @@
 # meshio 5, nibabel 5, netCDF4, gmsh and python3-sfepy; the python3 first on
 # PATH may lack them). dwi_mrtrix.py, dwi_dipy.py and dwi_teem.py call
 # mrtrix3's, python3-dipy's and teem-apps' tools; ccx_*.py CalculiX's ccx;
-# fenics_notched_shaft.py needs python3-dolfin, med_plate.py and the HDF5
-# ones python3-h5py. teem_helix*.py call /usr/bin/teem-tend and
-# /usr/bin/teem-unu (Debian's teem-apps). The output is deterministic: the
+# fenics_notched_shaft.py needs python3-dolfin, dolfinx_plate.py
+# python3-dolfinx, med_plate.py and the HDF5 ones python3-h5py.
+# teem_helix*.py call /usr/bin/teem-tend and /usr/bin/teem-unu (Debian's
+# teem-apps). The output is deterministic: the
 # same bytes from run to run. See README.md here.
 #
 #   scenes/data/generators/formats/run_all.sh            # -> scenes/data/formats
@@ -27,7 +28,7 @@ for script in lame_cylinder kirsch_plate_blocks kirsch_plate_series \
               dti_fsl_left_hemisphere dti_symmatrix_intent sierra_style moose_style sfepy_bracket \
               plane_stress_quads aster_plane_strain kirsch_plate_cloud lame_cylinder_shell \
               dwi_mrtrix dwi_dipy dwi_teem gmsh_views ccx_plate ccx_block med_plate \
-              fenics_notched_shaft meshio_hex vtkhdf_plate; do
+              fenics_notched_shaft dolfinx_plate meshio_hex vtkhdf_plate; do
   echo "run_all: $script"
   (cd "$here" && "$PY" "$script.py" "$out")
 done
