@@ -11,14 +11,19 @@ cd "$(dirname "$0")/../.."
 hsb=$PWD/build/hsb
 files=("$@")
 if ((${#files[@]} == 0)); then
-  mapfile -t files < <(ls scenes/data/formats/* | grep -Ev '_[0-9]+\.vtu$|\.(h5|raw)$|/kirsch_plate_blocks$')
+  mapfile -t files < <(find scenes/data/formats -maxdepth 1 -type f | sort | grep -Ev '_[0-9]+\.vtu$|\.(h5|raw)$')
 fi
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 echo "| file | format | time (s) | peak memory (MB) | glyphs | first warning |"
 echo "|---|---|---|---|---|---|"
+# The registry's formats: name, then its extensions (hsb info --formats).
+"$hsb" info --formats > "$out/formats"
 for f in "${files[@]}"; do
-  format=$("$hsb" info "$f" 2>/dev/null | sed -n '1s/^# [^:]*: //p')
+  # The format whose extension the name ends in, the longest (.nii.gz before .gz).
+  format=$(awk -F'\t' -v name="$(basename "$f")" '{ n = split($2, ext, " ");
+             for (i = 1; i <= n; i++) if (length(ext[i]) > best && substr(name, length(name) - length(ext[i]) + 1) == ext[i])
+               { best = length(ext[i]); found = $1 } } END { print found }' "$out/formats")
   /usr/bin/time -f '%e %M' -o "$out/time" "$hsb" render "$f" -o "$out/img" > "$out/log" 2> "$out/err"
   status=$?
   read -r seconds peak < "$out/time" 2>/dev/null || { seconds=?; peak=0; }
