@@ -451,6 +451,15 @@ void read_output(TableReader& o, OutputSpec& spec, GlyphShape shape, const std::
   spec.file = o.optional_string("file");
   if (spec.file && !is_supported_image_path(*spec.file))
     o.fail_at("file", "must end in .png, .tif, .tiff, .exr, .pdf or .svg, got \"" + *spec.file + "\"");
+  // A scene names its picture, the command line its folder (-o): a scene
+  // never writes outside that folder, whoever wrote the scene.
+  if (spec.file) {
+    const std::filesystem::path name(*spec.file);
+    const bool climbs = std::any_of(name.begin(), name.end(), [](const std::filesystem::path& part) { return part == ".."; });
+    if (name.is_absolute() || climbs || name.has_root_name())
+      o.fail_at("file", "must be a name inside the output folder (-o), not a path out of it, got \"" + *spec.file +
+                            "\": give the folder with -o");
+  }
   const bool exr = spec.file && is_scene_linear_format(*spec.file);
   spec.bit_depth = o.optional_integer("bit_depth");
   if (spec.bit_depth && (exr ? *spec.bit_depth != 16 && *spec.bit_depth != 32 : *spec.bit_depth != 8 && *spec.bit_depth != 16))

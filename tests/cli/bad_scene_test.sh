@@ -71,4 +71,15 @@ grep -q 'no array named "nope" (data.array); the file has point data: stress' "$
 "$hsb" export "$work/empty.toml" -o "$work/empty" > "$work/log" 2>&1 || fail "export of an empty scene: $(cat "$work/log")"
 [[ -z $(ls -A "$work/empty" | grep partial) ]] || fail "export left: $(ls -A "$work/empty")"
 [[ -s "$work/empty/empty_sources.vtp" ]] || fail "export of an empty scene wrote: $(ls -A "$work/empty")"
+# A scene writes inside -o only: an absolute output.file, or one that climbs
+# out with .., is refused before anything is rendered or made.
+mkdir -p "$work/outside"
+for name in "$work/outside/escaped.png" "../outside/escaped.png" "sub/../../outside/escaped.png"; do
+  printf '[seeds]\npoints = [[0, 0, 0.5]]\n[render]\nwidth = 16\nheight = 16\n[output]\nfile = "%s"\n' "$name" > "$work/escape.toml"
+  "$hsb" render "$work/escape.toml" -o "$work/inside" 2> "$work/err"
+  [[ $? -ne 0 ]] || fail "exit status 0 for output.file = $name"
+  grep -q "escape.toml:7:8: output.file must be a name inside the output folder (-o)" "$work/err" ||
+    fail "unexpected message for $name: $(cat "$work/err")"
+  [[ -z $(ls -A "$work/outside") ]] || fail "written outside -o: $(ls -A "$work/outside")"
+done
 echo "PASS"
