@@ -33,18 +33,43 @@ cairo_surface_t* picture_surface(const VectorFigure& f) {
   return surface;
 }
 
-// `text` with XML's five special characters escaped.
+// `text` as XML 1.0 character data: its five special characters escaped,
+// and what XML cannot hold at all (control characters but tab, line feed
+// and carriage return; bytes that are not UTF-8; U+FFFE, U+FFFF) as U+FFFD,
+// so that a name or a value from a user's file never makes the figure
+// malformed.
 std::string xml_escaped(const std::string& text) {
+  static const std::string replacement = "\xEF\xBF\xBD";
   std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
+  const auto* bytes = reinterpret_cast<const unsigned char*>(text.data());
+  const std::size_t n = text.size();
+  for (std::size_t i = 0; i < n;) {
+    const unsigned char c = bytes[i];
+    if (c < 0x80) {
+      switch (c) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += "&quot;"; break;
+        case '\'': out += "&apos;"; break;
+        default: out += (c < 0x20 && c != '\t' && c != '\n' && c != '\r') ? replacement : std::string(1, char(c));
+      }
+      ++i;
+      continue;
     }
+    // A UTF-8 sequence: its length from the lead byte, each continuation
+    // byte 10xxxxxx, no overlong form, no surrogate, nothing past U+10FFFF.
+    const std::size_t length = c >= 0xF0 && c <= 0xF4 ? 4 : c >= 0xE0 ? 3 : c >= 0xC2 && c <= 0xDF ? 2 : 0;
+    std::uint32_t code = length == 4 ? c & 0x07u : length == 3 ? c & 0x0Fu : c & 0x1Fu;
+    bool valid = length != 0 && i + length <= n && c < 0xF5;
+    for (std::size_t k = 1; valid && k < length; ++k) {
+      valid = (bytes[i + k] & 0xC0) == 0x80;
+      code = (code << 6) | (bytes[i + k] & 0x3Fu);
+    }
+    valid = valid && !(length == 3 && code < 0x800) && !(length == 4 && (code < 0x10000 || code > 0x10FFFF)) &&
+            !(code >= 0xD800 && code <= 0xDFFF) && code != 0xFFFE && code != 0xFFFF;
+    out += valid ? text.substr(i, length) : replacement;
+    i += valid ? length : 1;
   }
   return out;
 }

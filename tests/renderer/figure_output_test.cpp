@@ -444,5 +444,24 @@ TEST_F(FigureOutput, PdfPrintsAtItsDpiWithTheLegendAsText) {
   EXPECT_NE(svg_text.str().find("<image"), std::string::npos);
 }
 
+// What a user's scene and files name goes into the SVG's metadata: a
+// control character or bytes that are not UTF-8 there (a file name may be
+// any bytes) still make well-formed XML, each such character U+FFFD.
+TEST_F(FigureOutput, SvgMetadataIsWellFormedWhateverTheNamesHold) {
+  scene("");
+  const std::string odd = (dir_ / "odd\x01name\xff\xc3.toml").string();
+  std::ofstream(odd) << kPlate << "[output]\nfile = \"odd.svg\"\ncolorbar_title = \"bell\\u0007 & <tag> \\u00e9\"\n";
+  const std::string svg = render(odd).image_path;
+  const std::string parsed = output_of("/usr/bin/python3 -c \"import sys, xml.dom.minidom as m; "
+                                       "d = m.parse(sys.argv[1]); print(len(d.getElementsByTagName('metadata')))\" '" +
+                                       svg + "' 2>&1");
+  EXPECT_EQ(parsed, "1\n") << parsed;
+  std::ifstream in(svg, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("odd\xEF\xBF\xBDname\xEF\xBF\xBD\xEF\xBF\xBD.toml"), std::string::npos);
+  EXPECT_NE(text.str().find("&amp; &lt;tag&gt; \xC3\xA9"), std::string::npos);  // é kept, as UTF-8
+}
+
 }  // namespace
 }  // namespace hsb
