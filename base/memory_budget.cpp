@@ -6,40 +6,32 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <optional>
 #include <sstream>
+#include <string>
 
+#include "base/cgroup_memory.h"
 #include "base/process_memory.h"
 
 namespace hsb {
 namespace {
 
-// A control group's memory limit, from cgroup v2 or v1; 0 when there is none.
-double cgroup_limit() {
-  for (const char* path : {"/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes"}) {
-    std::ifstream in(path);
-    std::string text;
-    if (!(in >> text) || text == "max") continue;
-    char* end = nullptr;
-    const double value = std::strtod(text.c_str(), &end);
-    // cgroup v1 says "no limit" with a number near 2^63.
-    if (end != text.c_str() && value > 0.0 && value < 1e18) return value;
-  }
-  return 0.0;
-}
-
 // The limit that binds, and its name for messages.
 struct Limit {
   double bytes;
-  const char* what;
+  std::string what;
 };
 
 Limit binding_limit() {
   double physical = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
   if (!(physical > 0.0)) physical = 8e9;  // unknown: assume a small machine
   Limit limit{0.75 * physical, "this machine allows a scene (three quarters of its memory)"};
-  if (const double cgroup = cgroup_limit(); cgroup > 0.0 && 0.75 * cgroup < limit.bytes)
-    limit = {0.75 * cgroup, "this job's control group allows a scene (three quarters of its limit)"};
+  // The lowest limit from the process's own cgroup up (Slurm sets --mem
+  // on the job's cgroup, levels below the top), not the top-level file's.
+  if (const std::optional<CgroupMemoryLimit> cgroup = cgroup_memory_limit();
+      cgroup && 0.75 * double(cgroup->bytes) < limit.bytes)
+    limit = {0.75 * double(cgroup->bytes),
+             "this job's control group allows a scene (three quarters of its limit, " + cgroup->file + ")"};
   // ulimit -v caps the address space, which holds more than the resident
   // memory (thread stacks, mapped libraries): what the process may still
   // map, on top of what it holds now.

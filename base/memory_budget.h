@@ -17,7 +17,8 @@ class ResourceError : public std::runtime_error {
 
 // Three quarters of the memory this process may use: the machine's
 // physical memory, or its control group's limit when lower (a Slurm job's
-// allocation, a container's).
+// allocation, a container's: the lowest from its own cgroup up, see
+// base/cgroup_memory.h).
 std::size_t memory_budget_bytes();
 
 // "2.3 GB", "512 MB": a size for a message.
