@@ -112,8 +112,8 @@ TEST(NiftiReading, DataFrameNamesTheTensorsAxes) {
   VtkFileSpec spec{world};
   spec.frame = TensorFrame::world;
   ASSERT_TRUE(load_vtk_data(spec).warnings.empty());
-  const auto expect_read_as_space = [](const VtkFileSpec& spec) {
-    const VtkData data = load_vtk_data(spec);
+  const auto expect_read_as_space = [](const VtkFileSpec& read) {
+    const VtkData data = load_vtk_data(read);
     const std::optional<Sym3> s = data.field->sample(turned_place(1, 1, 1));
     ASSERT_TRUE(s);
     EXPECT_LT((s->matrix() - space_tensor(1, 1, 1).matrix()).norm(), 1e-5);
