@@ -81,6 +81,22 @@ std::string data_file_of(const std::string& scene, const std::optional<toml::tab
   return (std::filesystem::path(scene).parent_path() / file).lexically_normal().string();
 }
 
+// A swept value as it stands in an image's name: a TOML string without its
+// quotes, as --set takes a bare word, so that --set color.map=magma and a
+// [sweep] table's "color.map" = ["magma"] both name it color.map=magma
+// (the table's TOML text, 'magma', once became color.map=_magma_);
+// anything else (numbers, arrays) as written.
+std::string value_in_name(const std::string& value) {
+  if (value.empty() || (value.front() != '"' && value.front() != '\'')) return value;
+  try {
+    const toml::table parsed = toml::parse("v = " + value);
+    if (const toml::value<std::string>* text = parsed["v"].as_string()) return text->get();
+  } catch (const toml::parse_error&) {
+    // Not one TOML string ("a" "b"): named as written.
+  }
+  return value;
+}
+
 }  // namespace
 
 std::vector<std::string> split_sweep(const std::string& value) {
@@ -182,19 +198,21 @@ BatchItem Batch::item(std::size_t position) const {
 }
 
 std::vector<std::string> Batch::overrides_at(const Scene& scene, std::size_t offset, BatchItem* item) const {
-  // The offset in mixed radix, the last key fastest.
-  std::vector<std::string> assignments(scene.swept.size());
+  // The offset in mixed radix, the last key fastest. The overrides keep
+  // each value's TOML text; the variant names it as --set would.
+  std::vector<std::string> assignments(scene.swept.size()), names(scene.swept.size());
   for (std::size_t k = scene.swept.size(); k-- > 0;) {
     const SweptKey& swept = scene.swept[k];
     const std::size_t v = offset % swept.values.size();
     assignments[k] = swept.key + "=" + swept.values[v];
+    if (item) names[k] = swept.key + "=" + value_in_name(swept.values[v]);
     if (item && !swept.where.empty()) item->sweep_origins.emplace_back(assignments[k], swept.where[v]);
     offset /= swept.values.size();
   }
   std::vector<std::string> overrides = fixed_;
-  for (const std::string& a : assignments) {
-    overrides.push_back(a);
-    if (item) item->variant += (item->variant.empty() ? "" : ",") + a;
+  for (std::size_t k = 0; k < assignments.size(); ++k) {
+    overrides.push_back(assignments[k]);
+    if (item) item->variant += (item->variant.empty() ? "" : ",") + names[k];
   }
   return overrides;
 }
@@ -253,7 +271,7 @@ Shard parse_shard(const std::string& text) {
   std::istringstream in(text);
   if (!(in >> shard.index >> slash >> shard.count) || slash != '/' || (in >> rest) || shard.count < 1 ||
       shard.index < 1 || shard.index > shard.count)
-    throw std::invalid_argument("--shard must be K/N with 1 <= K <= N (as in 3/8), got \"" + text + "\"");
+    throw std::invalid_argument("--shard must be K/N with 1 <= K <= N (as in 3/8) or auto, got \"" + text + "\"");
   return shard;
 }
 

@@ -29,6 +29,7 @@
 #include "renderer/app/pinned_scene.h"
 #include "renderer/app/prepared_scene.h"
 #include "renderer/app/render_job.h"
+#include "renderer/app/scheduler_share.h"
 #include "renderer/image/image_io_module.h"
 #include "renderer/render/ray_scene.h"
 #include "renderer/scene/scene_error.h"
@@ -189,8 +190,9 @@ int run(int argc, char** argv) {
       "Sweeps: --set glyphs.spacing=0.02,0.05,0.1 renders one image per value (named after it);\n"
       "several swept keys give every combination; a scene's [sweep] table does the same.\n"
       "Ctrl-C or SIGTERM stops at once and leaves no partial file.\n"
-      "Exit status: 0 when every image rendered (or was up to date), 1 if any failed, 2 for a bad\n"
-      "--shard, 106-109 for other command-line errors, 130 after Ctrl-C, 143 after SIGTERM.");
+      "Exit status: 0 when every image rendered (or was up to date) or the share held none, 1 if any\n"
+      "failed, 2 for a bad --shard (or a job array --shard auto cannot share out exactly), 106-109 for\n"
+      "other command-line errors, 130 after Ctrl-C, 143 after SIGTERM.");
   render->add_flag("--stats", stats,
                    "Also print ray counts, support intervals and field evaluations per ray");
   bool quiet = false, skip_existing = false, as_series = false;
@@ -204,8 +206,12 @@ int run(int argc, char** argv) {
                    "one glyph scale, colour range, picture size and camera for all, so a growing load shows as\n"
                    "growing glyphs in frames that do not jump, as the steps of a .pvd or Exodus file already do");
   render->add_option("--shard", shard_text,
-                     "K/N: render only the K-th of N shares of the batch (item i when i mod N = K-1), e.g.\n"
-                     "--shard $((SLURM_ARRAY_TASK_ID+1))/$SLURM_ARRAY_TASK_COUNT in a Slurm job array");
+                     "K/N: render only the K-th of N shares of the batch (item i when i mod N = K-1), e.g. 3/8.\n"
+                     "auto: this job array task's share, from its scheduler's variables: Slurm, Grid Engine,\n"
+                     "LSF, AWS Batch; PBS Pro, Torque and Kubernetes Indexed Jobs with HSB_SHARD_COUNT (the\n"
+                     "number of tasks), HSB_SHARD_FIRST (the first index: default 0, 1 for LSF) and\n"
+                     "HSB_SHARD_STEP (default 1); anything else (HTCondor) with HSB_SHARD_INDEX (from 0) and\n"
+                     "HSB_SHARD_COUNT. An index list (--array=1,3,7) is refused: use a range (--array=A-B:S)");
 
   CLI::App* info = app.add_subcommand(
       "info",
@@ -378,7 +384,15 @@ int run(int argc, char** argv) {
   hsb::Shard shard;
   std::optional<hsb::Batch> batch;
   try {
-    if (!shard_text.empty()) shard = hsb::parse_shard(shard_text);
+    if (shard_text == "auto") {
+      // A log that says which share a task took is the one place a
+      // scheduler's numbering that went wrong shows.
+      const hsb::SchedulerShare share = hsb::scheduler_share_of_process();
+      shard = share.shard;
+      if (!quiet) std::fprintf(stderr, "hsb: %s\n", share.origin.c_str());
+    } else if (!shard_text.empty()) {
+      shard = hsb::parse_shard(shard_text);
+    }
     batch.emplace(scenes, overrides, as_series);
   } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "hsb: %s\n", e.what());
@@ -390,6 +404,13 @@ int run(int argc, char** argv) {
     return item.variant.empty() ? item.scene : item.scene + " [" + item.variant + "]";
   };
   const std::size_t mine = batch->shard_size(shard);
+  // More tasks than images leaves some shares empty: no failure, but a
+  // log with nothing in it reads as one (even with --quiet).
+  if (mine == 0) {
+    std::fprintf(stderr, "hsb: share %d/%d of %zu %s holds none: nothing to render\n", shard.index, shard.count,
+                 batch->size(), batch->size() == 1 ? "item" : "items");
+    return 0;
+  }
   hsb::BatchProgress progress(hsb::BatchProgress::mode_for(quiet), mine);
   std::size_t skipped = 0;
   std::map<std::string, std::string> written;  // image → the scene that wrote it

@@ -49,11 +49,26 @@ diff <(ls "$work"/shard{1,2,3} | grep png | sort) <(ls "$work/whole" | sort) > /
 
 # The Slurm example script, as three array tasks (indices 4-6), is the batch too.
 for task in 4 5 6; do
-  SLURM_ARRAY_TASK_ID=$task SLURM_ARRAY_TASK_MIN=4 SLURM_ARRAY_TASK_COUNT=3 SLURM_CPUS_PER_TASK=1 HSB="$hsb" \
-    HSB_OUT="$work/slurm" HSB_SET="${small[*]} --set render.samples=1,2 --quiet" \
+  SLURM_ARRAY_TASK_ID=$task SLURM_ARRAY_TASK_MIN=4 SLURM_ARRAY_TASK_MAX=6 SLURM_ARRAY_TASK_COUNT=3 SLURM_CPUS_PER_TASK=1 \
+    HSB="$hsb" HSB_OUT="$work/slurm" HSB_SET="${small[*]} --set render.samples=1,2 --quiet" \
     bash "$src/scripts/slurm-render.sbatch" "${batch[@]}" || fail "slurm task $task"
 done
 diff <(ls "$work/slurm" | sort) <(ls "$work/whole" | sort) > /dev/null || fail "the Slurm tasks rendered: $(ls "$work/slurm")"
+# With a step (--array=0-6:2: tasks 0, 2, 4, 6), the same batch, nothing twice.
+for task in 0 2 4 6; do
+  SLURM_ARRAY_TASK_ID=$task SLURM_ARRAY_TASK_MIN=0 SLURM_ARRAY_TASK_MAX=6 SLURM_ARRAY_TASK_STEP=2 \
+    SLURM_ARRAY_TASK_COUNT=4 SLURM_CPUS_PER_TASK=1 HSB="$hsb" HSB_OUT="$work/stepped" \
+    HSB_SET="${small[*]} --set render.samples=1,2 --quiet" \
+    bash "$src/scripts/slurm-render.sbatch" "${batch[@]}" || fail "stepped slurm task $task"
+done
+diff <(ls "$work/stepped" | sort) <(ls "$work/whole" | sort) > /dev/null || fail "the stepped tasks rendered: $(ls "$work/stepped")"
+# An index list (--array=1,3,7) cannot say a task's rank: refused, nothing rendered.
+SLURM_ARRAY_TASK_ID=3 SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_MAX=7 SLURM_ARRAY_TASK_COUNT=3 SLURM_CPUS_PER_TASK=1 \
+  HSB="$hsb" HSB_OUT="$work/listed" HSB_SET="${small[*]} --quiet" \
+  bash "$src/scripts/slurm-render.sbatch" "${batch[@]}" 2> "$work/err"
+[[ $? -eq 2 ]] || fail "an index list's task: exit $?"
+grep -q "an index list" "$work/err" || fail "an index list's task said: $(cat "$work/err")"
+[[ -z $(ls -A "$work/listed" 2>/dev/null) ]] || fail "an index list's task rendered: $(ls "$work/listed")"
 
 # --- --skip-existing: unchanged scenes are skipped, a changed value or data file is not.
 cp "$src/scenes/data/generated/beam_bending.vtu" "$work/beam.vtu"

@@ -50,7 +50,7 @@ TEST(Batch, ASceneSweepTableAddsItsKeys) {
   std::map<std::string, int> seen;
   for (const BatchItem& item : items) ++seen[item.variant];
   EXPECT_EQ(seen.size(), 8u);  // each combination once
-  EXPECT_EQ(items[0].variant, "render.samples=1,glyphs.spacing=0.1,color.map='viridis'");
+  EXPECT_EQ(items[0].variant, "render.samples=1,glyphs.spacing=0.1,color.map=viridis");
   // An unreadable scene is one item: its error comes when it renders.
   std::ofstream(dir / "broken.toml") << "[glyphs\n";
   EXPECT_EQ(expand_batch({(dir / "broken.toml").string()}, {}).size(), 1u);
@@ -156,6 +156,31 @@ TEST(Batch, ASweptValuesErrorNamesItsPlaceInTheScene) {
             scene + ":2:26: in [sweep], glyphs.spacing must be > 0, got -1");
   // A --set sweep's value is the user's own --set.
   EXPECT_EQ(located_error(item, "--set render.samples=1: oops"), "--set render.samples=1: oops");
+}
+
+// A [sweep] table's strings and --set's bare words name an image alike:
+// the table's 'magma' once named it color.map=_magma_ where --set named
+// it color.map=magma.
+TEST(Batch, ASweepTableAndASetSweepNameImagesAlike) {
+  const auto dir = test_temp_dir("batch_test");
+  const std::string swept = (dir / "swept_maps.toml").string(), plain = (dir / "plain_maps.toml").string();
+  std::ofstream(swept) << "[sweep]\n\"color.map\" = [\"magma\", 'viridis']\n";
+  std::ofstream(plain) << "[glyphs]\nscale = 0.2\n";
+  const auto from_table = expand_batch({swept}, {});
+  const auto from_set = expand_batch({plain}, {"color.map=magma,viridis"});
+  const auto from_quoted_set = expand_batch({plain}, {"color.map=\"magma\",'viridis'"});
+  ASSERT_EQ(from_table.size(), 2u);
+  ASSERT_EQ(from_set.size(), 2u);
+  ASSERT_EQ(from_quoted_set.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(from_table[i].variant, from_set[i].variant);
+    EXPECT_EQ(from_quoted_set[i].variant, from_set[i].variant);
+    EXPECT_EQ(file_for_variant("fig.png", from_table[i].variant), file_for_variant("fig.png", from_set[i].variant));
+  }
+  EXPECT_EQ(from_table[0].variant, "color.map=magma");
+  EXPECT_EQ(file_for_variant("fig.png", from_table[1].variant), "fig_color.map=viridis.png");
+  // What renders is still the TOML the table gave; only the name changed.
+  EXPECT_EQ(from_table[0].overrides, (std::vector<std::string>{"color.map='magma'"}));
 }
 
 TEST(Batch, FileNamesSayTheSweptValues) {
