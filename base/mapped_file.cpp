@@ -1,28 +1,24 @@
 #include "base/mapped_file.h"
 
-#include <fcntl.h>
 #include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include <utility>
+
+#include "base/input_file.h"
 
 namespace hsb {
 
 MappedFile::MappedFile(const std::string& path) {
-  const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return;
-  struct stat status {};
-  if (fstat(fd, &status) == 0 && S_ISREG(status.st_mode) && status.st_size > 0) {
-    // Populated at once: one call maps the cached pages, where touching
-    // them would take a fault each few.
-    void* mapped = mmap(nullptr, std::size_t(status.st_size), PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
-    if (mapped != MAP_FAILED) {
-      data_ = static_cast<const unsigned char*>(mapped);
-      size_ = std::size_t(status.st_size);
-    }
+  // Opened as every input is: a FIFO or a device is never opened to wait.
+  const InputFile file(path);
+  if (file.descriptor() < 0 || file.size() == 0) return;
+  // Populated at once: one call maps the cached pages, where touching
+  // them would take a fault each few.
+  void* mapped = mmap(nullptr, std::size_t(file.size()), PROT_READ, MAP_PRIVATE | MAP_POPULATE, file.descriptor(), 0);
+  if (mapped != MAP_FAILED) {
+    data_ = static_cast<const unsigned char*>(mapped);
+    size_ = std::size_t(file.size());  // kept when `file` closes its descriptor
   }
-  close(fd);  // the mapping keeps the file
 }
 
 MappedFile::~MappedFile() {

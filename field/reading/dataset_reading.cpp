@@ -184,12 +184,24 @@ void check_volume(vtkDataSet* data, const std::string& path) {
   throw DataError(message.str());
 }
 
+// Every file the data file names (pieces, blocks, a detached header's
+// data), asked before any reader opens one: a FIFO would keep the reader
+// waiting for a writer for ever, a device would never end. One that is
+// missing is left to the reader, which says where the data file names it.
+void check_named_files(const std::string& path, const FormatReader& reader) {
+  if (!reader.parts) return;
+  for (const std::string& part : reader.parts(path))
+    if (const std::string why = unreadable_input(part); !why.empty() && why != "no such file")
+      throw DataError(path + ": names " + part + ": " + why);
+}
+
 // The file read by its format's reader, checked and made whole: what runs
 // in the child.
 vtkSmartPointer<vtkDataSet> read_checked(const std::string& path, const FormatReader& reader,
                                          const ReadRequest& request, const VtkSession& vtk) {
   // A file of another known format under this one's name is said as what it is.
   if (const std::string other = unreadable_format_message(path); !other.empty()) throw DataError(other);
+  check_named_files(path, reader);
   vtkSmartPointer<vtkDataSet> data = reader.read(path, request, vtk);
   check_cells(data, path);
   if (reader.joins_pieces) data = joined(vtkUnstructuredGrid::SafeDownCast(data));
@@ -221,21 +233,30 @@ void refuse_failed_child(const ChildResult& child, const std::string& path, cons
 
 // Runs `work` on the user's file `path` in a child process: a crash or a
 // hang there is one DataError naming `what` ran, and so is an exception
-// `work` throws (its message, passed back through a file). `work` leaves
-// its result in files of its own.
+// `work` throws (its message, passed back through a scratch file). `work`
+// leaves its result in scratch files of its own. Scratch files are made
+// empty, in a folder no one else can write in: what is read back from
+// one is what the child wrote, and an empty one means it wrote nothing.
 void run_on_file_in_child(const std::string& path, const char* what, const std::function<void()>& work) {
-  const PartialFile failure(scratch_path("failure", ".txt"));
+  const ScratchFile failure("failure", ".txt");
   const ChildResult child = run_in_child(
       [&] {
         try {
           work();
+        } catch (const std::bad_alloc&) {
+          // A reader that meets a count larger than memory with a bare
+          // std::bad_alloc (the VTK readers' own are said in vtk_session.h).
+          std::ofstream(failure.path()) << path << ": it declares more than memory holds (the " << what
+                                        << " could not allocate what its sizes ask for)";
         } catch (const std::exception& e) {
-          std::ofstream(failure.path()) << e.what();
+          const std::string message = e.what();
+          std::ofstream(failure.path()) << (message.empty() ? path + ": " + what + " failed" : message);
         }
       },
       child_seconds(path));
   refuse_failed_child(child, path, what);
-  if (std::ifstream said{failure.path()}) {
+  if (failure.written()) {
+    std::ifstream said(failure.path());
     std::stringstream text;
     text << said.rdbuf();
     throw DataError(text.str());
@@ -250,7 +271,7 @@ void run_on_file_in_child(const std::string& path, const char* what, const std::
 // plain VTK XML file of VTK's own making, which this process then reads.
 vtkSmartPointer<vtkDataSet> read_in_child(const std::string& path, const FormatReader& reader,
                                           const ReadRequest& request, const VtkSession& vtk) {
-  const PartialFile clean(scratch_path("read", ".vtkxml"));
+  const ScratchFile clean("read", ".vtkxml");
   run_on_file_in_child(path, "reader", [&] {
     const vtkSmartPointer<vtkDataSet> data = read_checked(path, reader, request, vtk);
     auto writer = vtkSmartPointer<vtkXMLDataSetWriter>::New();
@@ -272,17 +293,22 @@ vtkSmartPointer<vtkDataSet> read_in_child(const std::string& path, const FormatR
 }
 
 // What `hook` says of the user's file `path`, worked out in a child
-// process like every parse of it, one line an answer.
+// process like every parse of it, one line an answer. The child writes how
+// many lines first: an answer of none is told from no answer.
 std::vector<std::string> lines_in_child(const std::string& path, const std::function<std::vector<std::string>()>& hook) {
-  const PartialFile said(scratch_path("said", ".txt"));
+  const ScratchFile said("said", ".txt");
   run_on_file_in_child(path, "reader", [&] {
+    const std::vector<std::string> lines = hook();
     std::ofstream out(said.path());
-    for (const std::string& line : hook()) out << line << "\n";
+    out << lines.size() << "\n";
+    for (const std::string& line : lines) out << line << "\n";
   });
   std::ifstream in(said.path());
-  if (!in) return hook();  // no child to be had
+  std::size_t count = 0;
+  if (!said.written() || !(in >> count) || in.get() != '\n') return hook();  // no child to be had
   std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  for (std::string line; lines.size() < count && std::getline(in, line);) lines.push_back(line);
+  if (lines.size() < count) return hook();  // the child could not write it all
   return lines;
 }
 

@@ -38,7 +38,8 @@ struct FormatReader {
   // A series only: the file holding step `step` (-1: the first).
   std::string (*step_file)(const std::string& path, int step) = nullptr;
   // The other files the data is made of (pieces, blocks, a detached data
-  // file), for --skip-existing's hashing; null: none.
+  // file): each asked before the data is read (none may be a FIFO or a
+  // device), and hashed for --skip-existing; null: none.
   std::vector<std::string> (*parts)(const std::string& path) = nullptr;
   // The times of its steps in order, none for data of one step; null: the
   // format has no steps.

@@ -90,7 +90,7 @@ vtkSmartPointer<vtkDataSet> as_data_set(vtkDataObject* read) { return vtkDataSet
 
 vtkSmartPointer<vtkDataSet> read_legacy(const std::string& path, const ReadRequest&, const VtkSession& vtk) {
   check_legacy_header(path);
-  const PartialFile renamed(scratch_path("types", ".vtk"));
+  const ScratchFile renamed("types", ".vtk");
   auto reader = vtkSmartPointer<vtkDataSetReader>::New();
   reader->SetFileName(with_known_type_names(path, renamed.path()) ? renamed.path().c_str() : path.c_str());
   reader->ReadAllTensorsOn();

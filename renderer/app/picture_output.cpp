@@ -1,12 +1,16 @@
 #include "renderer/app/picture_output.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
+#include <stdexcept>
+#include <vector>
 
+#include "base/input_file.h"
 #include "base/sha1.h"
+#include "field/reading/data_error.h"
 #include "field/reading/vtk_data.h"
 #include "renderer/image/display_image.h"
 #include "renderer/image/image_output.h"
@@ -19,17 +23,43 @@
 namespace hsb {
 namespace {
 
-// The SHA-1 of a file's bytes; "" when there is no file.
-std::string file_sha1(const std::string& path) {
-  if (path.empty()) return "";
-  std::ifstream in(path, std::ios::binary);
+// The SHA-1 of `file`'s bytes, as many as it had when opened: a file that
+// grows meanwhile is hashed as it was, never without end.
+std::string sha1_of(const InputFile& file) {
   Sha1 hash;
   std::vector<char> buffer(1 << 20);
-  while (in) {
-    in.read(buffer.data(), std::streamsize(buffer.size()));
-    hash.append(buffer.data(), std::size_t(in.gcount()));
+  for (std::uint64_t at = 0; at < file.size();) {
+    const std::size_t n = file.read(at, buffer.data(), buffer.size());
+    if (n == 0) break;  // cut short meanwhile
+    hash.append(buffer.data(), n);
+    at += n;
   }
   return hash.hex();
+}
+
+// Why `file`, named as `named`, is not hashed: hashing a FIFO would wait
+// for a writer for ever, a device (/dev/zero) would never end. "" for a
+// file hsb reads, and for one that is not there, which hashes as empty
+// (its reading says where it is missing).
+std::string unhashed(const InputFile& file, const std::string& named) {
+  return file.why().empty() || file.why() == "no such file" ? "" : named + ": " + file.why();
+}
+
+// The SHA-1 of the file at `path`; "" when there is no file.
+std::string file_sha1(const std::string& path) {
+  if (path.empty()) return "";
+  const InputFile file(path);
+  if (const std::string why = unhashed(file, path); !why.empty()) throw std::runtime_error(why);
+  return sha1_of(file);
+}
+
+// The SHA-1 of `path`, the data file `data` or a file it names, said as
+// reading the data would say it.
+std::string data_file_sha1(const std::string& data, const std::string& path) {
+  const InputFile file(path);
+  if (const std::string why = unhashed(file, path == data ? data : data + ": names " + path); !why.empty())
+    throw DataError(why);
+  return sha1_of(file);
 }
 
 // The scene's text and overrides.
@@ -52,9 +82,9 @@ std::string data_sha1(const SceneSpec& spec) {
   const std::string data = data_file_of(spec);
   if (spec.pipeline.data.kind != DataKind::vtk_file) return file_sha1(data);
   const std::vector<std::string> files = data_files_read(data, spec.pipeline.data.file.step);
-  if (files.size() == 1) return file_sha1(files.front());
+  if (files.size() == 1) return data_file_sha1(data, files.front());
   std::string hashes;
-  for (const std::string& file : files) hashes += file_sha1(file) + "\n";
+  for (const std::string& file : files) hashes += data_file_sha1(data, file) + "\n";
   return sha1_hex(hashes);
 }
 
@@ -62,9 +92,14 @@ std::string data_sha1(const SceneSpec& spec) {
 // else $OCIO, else the built-in one (the same in every build).
 std::string color_config_sha1(const SceneSpec& spec) {
   const char* environment = std::getenv("OCIO");
-  const std::string file = !spec.output.ocio_config.empty() ? spec.output.ocio_config
-                                                            : (environment && *environment ? environment : "");
-  return file.empty() ? "built-in" : file_sha1(file);
+  const bool from_scene = !spec.output.ocio_config.empty();
+  const std::string file = from_scene ? spec.output.ocio_config : (environment && *environment ? environment : "");
+  if (file.empty()) return "built-in";
+  const InputFile config(file);
+  if (!config.why().empty())
+    throw std::runtime_error(std::string(from_scene ? "output.ocio_config" : "$OCIO") + " names " + file + ": " +
+                             config.why());
+  return sha1_of(config);
 }
 
 // The scene hash from the data file's, so the file is read once. With the

@@ -1,8 +1,10 @@
 #include "renderer/app/povray_export.h"
 
 #include <cmath>
-#include <fstream>
+#include <sstream>
 #include <stdexcept>
+
+#include "base/partial_file.h"
 
 namespace hsb {
 namespace {
@@ -34,8 +36,10 @@ void write_povray_scene(const BlobField& field, const CameraSpec& camera, const 
     throw std::invalid_argument(
         "POV-Ray's blob components are ellipsoids: set glyphs.shape = \"ellipsoid\" to export this scene "
         "(a superquadric has no blob equivalent)");
-  std::ofstream pov(pov_path);
-  if (!pov) throw std::runtime_error(pov_path + ": cannot write");
+  // Both files are made in memory and written through PartialFile, like
+  // every file hsb writes: a full disk or a signal leaves neither behind,
+  // nor half of one.
+  std::ostringstream pov;
   pov.precision(9);
   const double aspect = double(render.width) / double(render.height);
   const double half_v = std::tan(0.5 * camera.fov_degrees * M_PI / 180.0);
@@ -86,15 +90,18 @@ void write_povray_scene(const BlobField& field, const CameraSpec& camera, const 
     }
     pov << "}\n";
   }
-  if (!pov) throw std::runtime_error(pov_path + ": write failed");
-
-  std::ofstream ini(ini_path);
+  std::ostringstream ini;
   ini << "; Render with: povray " << ini_path << "  (add +WT2 for two threads)\n"
       << "Input_File_Name=" << pov_path << "\nOutput_File_Name=" << image_path
       << "\nWidth=" << render.width << "\nHeight=" << render.height
       << "\nAntialias=Off\nDisplay=Off\nOutput_File_Type=N\nFile_Gamma=sRGB\nDisplay_Gamma=sRGB\n"
       << "Verbose=Off\n";
-  if (!ini) throw std::runtime_error(ini_path + ": write failed");
+  PartialFile pov_file(pov_path), ini_file(ini_path);
+  const std::string pov_text = pov.str(), ini_text = ini.str();
+  pov_file.write(pov_text.data(), pov_text.size());
+  ini_file.write(ini_text.data(), ini_text.size());
+  pov_file.commit();
+  ini_file.commit();
 }
 
 }  // namespace hsb

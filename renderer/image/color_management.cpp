@@ -5,7 +5,9 @@
 
 #include <cstdlib>
 #include <sstream>
+#include <stdexcept>
 
+#include "base/input_file.h"
 #include "renderer/image/pixel_rows.h"
 
 namespace OCIO = OCIO_NAMESPACE;
@@ -14,14 +16,19 @@ namespace hsb {
 namespace {
 
 // `file` if given, else $OCIO if set, else the built-in config; `name`
-// says which.
+// says which. A file is asked first whether it is one to read: OCIO
+// would open a FIFO and wait for a writer for ever.
 OCIO::ConstConfigRcPtr load_config(const std::string& file, std::string& name) {
   if (!file.empty()) {
+    if (const std::string why = unreadable_input(file); !why.empty())
+      throw std::runtime_error("output.ocio_config names " + file + ": " + why);
     name = file;
     return OCIO::Config::CreateFromFile(file.c_str());
   }
   const char* env = std::getenv("OCIO");
   if (env && *env) {
+    if (const std::string why = unreadable_input(env); !why.empty())
+      throw std::runtime_error(std::string("$OCIO names ") + env + ": " + why);
     name = env;
     return OCIO::Config::CreateFromEnv();
   }

@@ -1,13 +1,11 @@
 #include "renderer/image/image_output.h"
 
 #include "base/file_extension.h"
+#include "base/input_file.h"
 #include "base/partial_file.h"
 #include "renderer/image/image_io_module.h"
 #include "renderer/image/raster_stream.h"
 
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -25,24 +23,53 @@ bool is_vector_format(const std::string& path) {
   return ext == ".pdf" || ext == ".svg";
 }
 
-std::string stored_scene_sha1(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path)) return "";
-  if (!is_vector_format(path)) return image_io().stored_sha1(path);
-  // Both vector formats keep it in plain text: "hsb:scene_sha1=HEX" in a
-  // PDF's uncompressed document information, key="hsb:scene_sha1">HEX in an SVG.
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  const std::string s = text.str();
+namespace {
+
+// How much of a figure is read for its hash, at either end: cairo writes a
+// PDF's document information (the hash in its Keywords) last, before the
+// cross-reference table; hsb puts an SVG's metadata first, after the
+// <svg> tag, where a scene's texts come to 64 kB each, escaped at most
+// sixfold (picture_output.cpp). The pictures in between, however large,
+// are not read.
+constexpr std::size_t kFigureEndBytes = 1 << 20;
+
+std::string stored_figure_sha1(const std::string& path) {
+  const bool pdf = lower_extension(path) == ".pdf";
   // Complete only with its ending: a PDF's last %%EOF, an SVG's </svg>.
-  const std::string ending = lower_extension(path) == ".pdf" ? "%%EOF" : "</svg>";
-  const std::size_t end = s.rfind(ending);
-  if (end == std::string::npos || s.find_first_not_of(" \r\n", end + ending.size()) != std::string::npos) return "";
-  for (const std::string marker : {"hsb:scene_sha1=", "key=\"hsb:scene_sha1\">"}) {
-    const std::size_t at = s.find(marker);
-    if (at != std::string::npos && at + marker.size() + 40 <= s.size()) return s.substr(at + marker.size(), 40);
-  }
-  return "";
+  const std::string tail = file_tail(path, kFigureEndBytes);
+  const std::string ending = pdf ? "%%EOF" : "</svg>";
+  const std::size_t end = tail.rfind(ending);
+  if (end == std::string::npos || tail.find_first_not_of(" \r\n", end + ending.size()) != std::string::npos) return "";
+  // "hsb:scene_sha1=HEX" in a PDF's Keywords, the last of the document
+  // information's texts (a scene's text before it in the Subject may spell
+  // the same); key="hsb:scene_sha1">HEX in an SVG's <metadata>.
+  const std::string text = pdf ? tail : file_head(path, kFigureEndBytes);
+  const std::string marker = pdf ? "hsb:scene_sha1=" : "key=\"hsb:scene_sha1\">";
+  const std::size_t at = pdf ? text.rfind(marker) : text.find(marker);
+  if (at == std::string::npos || at + marker.size() + 40 > text.size()) return "";
+  return text.substr(at + marker.size(), 40);
+}
+
+// Whether `head` begins as a file of the raster format `extension` does:
+// only then is the file handed to OpenImageIO, whose readers would each be
+// tried on it in turn, and one of which may take it for an image of its
+// own format (a PNM header under a .png name declared 65535² pixels, and
+// a run spent 17 GB and 40 s decoding them).
+bool has_signature(const std::string& head, const std::string& extension) {
+  const auto starts = [&](const char* bytes, std::size_t n) { return head.compare(0, n, bytes, n) == 0; };
+  if (extension == ".png") return starts("\x89PNG\r\n\x1a\n", 8);
+  if (extension == ".exr") return starts("\x76\x2f\x31\x01", 4);
+  // TIFF, either byte order, classic or BigTIFF.
+  return starts("II*\0", 4) || starts("MM\0*", 4) || starts("II+\0", 4) || starts("MM\0+", 4);
+}
+
+}  // namespace
+
+std::string stored_scene_sha1(const std::string& path) {
+  if (!unreadable_input(path).empty()) return "";
+  if (is_vector_format(path)) return stored_figure_sha1(path);
+  if (!has_signature(file_head(path, 8), lower_extension(path))) return "";
+  return image_io().stored_sha1(path);
 }
 
 void write_image(const ImageToWrite& image, const std::string& path) {

@@ -35,8 +35,11 @@ bool is_scene_linear_format(const std::string& path);
 bool is_vector_format(const std::string& path);
 
 // The scene hash (hsb:scene_sha1) stored in an image this program wrote:
-// from the metadata of a PNG, TIFF or EXR, from a PDF's keywords or an
-// SVG's <metadata>. "" when the file is missing, unreadable or holds none.
+// from the metadata of a PNG or EXR (a TIFF keeps none), from a PDF's
+// keywords or an SVG's <metadata>. "" when the file is missing, unreadable
+// or holds none. Reads only what that needs, whatever the file: a figure's
+// two ends, and a raster image only when its first bytes are those of the
+// format its name says, decoded a band of rows at a time.
 std::string stored_scene_sha1(const std::string& path);
 
 }  // namespace hsb

@@ -5,6 +5,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <cctype>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -108,14 +109,33 @@ void discard_rows(RowEncoder* encoder) {
 }
 
 std::string stored_sha1(const std::string& path) {
+  // Opened by the reader of the format its name says (image_output.cpp
+  // has checked its signature), never by every other reader OIIO has in
+  // turn: create() given a format's name makes that reader and opens
+  // nothing.
+  std::string format = OIIO::Filesystem::extension(path, false);
+  std::transform(format.begin(), format.end(), format.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  auto in = OIIO::ImageInput::create(format);
+  OIIO::ImageSpec spec;
+  if (!in || !in->open(path, spec)) return "";
+  // No image of hsb's is larger (render.width and render.height, at most
+  // 16384) or holds more channels (an EXR's planes) than this: a header
+  // that declares more is no image of hsb's.
+  if (spec.width <= 0 || spec.height <= 0 || spec.width > 16384 || spec.height > 16384 || spec.depth > 1 ||
+      spec.nchannels <= 0 || spec.nchannels > 64)
+    return "";
+  const std::string hash = spec.get_string_attribute("hsb:scene_sha1");
+  if (hash.empty()) return "";
   // Decoded whole, not only its header: a file cut short (a disk that
   // filled, a copy interrupted) holds the right hash and a broken
-  // picture, and must be rendered again.
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) return "";
-  const std::string hash = in->spec().get_string_attribute("hsb:scene_sha1");
-  std::vector<float> pixels(in->spec().image_pixels() * std::size_t(in->spec().nchannels));
-  if (!in->read_image(0, 0, 0, in->spec().nchannels, OIIO::TypeDesc::FLOAT, pixels.data())) return "";
+  // picture, and must be rendered again. A band of rows at a time, into
+  // memory of a band's size.
+  constexpr int kBand = 64;
+  std::vector<float> band(std::size_t(spec.width) * std::size_t(spec.nchannels) * kBand);
+  for (int y = spec.y; y < spec.y + spec.height; y += kBand)
+    if (!in->read_scanlines(0, 0, y, std::min(y + kBand, spec.y + spec.height), 0, 0, spec.nchannels,
+                            OIIO::TypeDesc::FLOAT, band.data()))
+      return "";
   return hash;
 }
 

@@ -1,11 +1,16 @@
 // A file mapped read-only (mapped_file.h): its bytes as written, nothing
-// for what cannot be mapped (no file, a directory, an empty file), and a
-// mapping that moves with its owner.
+// for what cannot be mapped (no file, a directory, an empty file, a FIFO,
+// a device), and a mapping that moves with its owner.
 
 #include <gtest/gtest.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <string>
 
 #include "base/mapped_file.h"
@@ -34,6 +39,23 @@ TEST(MappedFile, IsEmptyWhereThereIsNothingToMap) {
     EXPECT_EQ(mapped.size(), 0u) << path;
     EXPECT_EQ(mapped.data(), nullptr) << path;
   }
+}
+
+// A FIFO (a NRRD's detached data file may name one) is never opened to
+// wait for a writer: nothing to map, at once. Should the mapping wait,
+// a writer comes after a few seconds to release it, and the test fails.
+TEST(MappedFile, IsEmptyAtOnceForAFifoOrADevice) {
+  const std::filesystem::path fifo = scratch() / "fifo.raw";
+  std::filesystem::remove(fifo);
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  auto mapped = std::async(std::launch::async, [&] { return MappedFile(fifo.string()).size(); });
+  if (mapped.wait_for(std::chrono::seconds(10)) == std::future_status::timeout) {
+    ADD_FAILURE() << "waited for a writer on " << fifo;
+    const int fd = open(fifo.c_str(), O_WRONLY | O_NONBLOCK);
+    if (fd >= 0) close(fd);
+  }
+  EXPECT_EQ(mapped.get(), 0u);
+  EXPECT_EQ(MappedFile("/dev/zero").size(), 0u);
 }
 
 TEST(MappedFile, MovesWithItsOwner) {

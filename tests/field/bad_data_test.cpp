@@ -4,11 +4,15 @@
 // test breaks exactly one thing.
 
 #include <gtest/gtest.h>
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <future>
 #include <random>
 #include <sstream>
 
@@ -246,6 +250,115 @@ TEST_F(BadData, AFileItMayNotReadIsSaidSo) {
   fs::permissions(locked, fs::perms::none);
   EXPECT_EQ(error_of(locked), locked.string() + ": cannot be read: Permission denied");
   fs::permissions(locked, fs::perms::owner_all);
+}
+
+// What error_of(path) says, which must not wait on the FIFO `fifo`: after
+// a few seconds a writer opens it, which releases a reader waiting there,
+// and the test fails.
+std::string error_without_waiting(const fs::path& path, const fs::path& fifo) {
+  auto said = std::async(std::launch::async, [&] {
+    try {
+      load_vtk_data({path.string()});
+    } catch (const DataError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  });
+  if (said.wait_for(std::chrono::seconds(10)) == std::future_status::timeout) {
+    ADD_FAILURE() << "waited for a writer on " << fifo;
+    const int fd = open(fifo.c_str(), O_WRONLY | O_NONBLOCK);
+    if (fd >= 0) close(fd);
+  }
+  return said.get();
+}
+
+// A FIFO where a data file names its data (a detached NRRD header's "data
+// file:", a parallel file's piece) would keep its reader waiting for a
+// writer for ever, and a render, an info or a whole batch with it: one
+// DataError naming it instead, at once. A device is refused alike.
+TEST_F(BadData, AFifoNamedAsTheDataIsRefusedAtOnce) {
+  const fs::path dir = test_temp_dir("bad_data");
+  const fs::path fifo = dir / "fifo.raw";
+  fs::remove(fifo);
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  std::ifstream shipped(std::string(HSB_SOURCE_DIR) + "/scenes/data/formats/teem_helix_detached.nhdr");
+  std::string header;
+  for (std::string line; std::getline(shipped, line);)
+    header += (line.rfind("data file:", 0) == 0 ? "data file: fifo.raw" : line) + "\n";
+  const fs::path nhdr = write("fifo.nhdr", header);
+  EXPECT_EQ(error_without_waiting(nhdr, fifo),
+            nhdr.string() + ": names " + fifo.string() + ": not a regular file (a FIFO, socket or device)");
+  const std::string zero = header.substr(0, header.find("data file:")) + "data file: /dev/zero\n";
+  const fs::path devices = write("zero.nhdr", zero);
+  EXPECT_EQ(error_of(devices), devices.string() + ": names /dev/zero: not a regular file (a FIFO, socket or device)");
+
+  const fs::path piece = dir / "fifo.vtu";
+  fs::remove(piece);
+  ASSERT_EQ(mkfifo(piece.c_str(), 0600), 0);
+  write("good.vtu", tetrahedron_vtu("0 0 0 1 0 0 0 1 0 0 0 1", true));
+  const fs::path pvtu = write("fifo.pvtu",
+                              "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" version=\"0.1\">\n"
+                              "<PUnstructuredGrid GhostLevel=\"0\">\n<PPointData Tensors=\"stress\">"
+                              "<PDataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"6\"/></PPointData>\n"
+                              "<PPoints><PDataArray type=\"Float64\" NumberOfComponents=\"3\"/></PPoints>\n"
+                              "<Piece Source=\"good.vtu\"/>\n<Piece Source=\"fifo.vtu\"/>\n"
+                              "</PUnstructuredGrid>\n</VTKFile>\n");
+  EXPECT_EQ(error_without_waiting(pvtu, piece),
+            pvtu.string() + ": names " + piece.string() + ": not a regular file (a FIFO, socket or device)");
+}
+
+// The reading child hands its result and its messages back through
+// scratch files. They were at names anyone could foresee in the shared
+// temporary folder ($TMPDIR/.hsb-WHAT-PID.partial-HOST-PID.EXT), and the
+// parent read back whatever was there: another user's planted message was
+// this file's error (terminal escape codes and all), a link made the child
+// write through it, and what the child could not overwrite was read as the
+// user's data. Now they are in a folder of the process's own, and nothing
+// planted at the old names is read or written.
+TEST_F(BadData, WhatIsPlantedAtTheOldScratchNamesIsNeverReadNorWrittenThrough) {
+  char name[256] = {};
+  std::string host = gethostname(name, sizeof name - 1) == 0 && name[0] ? name : "host";
+  for (char& c : host)
+    if (c == '/' || c == '.') c = '_';
+  const std::string pid = std::to_string(getpid());
+  const fs::path temp = fs::temp_directory_path();
+  const auto old_name = [&](const std::string& what, const std::string& extension) {
+    return temp / (".hsb-" + what + "-" + pid + ".partial-" + host + "-" + pid + extension);
+  };
+  const fs::path failure = old_name("failure", ".txt"), read = old_name("read", ".vtkxml");
+  std::ofstream(failure) << "planted: \x1b[2J\x1b[31mthis file is corrupt";
+  const fs::path victim = test_temp_dir("bad_data") / "victim.txt";
+  std::ofstream(victim) << "the victim's";
+  fs::remove_all(read);
+  fs::create_symlink(victim, read);
+  const fs::path planted_folder = old_name("read", ".folder");
+  fs::create_directories(planted_folder / "inside");
+
+  VtkFileSpec spec;
+  spec.path = write("good_planted.vtk", LegacyGrid().text()).string();
+  spec.sites = true;
+  std::string error;
+  try {
+    const VtkData data = load_vtk_data(spec);
+    ASSERT_FALSE(data.sites.positions.empty());
+    for (std::size_t i = 0; i < data.sites.positions.size(); ++i) EXPECT_LE(data.sites.positions[i].maxCoeff(), 1.0);
+  } catch (const DataError& e) {
+    error = e.what();
+  }
+  EXPECT_EQ(error, "");
+  std::ifstream in(victim);
+  const std::string victims = std::string(std::istreambuf_iterator<char>(in), {});
+  EXPECT_TRUE(victims == "the victim's") << "written through the link: " << victims.size() << " bytes";
+  // What the child could not overwrite (here a folder) was read back.
+  fs::remove(read);
+  fs::rename(planted_folder, read);
+  try {
+    load_vtk_data(spec);
+  } catch (const DataError& e) {
+    ADD_FAILURE() << e.what();
+  }
+  fs::remove(failure);
+  fs::remove_all(read);
 }
 
 TEST_F(BadData, WrongComponentCount) {

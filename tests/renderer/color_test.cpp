@@ -1,12 +1,17 @@
 // Colour: the built-in OCIO config, the transforms, colormaps and ranges.
 
 #include <gtest/gtest.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <optional>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <sstream>
 
 #include "renderer/image/channel_tables.h"
@@ -134,6 +139,33 @@ TEST_F(Color, AConfigFileWinsOverOcio) {
   const ColorManagement color("", "", raw_first_config());
   unsetenv("OCIO");
   EXPECT_EQ(color.view(), "Raw");
+}
+
+// $OCIO naming a FIFO: OCIO would open it and wait for a writer for ever,
+// and every render of a batch with it. Refused at once, named. (Should
+// it wait, a writer comes after a few seconds to release it, and the test
+// fails.)
+TEST_F(Color, AnOcioThatIsAFifoIsRefusedAtOnce) {
+  const std::filesystem::path fifo = test_temp_dir("color_test") / "fifo.ocio";
+  std::filesystem::remove(fifo);
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  setenv("OCIO", fifo.c_str(), 1);
+  auto said = std::async(std::launch::async, [] {
+    try {
+      const ColorManagement color("", "");
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  });
+  if (said.wait_for(std::chrono::seconds(10)) == std::future_status::timeout) {
+    ADD_FAILURE() << "waited for a writer on " << fifo;
+    const int fd = open(fifo.c_str(), O_WRONLY | O_NONBLOCK);
+    if (fd >= 0) close(fd);
+  }
+  const std::string error = said.get();
+  unsetenv("OCIO");
+  EXPECT_EQ(error, "$OCIO names " + fifo.string() + ": not a regular file (a FIFO, socket or device)");
 }
 
 TEST_F(Color, AFlatColourMakesTheRoundTripExactly) {

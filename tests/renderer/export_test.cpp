@@ -1,6 +1,10 @@
 // hsb export: the sources and trajectories as VTK PolyData, read back.
 
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -164,6 +168,35 @@ TEST(Export, POVRayWritesABlobPerGroup) {
   EXPECT_EQ(blobs_written("one"), 1);
   field.groups = {0, 2};
   EXPECT_EQ(blobs_written("two"), 2);
+}
+
+// A full disk (here a file size limit, its signal ignored as hsb does)
+// while the POV-Ray scene is written: an error, and neither file left
+// behind, where the .pov was left cut short at the limit.
+TEST(Export, POVRayOnAFullDiskLeavesNoFile) {
+  const auto dir = test_temp_dir("export_pov_full", true);
+  BlobField field = blob_pair();
+  field.kernel = KernelKind::quartic;
+  const pid_t child = fork();
+  if (child == 0) {
+    signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{200, 200};  // bytes: the .pov's first lines
+    setrlimit(RLIMIT_FSIZE, &limit);
+    try {
+      write_povray_scene(field, CameraSpec{}, ShadingSpec{}, RenderSettings{}, (dir / "full.pov").string(),
+                         (dir / "full.ini").string(), (dir / "full.png").string());
+    } catch (const std::exception&) {
+      _exit(1);
+    }
+    _exit(0);
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1) << "the write past the limit was not an error";
+  std::string left;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) left += entry.path().filename().string() + " ";
+  EXPECT_EQ(left, "");
 }
 
 }  // namespace

@@ -1,6 +1,9 @@
 // Image files: formats, bit depths, metadata, and never a partial file.
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <OpenImageIO/imageio.h>
 #include <tbb/global_control.h>
@@ -11,6 +14,8 @@
 #include <atomic>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <string>
 
 #include "renderer/image/dither.h"
 #include "renderer/image/image_io_module.h"
@@ -192,6 +197,91 @@ TEST(ImageOutput, FailureLeavesNoFileBehind) {
   EXPECT_THROW(write_image(bad, (dir / "x.png").string()), std::runtime_error);
   EXPECT_THROW(write_image(gradient(4), (dir / "missing-folder" / "x.png").string()), std::runtime_error);
   EXPECT_TRUE(std::filesystem::is_empty(dir));
+}
+
+// --skip-existing asks an old picture for the scene hash it stores
+// (stored_scene_sha1): what hsb wrote says it, whole; cut short, nothing.
+TEST(ImageOutput, TheStoredHashOfAPictureItWrote) {
+  const auto dir = temp_dir() / "stored";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  // (A TIFF keeps no metadata of hsb's: it is always rendered again.)
+  for (const char* name : {"kept.png", "kept.exr"}) {
+    ImageToWrite image = gradient(4);
+    if (std::string(name) == "kept.exr") image.bit_depth = 16;
+    const std::string path = (dir / name).string();
+    write_image(image, path);
+    EXPECT_EQ(stored_scene_sha1(path), "abc123") << name;
+    std::filesystem::resize_file(path, std::filesystem::file_size(path) / 2);
+    EXPECT_EQ(stored_scene_sha1(path), "") << name << " cut short";
+  }
+  EXPECT_EQ(stored_scene_sha1((dir / "absent.png").string()), "");
+}
+
+// Another format under a picture's name is not asked: OpenImageIO would
+// try each of its readers on it in turn, and one takes it (here an EXR
+// that says a hash, named .png).
+TEST(ImageOutput, AnotherFormatUnderAPicturesNameSaysNoHash) {
+  const auto dir = temp_dir() / "disguised";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  ImageToWrite image = gradient(4);
+  image.bit_depth = 16;
+  write_image(image, (dir / "exr.exr").string());
+  std::filesystem::rename(dir / "exr.exr", dir / "exr.png");
+  EXPECT_EQ(stored_scene_sha1((dir / "exr.png").string()), "");
+  std::ofstream(dir / "junk.png") << "not an image at all";
+  EXPECT_EQ(stored_scene_sha1((dir / "junk.png").string()), "");
+}
+
+// A figure's hash is read at its two ends, whatever lies between.
+TEST(ImageOutput, AFiguresHashIsReadAtItsEnds) {
+  const auto dir = temp_dir() / "figures";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string hash(40, 'A'), middle(3 << 20, 'x');
+  std::ofstream(dir / "f.pdf") << "%PDF-1.5\n" << middle << "\n/Subject (hsb:scene_sha1=" << std::string(40, 'B')
+                               << ")\n/Keywords (hsb:scene_sha1=" << hash << "; hsb:data_sha1=)\ntrailer\n%%EOF\n";
+  EXPECT_EQ(stored_scene_sha1((dir / "f.pdf").string()), hash);
+  std::ofstream(dir / "f.pdf", std::ios::app) << "cut here";
+  EXPECT_EQ(stored_scene_sha1((dir / "f.pdf").string()), "");
+  std::ofstream(dir / "f.svg") << "<?xml version=\"1.0\"?>\n<svg width=\"8\">\n<metadata>\n<hsb:entry key=\"hsb:scene_sha1\">"
+                               << hash << "</hsb:entry>\n</metadata>\n" << middle << "\n</svg>\n";
+  EXPECT_EQ(stored_scene_sha1((dir / "f.svg").string()), hash);
+}
+
+// What the old picture is read for is bounded, whatever the file: a 1 GB
+// PDF was read whole into memory, and a PNM header under a .png name (65535²
+// pixels declared) was decoded into 17 GB. Asked in a child process whose
+// address space allows a quarter of a gigabyte more than it has: either
+// failed there for want of memory.
+TEST(ImageOutput, TheStoredHashIsReadWithinABudget) {
+  const auto dir = temp_dir() / "budget";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "huge.pdf").close();
+  std::filesystem::resize_file(dir / "huge.pdf", std::uintmax_t(1) << 30);  // sparse
+  std::ofstream(dir / "huge.png") << "P5\n65535 65535\n255\n";
+  image_io();  // loaded here, not in the child
+  const pid_t child = fork();
+  if (child == 0) {
+    long pages = 0;
+    std::ifstream("/proc/self/statm") >> pages;
+    const rlim_t room = rlim_t(pages) * rlim_t(sysconf(_SC_PAGESIZE)) + (rlim_t(256) << 20);
+    const rlimit limit{room, room};
+    setrlimit(RLIMIT_AS, &limit);
+    try {
+      const bool none = stored_scene_sha1((dir / "huge.pdf").string()).empty() &&
+                        stored_scene_sha1((dir / "huge.png").string()).empty();
+      _exit(none ? 0 : 2);
+    } catch (...) {
+      _exit(3);  // std::bad_alloc
+    }
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status)) << "signal " << WTERMSIG(status);
+  EXPECT_EQ(WEXITSTATUS(status), 0) << (WEXITSTATUS(status) == 3 ? "out of memory" : "a hash from nothing");
 }
 
 }  // namespace

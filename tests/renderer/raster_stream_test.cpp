@@ -109,9 +109,10 @@ TEST(RasterStream, AFailedWriteNamesThePathAndLeavesNoFile) {
   const std::filesystem::path dir = test_temp_dir("raster_stream_failed", true);
   const std::string path = (dir / "missing-folder" / "x.png").string();
   const std::vector<float> band(8 * 4 * 4, 0.5f);
-  RasterStream stream(path, {8, 4, 4, 16, 0.0}, nullptr);
-  stream.write_rows({band.data(), 8, 4, 0, 4, 4});
   try {
+    // Refused where its temporary file is made, before any row.
+    RasterStream stream(path, {8, 4, 4, 16, 0.0}, nullptr);
+    stream.write_rows({band.data(), 8, 4, 0, 4, 4});
     stream.finish();
     FAIL() << "a file in a missing folder was written";
   } catch (const std::runtime_error& e) {
