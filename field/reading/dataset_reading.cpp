@@ -16,11 +16,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iomanip>
 #include <map>
+#include <new>
 #include <sstream>
 
 #include "base/child_process.h"
@@ -223,6 +225,11 @@ double child_seconds(const std::string& path) {
 
 // A crash or a hang of VTK in a child process, as one error naming the file.
 void refuse_failed_child(const ChildResult& child, const std::string& path, const char* what) {
+  // SIGKILL is no crash of VTK's: the kernel's out-of-memory killer (or a
+  // job scheduler, or a user) ended the child; a time-out's own is below.
+  if (child.outcome == ChildOutcome::crashed && child.signal == SIGKILL)
+    throw DataError(path + ": the reading process was killed (out of memory?) while VTK's " + what +
+                    " read it: read it where more memory is free, or check the sizes its header declares");
   if (child.outcome == ChildOutcome::crashed)
     throw DataError(path + ": the file is corrupt: VTK's " + what + " crashed on it" +
                     (child.signal ? " (signal " + std::to_string(child.signal) + ")" : std::string()));
@@ -283,7 +290,7 @@ vtkSmartPointer<vtkDataSet> read_in_child(const std::string& path, const FormatR
     if (!writer->Write()) std::filesystem::remove(clean.path());
   });
   // No child to be had (or it could not write): read it here after all.
-  if (!std::filesystem::exists(clean.path())) return read_checked(path, reader, request, vtk);
+  if (!clean.written()) return read_checked(path, reader, request, vtk);
   auto copy = vtkSmartPointer<vtkXMLGenericDataObjectReader>::New();
   copy->SetFileName(clean.path().c_str());
   copy->Update();

@@ -27,11 +27,13 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 
 #include "base/input_file.h"
 #include "field/reading/block_merging.h"
 #include "field/reading/data_error.h"
 #include "field/reading/format_reader.h"
+#include "field/reading/netcdf_extent.h"
 
 namespace hsb {
 namespace {
@@ -127,7 +129,29 @@ void unglom(vtkDataSetAttributes* attributes, const std::map<std::string, std::v
   }
 }
 
+// Exodus II is netCDF, classic or version 4 (HDF5 inside): a file of random
+// bytes gets a clear message before VTK's reader sees it. A classic file
+// must have the bytes its header declares: the netCDF library reads past
+// the end as zeros, without an error, so a file cut short, or one whose
+// header claims more time steps than it holds, read as a field of zeros.
+// (HDF5 refuses a file cut short itself.)
+void check_exodus_file(const std::string& path) {
+  const std::string head = file_head(path, 8);
+  if (head.rfind("CDF", 0) != 0 && head.rfind("\x89HDF\r\n\x1a\n", 0) != 0)
+    throw DataError(path + ": not an Exodus II file: it is neither netCDF (\"CDF\") nor HDF5 inside");
+  const std::optional<NetcdfExtent> extent = netcdf_classic_extent(path);
+  if (!extent) return;
+  if (extent->records_held < extent->records)
+    throw DataError(path + ": its header declares " + std::to_string(extent->records) + " time steps, but its " +
+                    std::to_string(extent->file_size) + " bytes hold " + std::to_string(extent->records_held) +
+                    " of them whole: the file is cut short (or its header's step count is wrong)");
+  if (extent->file_size < extent->bytes)
+    throw DataError(path + ": the file is cut short: its header declares " + std::to_string(extent->bytes) +
+                    " bytes, the file has " + std::to_string(extent->file_size));
+}
+
 vtkSmartPointer<vtkExodusIIReader> opened_reader(const std::string& path) {
+  check_exodus_file(path);
   auto reader = vtkSmartPointer<vtkExodusIIReader>::New();
   reader->SetFileName(path.c_str());
   if (!reader->CanReadFile(path.c_str())) throw DataError(path + ": not an Exodus II file (netCDF or HDF5) VTK can open");
@@ -137,8 +161,8 @@ vtkSmartPointer<vtkExodusIIReader> opened_reader(const std::string& path) {
 
 // The blocks of the file at time step `step` (−1: the first), each variable
 // its own one-component array. Throws DataError for a file the reader
-// refuses or a step beyond the file's.
-vtkSmartPointer<vtkDataObject> read_exodus(const std::string& path, int step) {
+// refuses (or reports an error for) or a step beyond the file's.
+vtkSmartPointer<vtkDataObject> read_exodus(const std::string& path, int step, const VtkSession& vtk) {
   const vtkSmartPointer<vtkExodusIIReader> reader = opened_reader(path);
   reader->SetAllArrayStatus(vtkExodusIIReader::NODAL, 1);
   reader->SetAllArrayStatus(vtkExodusIIReader::ELEM_BLOCK, 1);
@@ -158,7 +182,7 @@ vtkSmartPointer<vtkDataObject> read_exodus(const std::string& path, int step) {
     element_names = variable_names(file, EX_ELEM_BLOCK);
     check_nodal_variables(file, path, step, nodal_names.size());
   }
-  reader->Update();
+  update_reader(reader, vtk, path, "Exodus II", false);
   const auto nodal = glommed_variables(reader, vtkExodusIIReader::NODAL, nodal_names);
   const auto element = glommed_variables(reader, vtkExodusIIReader::ELEM_BLOCK, element_names);
   vtkSmartPointer<vtkDataObject> read = reader->GetOutputDataObject(0);
@@ -174,21 +198,9 @@ vtkSmartPointer<vtkDataObject> read_exodus(const std::string& path, int step) {
   return read;
 }
 
-// Exodus II is netCDF, classic or version 4 (HDF5 inside): a file of random
-// bytes gets a clear message before VTK's reader sees it.
-void check_exodus_header(const std::string& path) {
-  const std::string head = file_head(path, 8);
-  if (head.rfind("CDF", 0) != 0 && head.rfind("\x89HDF\r\n\x1a\n", 0) != 0)
-    throw DataError(path + ": not an Exodus II file: it is neither netCDF (\"CDF\") nor HDF5 inside");
-}
-
 vtkSmartPointer<vtkDataSet> read_exodus_data(const std::string& path, const ReadRequest& request,
                                              const VtkSession& vtk) {
-  check_exodus_header(path);
-  const vtkSmartPointer<vtkDataObject> read = read_exodus(path, request.step);
-  if (const std::string error = vtk.first_error(); !error.empty())
-    throw DataError(path + ": cannot read it as Exodus II: " + error);
-  return merged(read, path, request.block);
+  return merged(read_exodus(path, request.step, vtk), path, request.block);
 }
 
 // The times of the file's steps, in order; none for a file of one step

@@ -30,11 +30,20 @@
 #include <vtkNIFTIImageReader.h>
 #include <vtkPointData.h>
 
+#include <zlib.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <sstream>
 
+#include "base/input_file.h"
+#include "base/memory_budget.h"
 #include "base/vec3.h"
+#include "field/reading/byte_numbers.h"
 #include "field/reading/component_arrays.h"
 #include "field/reading/component_order.h"
 #include "field/reading/data_error.h"
@@ -47,16 +56,95 @@ namespace {
 
 constexpr int symmetric_matrix_intent = 1005;  // NIFTI_INTENT_SYMMATRIX
 
-// The volume in `path`. Throws DataError for a file VTK cannot read or
-// whose voxels are not 3, 6 or 9 values.
+// Where the header puts the voxels, read from its own bytes (through
+// zlib, which reads a .nii and a .nii.gz alike): VTK turns NIfTI-1's
+// float vox_offset into an integer, which for a NaN or an infinity is
+// undefined. (NIfTI-2's is an integer already.)
+struct VoxelPlace {
+  double offset = 0.0;       // vox_offset: the voxels' first byte
+  bool in_same_file = false;  // a .nii (magic n+1, n+2), not a .hdr beside its .img
+};
+
+// Nothing when the header is not one this can read: VTK then says why.
+std::optional<VoxelPlace> voxel_place(const std::string& path) {
+  gzFile file = gzopen(path.c_str(), "rb");
+  if (!file) return std::nullopt;
+  unsigned char h[540] = {};
+  const int got = gzread(file, h, sizeof h);
+  gzclose(file);
+  if (got < 348) return std::nullopt;
+  const auto magic_is = [&](std::size_t at, const char* magic) {
+    return std::string(reinterpret_cast<const char*>(h) + at, 3) == magic;
+  };
+  for (const bool swap : {false, true}) {
+    const double size = load_number<std::int32_t>(h, swap);
+    if (size == 348.0)  // NIfTI-1 (or Analyze 7.5, whose .img holds the voxels)
+      return VoxelPlace{load_number<float>(h + 108, swap), magic_is(344, "n+1")};
+    if (size == 540.0 && got == 540) return VoxelPlace{load_number<std::int64_t>(h + 168, swap), magic_is(4, "n+2")};
+  }
+  return std::nullopt;
+}
+
+std::string number_text(double x) {
+  std::ostringstream text;
+  text.precision(17);
+  text << x;
+  return text.str();
+}
+
+// The voxels the header declares, against the bytes the file has and the
+// memory there is, before VTK allocates them: VTK reads a file cut short
+// with an error (asked for after it reads) but allocates all the header
+// declares first, and reads a NaN vox_offset without one.
+void check_declared_voxels(vtkNIFTIImageReader* reader, const std::string& path) {
+  vtkNIFTIImageHeader* header = reader->GetNIFTIHeader();
+  const std::optional<VoxelPlace> place = voxel_place(path);
+  if (!header || !place) return;
+  if (!std::isfinite(place->offset) || place->offset < 0.0)
+    throw DataError(path + ": its vox_offset (where its voxels start) is " + number_text(place->offset) +
+                    ", no place in a file");
+  // What VTK reads: the three space dimensions, time and the values of a
+  // voxel (TimeAsVector), each value bitpix bits.
+  double values = 1.0;
+  std::string sizes;
+  for (int d = 1; d <= std::min<int>(int(header->GetDim(0)), 5); ++d) {
+    values *= double(header->GetDim(d));
+    sizes += (d > 1 ? " × " : "") + std::to_string(header->GetDim(d));
+  }
+  const double bytes = values * header->GetBitPix() / 8.0;
+  if (place->in_same_file && file_head(path, 2) != "\x1f\x8b") {
+    std::error_code error;
+    const double size = double(std::filesystem::file_size(path, error));
+    if (!error && place->offset > size)
+      throw DataError(path + ": its voxels start at byte " + number_text(place->offset) +
+                      " (its vox_offset), past the file's end at " + number_text(size));
+    if (!error && place->offset + bytes > size)
+      throw DataError(path + ": the file is cut short: its header declares " + sizes + " values of " +
+                      std::to_string(header->GetBitPix() / 8) + " bytes from byte " + number_text(place->offset) +
+                      ", " + number_text(bytes) + " bytes; the file has " + number_text(size - place->offset));
+  }
+  // VTK's volume, and this reader's copy in doubles at most.
+  check_memory(bytes + values * 8.0, path + ": its voxels (" + sizes + " values, as its header declares)",
+               "a header that declares more voxels than its file holds is corrupt; else read the volume where more "
+               "memory is free");
+}
+
+// The volume in `path`. Throws DataError for a file VTK cannot read (or
+// reports an error for: one cut short reads as zeros otherwise), and for
+// one whose voxels are not 3, 6 or 9 values.
 // With `scalar`, a volume of one value per voxel (a mask) instead.
-vtkSmartPointer<vtkImageData> read_nifti(const std::string& path, bool scalar) {
+vtkSmartPointer<vtkImageData> read_nifti(const std::string& path, bool scalar, const VtkSession& vtk) {
   auto reader = vtkSmartPointer<vtkNIFTIImageReader>::New();
   if (!reader->CanReadFile(path.c_str()))
     throw DataError(path + ": not a NIfTI file: no NIfTI-1 or NIfTI-2 header (magic \"n+1\", \"ni1\", \"n+2\") in it");
   reader->SetFileName(path.c_str());
   reader->TimeAsVectorOn();  // FSL's six volumes along the fourth dimension
-  reader->Update();
+  // Its warnings are the file's own choices ("SFormMatrix is flipped
+  // compared to QFormMatrix"), no damage: only errors refuse it.
+  reader->UpdateInformation();
+  vtk.refuse_complaints(path, "NIfTI", false);
+  check_declared_voxels(reader, path);
+  update_reader(reader, vtk, path, "NIfTI", false);
   vtkImageData* read = reader->GetOutput();
   vtkNIFTIImageHeader* header = reader->GetNIFTIHeader();
   vtkDataArray* voxels = read && header ? read->GetPointData()->GetScalars() : nullptr;
@@ -171,8 +259,9 @@ vtkSmartPointer<vtkImageData> read_nifti(const std::string& path, bool scalar) {
   return image;
 }
 
-vtkSmartPointer<vtkDataSet> read_nifti_data(const std::string& path, const ReadRequest& request, const VtkSession&) {
-  return read_nifti(path, request.scalar);
+vtkSmartPointer<vtkDataSet> read_nifti_data(const std::string& path, const ReadRequest& request,
+                                            const VtkSession& vtk) {
+  return read_nifti(path, request.scalar, vtk);
 }
 
 }  // namespace

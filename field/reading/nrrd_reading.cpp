@@ -45,6 +45,7 @@
 
 #include "base/huge_pages.h"
 #include "base/mapped_file.h"
+#include "base/memory_budget.h"
 #include "base/input_file.h"
 #include "field/reading/byte_numbers.h"
 #include "field/reading/component_arrays.h"
@@ -257,6 +258,12 @@ void with_values(const DecodedValues& d, Use&& use) {
   }
 }
 
+// Whether the header's data is spelled out as text (ASCII numbers).
+bool text_encoding(const Header& h) {
+  const std::string encoding = h.value("encoding", "");
+  return encoding == "txt" || encoding == "text" || encoding == "ascii";
+}
+
 // The data's bytes: `count` values of `type`, decoded as the header says.
 DecodedValues read_values(const Header& h, const std::string& path, std::uint64_t count, NumberType type) {
   const std::string encoding = h.value("encoding", "");
@@ -265,13 +272,15 @@ DecodedValues read_values(const Header& h, const std::string& path, std::uint64_
   if (offset < 0) {
     h.fail(nullptr, "the NRRD header ends without its data (no empty line, and no \"data file:\")");
   }
+  if (const std::string why = unreadable_input(data_path); !why.empty() && why != "no such file")
+    throw DataError(path + ": names " + data_path + ": " + why);
   std::ifstream in(data_path, std::ios::binary);
-  if (!in || !std::filesystem::is_regular_file(data_path)) throw DataError(path + ": cannot open its data file " + data_path);
+  if (!in) throw DataError(path + ": cannot open its data file " + data_path);
   in.seekg(offset);
   for (long long skip = h.integer("line skip"); skip > 0 && in; --skip) in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
   DecodedValues d;
   d.type = type;
-  const bool text = encoding == "txt" || encoding == "text" || encoding == "ascii";
+  const bool text = text_encoding(h);
   // The bytes after the header: mapped (raw and gzip data), else read.
   const std::streamoff here = in.tellg();
   if (!text && here >= 0) d.mapped = MappedFile(data_path);
@@ -474,7 +483,6 @@ vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path, bool scalar) {
     frame << *m[0], *m[1], *m[2];
   }
 
-  const DecodedValues values = read_values(h, path, count, type);
   const vtkIdType voxels = vtkIdType(count / std::uint64_t(layout.values));
   // Six components (symmetric tensors) go straight into the field's own
   // storage (tensor_storage.h), which read_tensors() takes over. Other
@@ -485,8 +493,23 @@ vtkSmartPointer<vtkImageData> read_nrrd(const std::string& path, bool scalar) {
                              : layout.kind == VoxelLayout::vector ? 3
                              : layout.kind == VoxelLayout::full   ? 9
                                                                   : 6;
-  const bool as_float = out_components != 6 && values.bytes &&
-                        (type.kind == NumberType::floating ? type.bytes == 4 : type.bytes <= 2);
+  const bool text = text_encoding(h);
+  const bool as_float =
+      out_components != 6 && !text && (type.kind == NumberType::floating ? type.bytes == 4 : type.bytes <= 2);
+  // What the read takes, refused before any of it is allocated: the
+  // 2^31-value guard above still lets a header ask for 17 GB of doubles,
+  // and a 2 MB gzip stream inflates to 2 GB. The array made below, and the
+  // values decoded first where they are not read in place (gzip's output,
+  // ASCII's numbers as doubles); raw data is mapped, not held.
+  const double decoded = text ? 8.0 * double(count)
+                         : h.value("encoding", "") == "raw" ? 0.0
+                                                            : double(type.bytes) * double(count);
+  check_memory(decoded + double(voxels) * out_components * (as_float ? 4.0 : 8.0),
+               path + ": the volume its header declares (sizes " + sizes_field->value + ", " +
+                   h.value("type", "") + " values)",
+               "a header that declares more values than its data holds is corrupt; else read the volume where "
+               "more memory is free");
+  const DecodedValues values = read_values(h, path, count, type);
   const vtkSmartPointer<vtkDataArray> array = volume_array(voxels, out_components, as_float);
   array->SetName(layout.kind == VoxelLayout::scalar   ? "values"
                  : layout.kind == VoxelLayout::vector ? "vectors"

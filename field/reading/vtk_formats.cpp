@@ -14,6 +14,7 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
+#include <new>
 
 #include "base/input_file.h"
 #include "base/partial_file.h"
@@ -73,16 +74,17 @@ bool with_known_type_names(const std::string& path, const std::string& copy) {
 // warning): an error here. `whole` makes the output one data set.
 vtkSmartPointer<vtkDataSet> output_of(vtkAlgorithm* reader, const std::string& path, const VtkSession& vtk,
                                       const std::function<vtkSmartPointer<vtkDataSet>(vtkDataObject*)>& whole) {
-  reader->Update();
-  const auto complaint = [&] {
-    std::string error = vtk.first_error();
-    return error.empty() ? vtk.first_warning() : error;
-  };
-  if (const std::string error = complaint(); !error.empty())
-    throw DataError(path + ": cannot read it as a VTK data set: " + error);
-  vtkSmartPointer<vtkDataSet> data = whole(reader->GetOutputDataObject(0));
-  if (const std::string error = complaint(); !error.empty() || !data || data->GetNumberOfPoints() == 0)
-    throw DataError(path + ": cannot read it as a VTK data set: " + (error.empty() ? "no points in it" : error));
+  const std::string as = "a VTK data set";
+  update_reader(reader, vtk, path, as, true);
+  vtkSmartPointer<vtkDataSet> data;
+  try {
+    data = whole(reader->GetOutputDataObject(0));
+  } catch (const std::bad_alloc&) {
+    refuse_memory(path, as);
+  }
+  vtk.refuse_complaints(path, as, true);
+  if (!data || data->GetNumberOfPoints() == 0)
+    throw DataError(path + ": cannot read it as " + as + ": no points in it");
   return data;
 }
 

@@ -1,9 +1,14 @@
 #include "field/reading/vtk_session.h"
 
+#include <vtkAlgorithm.h>
 #include <vtkLogger.h>
 #include <vtkOutputWindow.h>
 #include <vtkSMPTools.h>
 #include <vtkSmartPointer.h>
+
+#include <new>
+
+#include "field/reading/data_error.h"
 
 namespace hsb {
 namespace {
@@ -71,5 +76,26 @@ std::string user_part(std::string s) {
 
 std::string VtkSession::first_error() const { return user_part(first_error_text); }
 std::string VtkSession::first_warning() const { return user_part(first_warning_text); }
+
+void VtkSession::refuse_complaints(const std::string& path, const std::string& as, bool warnings) const {
+  std::string complaint = first_error();
+  if (complaint.empty() && warnings) complaint = first_warning();
+  if (!complaint.empty()) throw DataError(path + ": cannot read it as " + as + ": " + complaint);
+}
+
+void refuse_memory(const std::string& path, const std::string& as) {
+  throw DataError(path + ": cannot read it as " + as +
+                  ": it declares more than memory holds (VTK could not allocate what its sizes ask for)");
+}
+
+void update_reader(vtkAlgorithm* reader, const VtkSession& vtk, const std::string& path, const std::string& as,
+                   bool warnings) {
+  try {
+    reader->Update();
+  } catch (const std::bad_alloc&) {
+    refuse_memory(path, as);
+  }
+  vtk.refuse_complaints(path, as, warnings);
+}
 
 }  // namespace hsb

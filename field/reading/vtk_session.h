@@ -15,6 +15,8 @@
 #include <mutex>
 #include <string>
 
+class vtkAlgorithm;
+
 namespace hsb {
 
 class VtkSession {
@@ -34,8 +36,25 @@ class VtkSession {
   std::string first_error() const;
   std::string first_warning() const;
 
+  // Throws DataError "PATH: cannot read it as AS: ..." for the first
+  // error VTK reported in this session, and with `warnings` for its first
+  // warning too (where a reader's warning is a file it could not read as
+  // declared: a truncated array read as garbage).
+  void refuse_complaints(const std::string& path, const std::string& as, bool warnings) const;
+
  private:
   std::unique_lock<std::mutex> lock_;
 };
+
+// The one way a VTK reader is run on a user's file: `reader`'s Update(),
+// then everything VTK reported refused (VtkSession::refuse_complaints). A
+// file that declares more than memory holds, which some of VTK's readers
+// meet with a bare std::bad_alloc, is a DataError naming the file too.
+void update_reader(vtkAlgorithm* reader, const VtkSession& vtk, const std::string& path, const std::string& as,
+                   bool warnings);
+
+// Throws the DataError update_reader makes of a std::bad_alloc, for one
+// met in a reader's own steps after VTK's (merging blocks, copying arrays).
+[[noreturn]] void refuse_memory(const std::string& path, const std::string& as);
 
 }  // namespace hsb

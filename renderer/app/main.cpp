@@ -22,6 +22,7 @@
 
 #include "base/partial_file.h"
 #include "base/process_memory.h"
+#include "base/thread_room.h"
 #include "field/reading/data_formats.h"
 #include "field/reading/data_info.h"
 #include "renderer/app/batch.h"
@@ -286,6 +287,15 @@ int run(int argc, char** argv) {
   std::optional<tbb::global_control> thread_limit;
 
   if (threads > 0) thread_limit.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+  // Before any thread starts (TBB's, the image module's, the libraries'):
+  // TBB kept to the room ulimit -u leaves, or one message where there is
+  // no room for a run.
+  try {
+    hsb::fit_threads_to_room();
+  } catch (const hsb::ResourceError& e) {
+    std::fprintf(stderr, "hsb: %s\n", e.what());
+    return 1;
+  }
 
   // Runs `work` for inputs [0, count), named name_of(i); each failure is
   // reported once as it happens and again, with the others, in a summary

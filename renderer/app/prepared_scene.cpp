@@ -10,6 +10,7 @@
 #include "base/memory_budget.h"
 #include "base/point_extremes.h"
 #include "base/process_memory.h"
+#include "base/thread_room.h"
 #include "field/reading/data_formats.h"
 #include "renderer/image/image_io_module.h"
 #include "renderer/image/image_output.h"
@@ -418,6 +419,8 @@ ColorManagement scene_color_management(const SceneSpec& spec) {
 }
 
 std::unique_ptr<PreparedScene> prepare_scene(SceneSpec spec, const ColorManagement& color) {
+  // Before any thread starts: TBB's reading and tracing, Pango's legend.
+  fit_threads_to_room();
   auto prepared = std::make_unique<PreparedScene>();
   PreparedScene& p = *prepared;
   p.spec = std::move(spec);

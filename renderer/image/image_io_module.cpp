@@ -19,9 +19,11 @@
 #include <future>
 #include <mutex>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 
 #include "base/process_memory.h"
+#include "base/thread_room.h"
 #include "renderer/image/spare_threads.h"
 
 namespace hsb {
@@ -153,14 +155,30 @@ void start_thread_pool() {
 
 std::once_flag started;
 std::shared_future<Loaded> loading;
+bool loads_when_needed = false;  // no thread for the load: image_io() runs it
 double file_resident_at_start = 0.0;  // when the load began
 
 void start_loading() {
   std::call_once(started, [] {
+    // Without room for the threads below and the libraries', nothing is
+    // started: image_io() says why (preload_image_io must not throw).
+    try {
+      fit_threads_to_room();
+    } catch (const ResourceError&) {
+      return;
+    }
     start_thread_pool();
     make_spare_thread();  // for the picture's writer, which starts while the module loads
     file_resident_at_start = file_resident_bytes();
-    loading = std::async(std::launch::async, load).share();
+    try {
+      loading = std::async(std::launch::async, load).share();
+    } catch (const std::system_error&) {
+      // The system refused the thread after all (another process of the
+      // user's took the room): the module loads where it is first needed.
+      loading = std::async(std::launch::deferred, load).share();
+      loads_when_needed = true;
+      return;
+    }
     // fork() copies only its own thread: one taken while the loader holds
     // its lock on another would leave the child's loader locked for ever.
     pthread_atfork([] { loading.wait(); }, nullptr, nullptr);
@@ -195,11 +213,12 @@ double image_io_pending_bytes() {
 }
 
 void finish_image_io_preload() {
-  if (loading.valid()) loading.wait();
+  if (loading.valid() && !loads_when_needed) loading.wait();
 }
 
 const ImageIo& image_io() {
   start_loading();
+  fit_threads_to_room();  // when start_loading found no room, why
   const Loaded& loaded = loading.get();
   if (!loaded.functions) throw std::runtime_error(loaded.failure);
   return *loaded.functions;

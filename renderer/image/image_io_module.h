@@ -43,12 +43,15 @@ struct ImageIo {
 };
 
 // The module's functions, loading it (and OpenImageIO) on the first call.
-// Throws std::runtime_error naming the module when it cannot be loaded.
+// Throws std::runtime_error naming the module when it cannot be loaded,
+// ResourceError when the process has no room for the threads a run starts
+// (base/thread_room.h).
 const ImageIo& image_io();
 
 // Starts loading the module on a thread of its own, so that a render finds
 // it loaded when it writes its image. A fork waits for the load to end: a
-// child must not inherit the dynamic loader's lock half taken.
+// child must not inherit the dynamic loader's lock half taken. Throws
+// nothing: without room for threads it starts none, and image_io() says why.
 void preload_image_io();
 
 // Waits for a load preload_image_io() began, if any. A process must not

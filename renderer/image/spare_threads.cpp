@@ -6,7 +6,10 @@
 #include <deque>
 #include <mutex>
 #include <new>
+#include <system_error>
 #include <thread>
+
+#include "base/thread_room.h"
 
 namespace hsb {
 namespace {
@@ -61,8 +64,12 @@ void serve_jobs() {
 void make_spare_thread() {
   SparePool& pool = spare_pool();
   const std::lock_guard<std::mutex> lock(pool.mutex);
-  std::thread(serve_jobs).detach();
-  ++pool.parked;
+  try {
+    std::thread(serve_jobs).detach();
+    ++pool.parked;
+  } catch (const std::system_error&) {
+    // None parked: run_on_spare_thread tries again, and says why it cannot.
+  }
 }
 
 std::future<void> run_on_spare_thread(std::function<void()> job) {
@@ -74,8 +81,13 @@ std::future<void> run_on_spare_thread(std::function<void()> job) {
   if (pool.parked > 0) {
     --pool.parked;
     pool.work.notify_one();
-  } else {
+    return done;
+  }
+  try {
     std::thread(serve_jobs).detach();
+  } catch (const std::system_error& refused) {
+    pool.jobs.pop_back();
+    throw thread_refused(refused, "to write the picture");
   }
   return done;
 }

@@ -13,12 +13,16 @@
 namespace hsb {
 
 // Makes one more parked thread now; run_on_spare_thread gives it work.
-// Call it before anything that holds the loader's lock long.
+// Call it before anything that holds the loader's lock long. Makes none
+// where the system refuses a thread (ulimit -u): run_on_spare_thread
+// tries again, and says so.
 void make_spare_thread();
 
 // Runs `job` on a parked thread, or on a new one when none is parked (it
 // parks once the job ends). The future is ready when the job has ended,
 // holding what it threw. A fork leaves the child with no parked threads.
+// Throws ResourceError (base/thread_room.h) when none is parked and the
+// system refuses a new one (ulimit -u).
 std::future<void> run_on_spare_thread(std::function<void()> job);
 
 }  // namespace hsb

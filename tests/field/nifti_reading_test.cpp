@@ -3,9 +3,13 @@
 // placed by the sform: each read back as the tensors of the space.
 #include <gtest/gtest.h>
 
+#include <zlib.h>
+
 #include <array>
 #include <cstring>
 #include <fstream>
+#include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -208,6 +212,64 @@ TEST(NiftiReading, AMaskIsOneValuePerVoxelPlacedAsTheTensors) {
               std::string::npos)
         << e.what();
   }
+}
+
+// The bytes of a file.
+std::string contents_of(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return bytes.str();
+}
+
+// `bytes` as gzip writes them (what a .nii.gz is), stored rather than
+// compressed, so that a cut falls where the test says.
+std::string gzipped(const std::string& bytes) {
+  z_stream z{};
+  deflateInit2(&z, Z_NO_COMPRESSION, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY);
+  std::string packed(deflateBound(&z, uLong(bytes.size())), '\0');
+  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()));
+  z.avail_in = uInt(bytes.size());
+  z.next_out = reinterpret_cast<Bytef*>(packed.data());
+  z.avail_out = uInt(packed.size());
+  deflate(&z, Z_FINISH);
+  packed.resize(z.total_out);
+  deflateEnd(&z);
+  return packed;
+}
+
+// A file that holds less than its header declares is refused, never read
+// as the zeros VTK leaves where it read nothing: a header alone, half the
+// voxels, a .nii.gz cut short, and voxels said to start past the end or at
+// no place at all (vox_offset NaN).
+TEST(NiftiReading, AFileWithoutTheVoxelsItsHeaderDeclaresIsRefused) {
+  const auto tensors = [](int, int, int) { return std::array<double, 6>{2, 1, 1, 0, 0, 0}; };
+  const std::string whole = contents_of(write_nifti("whole.nii", {4, nx, ny, nz, 6, 1, 1, 1}, 0, "", turned, tensors));
+  ASSERT_EQ(whole.size(), 352u + std::size_t(nx * ny * nz * 6) * 4u);
+  const auto refused = [](const std::string& name, const std::string& bytes, const std::string& said) {
+    const std::string path = (test_temp_dir("nifti") / name).string();
+    std::ofstream(path, std::ios::binary) << bytes;
+    try {
+      load_vtk_data({path});
+      ADD_FAILURE() << name << " was read";
+    } catch (const DataError& e) {
+      const std::string message = e.what();
+      EXPECT_EQ(message.rfind(path + ": ", 0), 0u) << message;
+      EXPECT_NE(message.find(said), std::string::npos) << message;
+    }
+  };
+  refused("header_alone.nii", whole.substr(0, 352), "the file is cut short");
+  refused("half.nii", whole.substr(0, 352 + (whole.size() - 352) / 2), "the file is cut short");
+  // Cut two thirds in: the header whole, the voxels not.
+  const std::string packed = gzipped(whole);
+  refused("cut.nii.gz", packed.substr(0, packed.size() * 2 / 3), "cannot read it as NIfTI");
+  const auto with_offset = [&](float offset) {
+    std::string bytes = whole;
+    std::memcpy(&bytes[108], &offset, sizeof offset);
+    return bytes;
+  };
+  refused("past_the_end.nii", with_offset(1e6f), "past the file's end");
+  refused("no_place.nii", with_offset(std::numeric_limits<float>::quiet_NaN()), "its vox_offset");
 }
 
 }  // namespace

@@ -3,14 +3,18 @@
 // header; and one clear error, at its header line, for what is wrong.
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
 #include <zlib.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <fstream>
 #include <string>
 #include <vector>
 
+#include "base/memory_budget.h"
+#include "base/process_memory.h"
 #include "field/reading/data_error.h"
 #include "field/reading/vtk_data.h"
 #include "tests/temp_dir.h"
@@ -195,6 +199,62 @@ TEST(NrrdReading, AMaskIsAVolumeOfOneValuePerVoxel) {
     EXPECT_NE(std::string(e.what()).find("a volume of one value per voxel: no tensors or vectors"), std::string::npos)
         << e.what();
   }
+}
+
+// The address space this process may still map lowered to `room` more than
+// it maps now (ulimit -v, which the memory budget heeds), while it lives:
+// the budget made small whatever the machine's memory.
+class SmallAddressSpace {
+ public:
+  explicit SmallAddressSpace(double room) {
+    getrlimit(RLIMIT_AS, &before_);
+    rlimit lowered = before_;
+    lowered.rlim_cur = rlim_t(virtual_bytes() + room);
+    if (before_.rlim_cur != RLIM_INFINITY) lowered.rlim_cur = std::min(lowered.rlim_cur, before_.rlim_cur);
+    setrlimit(RLIMIT_AS, &lowered);
+  }
+  ~SmallAddressSpace() { setrlimit(RLIMIT_AS, &before_); }
+  SmallAddressSpace(const SmallAddressSpace&) = delete;
+  SmallAddressSpace& operator=(const SmallAddressSpace&) = delete;
+
+ private:
+  rlimit before_{};
+};
+
+// A header may declare up to 2^31 values: as doubles, 17 GB, and a small
+// gzip stream may claim to inflate to them. What the read would take is
+// weighed against the memory budget before anything is allocated: 2^30
+// doubles in a gzip stream of a kilobyte are refused at once, not inflated
+// until memory runs out (nor said to be short only once they were).
+TEST(NrrdReading, AVolumeLargerThanTheMemoryBudgetIsRefusedBeforeItIsRead) {
+  const std::string zeros(1 << 20, '\0');
+  std::string packed(compressBound(uLong(zeros.size())), '\0');
+  uLongf packed_size = uLongf(packed.size());
+  compress(reinterpret_cast<Bytef*>(packed.data()), &packed_size, reinterpret_cast<const Bytef*>(zeros.data()),
+           uLong(zeros.size()));
+  packed.resize(packed_size);
+  const std::string path =
+      write_file("bomb.nrrd", "NRRD0005\ntype: double\ndimension: 4\nsizes: 7 1024 1024 146\n"
+                              "kinds: 3D-masked-symmetric-matrix space space space\nendian: little\nencoding: gzip\n\n" +
+                                  packed);
+  const auto start = std::chrono::steady_clock::now();
+  std::string message = "no error";
+  {
+    const SmallAddressSpace small(2e9);
+    try {
+      load_vtk_data({path});
+    } catch (const ResourceError& e) {
+      message = e.what();
+    } catch (const DataError& e) {
+      message = std::string("a DataError: ") + e.what();
+    }
+  }
+  EXPECT_EQ(message.rfind(path + ": the volume its header declares (sizes 7 1024 1024 146, double values) would take "
+                                 "about ",
+                          0),
+            0u)
+      << message;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 2.0);
 }
 
 }  // namespace
