@@ -150,10 +150,15 @@ void check_volume(vtkDataSet* data, const std::string& path) {
   // One cell with volume is enough: degenerate cells among good ones are
   // legal (no point lies inside them). Tetrahedra from VTK's own
   // triangulation of each 3D cell.
-  double bounds[6];
-  data->GetBounds(bounds);
-  const double diagonal = std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]);
-  const double tiny = 1e-12 * diagonal * diagonal * diagonal;
+  // Flat measured against each tetrahedron's own size, its longest edge
+  // cubed: against the body's diagonal, the unit cubes of a rod 10,000
+  // long were "flat" (their volume 10⁻¹² of the diagonal's cube).
+  const auto flat = [](const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+    const double longest = std::sqrt(std::max({(b - a).squaredNorm(), (c - a).squaredNorm(), (d - a).squaredNorm(),
+                                                (c - b).squaredNorm(), (d - b).squaredNorm(), (d - c).squaredNorm()}));
+    const double volume = std::fabs((b - a).dot((c - a).cross(d - a))) / 6.0;
+    return !(volume > 1e-12 * longest * longest * longest);
+  };
   auto ids = vtkSmartPointer<vtkIdList>::New();
   auto corners = vtkSmartPointer<vtkPoints>::New();
   vtkIdType three_d = 0;
@@ -167,10 +172,7 @@ void check_volume(vtkDataSet* data, const std::string& path) {
     for (vtkIdType t = 0; t + 3 < corners->GetNumberOfPoints(); t += 4) {
       double a[3], b[3], c[3], d[3];
       corners->GetPoint(t, a), corners->GetPoint(t + 1, b), corners->GetPoint(t + 2, c), corners->GetPoint(t + 3, d);
-      const Vec3 pa(a[0], a[1], a[2]);
-      const double volume = std::fabs((Vec3(b[0], b[1], b[2]) - pa).dot(
-                                (Vec3(c[0], c[1], c[2]) - pa).cross(Vec3(d[0], d[1], d[2]) - pa))) / 6.0;
-      if (volume > tiny) return;
+      if (!flat(Vec3(a[0], a[1], a[2]), Vec3(b[0], b[1], b[2]), Vec3(c[0], c[1], c[2]), Vec3(d[0], d[1], d[2]))) return;
     }
   }
   std::ostringstream message;

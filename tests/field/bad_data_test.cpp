@@ -175,6 +175,25 @@ TEST_F(BadData, OnlyFlatCells) {
   EXPECT_EQ(error_of(write("voxels.vtk", quads.text())), "no error");  // voxels with volume are fine
 }
 
+// A slender body is not flat: a rod 10,000 long of unit cubes, each cell
+// with volume for its size, however small beside the rod's length (it
+// was refused as "all flat" when volume was measured against the body).
+TEST_F(BadData, ASlenderBodyOfGoodCellsIsNoFlatMesh) {
+  LegacyGrid rod;
+  constexpr int n = 10000;
+  rod.points.clear(), rod.cells.clear(), rod.tensors.clear();
+  for (int i = 0; i <= n; ++i)
+    for (int corner = 0; corner < 4; ++corner) {
+      rod.points.push_back({double(i), double(corner == 1 || corner == 2), double(corner >= 2)});
+      rod.tensors.push_back({1.0, 0.1, 0, 0.1, 0.5, 0, 0, 0, -1});
+    }
+  for (long i = 0; i < n; ++i) {
+    const long a = 4 * i, b = 4 * (i + 1);  // corners (y, z): 0 (0,0), 1 (1,0), 2 (1,1), 3 (0,1)
+    rod.cells.push_back({a, b, b + 1, a + 1, a + 3, b + 3, b + 2, a + 2});
+  }
+  EXPECT_EQ(error_of(write("rod.vtk", rod.text())), "no error");
+}
+
 TEST_F(BadData, NonFinitePointCoordinates) {
   // Legacy ASCII cannot even spell NaN ...
   LegacyGrid grid;
