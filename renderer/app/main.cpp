@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "base/partial_file.h"
+#include "base/terminal_text.h"
 #include "base/process_memory.h"
 #include "base/thread_room.h"
 #include "field/reading/data_formats.h"
@@ -102,7 +103,7 @@ void print_trace_stats(const char* kind, const hsb::TraceStats& stats) {
 }
 
 void print_summary(const hsb::RenderSummary& s, bool with_stats) {
-  for (const std::string& warning : s.warnings) std::fprintf(stderr, "hsb: warning: %s\n", warning.c_str());
+  for (const std::string& warning : s.warnings) std::fprintf(stderr, "hsb: warning: %s\n", hsb::shown(warning).c_str());
   const double rays = double(s.primary_rays + s.shadow_rays);
   const double mrays = s.render_seconds > 0.0 ? rays / s.render_seconds * 1e-6 : 0.0;
   std::printf("%s  sources=%zu  trajectories=%zu  time=%.2fs (build %.2fs, render %.2fs, output %.2fs)  %.2f Mrays/s\n",
@@ -281,7 +282,7 @@ int run(int argc, char** argv) {
   try {
     hsb::active_isa();  // a bad HSB_ISA is one error here, not one per scene
   } catch (const std::runtime_error& e) {
-    std::fprintf(stderr, "hsb: %s\n", e.what());
+    std::fprintf(stderr, "hsb: %s\n", hsb::shown(e.what()).c_str());
     return 2;
   }
   std::optional<tbb::global_control> thread_limit;
@@ -293,7 +294,7 @@ int run(int argc, char** argv) {
   try {
     hsb::fit_threads_to_room();
   } catch (const hsb::ResourceError& e) {
-    std::fprintf(stderr, "hsb: %s\n", e.what());
+    std::fprintf(stderr, "hsb: %s\n", hsb::shown(e.what()).c_str());
     return 1;
   }
 
@@ -316,14 +317,14 @@ int run(int argc, char** argv) {
         message = e.what();
         if (message.rfind(input + ":", 0) != 0) message = input + ": " + message;
       }
-      std::fprintf(stderr, "hsb: %s\n", message.c_str());
+      std::fprintf(stderr, "hsb: %s\n", hsb::shown(message).c_str());
       failures.push_back(message);
     }
     // One input's error needs no summary; a batch's failures are listed
     // again at its end, where a long log is read first.
     if (!failures.empty() && count > 1) {
       std::fprintf(stderr, "hsb: %zu of %zu %s failed:\n", failures.size(), count, noun);
-      for (const std::string& f : failures) std::fprintf(stderr, "  %s\n", f.substr(0, f.find('\n')).c_str());
+      for (const std::string& f : failures) std::fprintf(stderr, "  %s\n", hsb::shown(f.substr(0, f.find('\n'))).c_str());
     }
     return failures.empty() ? 0 : 1;
   };
@@ -405,7 +406,7 @@ int run(int argc, char** argv) {
     }
     batch.emplace(scenes, overrides, as_series);
   } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "hsb: %s\n", e.what());
+    std::fprintf(stderr, "hsb: %s\n", hsb::shown(e.what()).c_str());
     return 2;
   }
   const auto item_at = [&](std::size_t j) { return batch->item(hsb::Batch::shard_position(shard, j)); };
@@ -462,7 +463,7 @@ int run(int argc, char** argv) {
     } else if (!quiet) {
       print_summary(summary, stats);
     } else {
-      for (const std::string& w : summary.warnings) std::fprintf(stderr, "hsb: warning: %s\n", w.c_str());
+      for (const std::string& w : summary.warnings) std::fprintf(stderr, "hsb: warning: %s\n", hsb::shown(w).c_str());
     }
   });
   if (skipped && !quiet) std::printf("%zu of %zu images up to date, skipped\n", skipped, mine);

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "base/terminal_text.h"
+
 namespace hsb {
 namespace {
 
@@ -105,10 +107,10 @@ void BatchProgress::print(bool force) {
     item += "; batch about " + human_duration(batch_left) + " left";
   }
   if (mode_ == Mode::terminal) {
-    std::fprintf(stderr, "\r\033[K%s", item.c_str());
+    std::fprintf(stderr, "\r\033[K%s", shown(item).c_str());
     line_shown_ = true;
   } else {
-    std::fprintf(stderr, "hsb: %s\n", item.c_str());
+    std::fprintf(stderr, "hsb: %s\n", shown(item).c_str());
   }
   std::fflush(stderr);
 }

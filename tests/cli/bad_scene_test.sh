@@ -71,6 +71,14 @@ grep -q 'no array named "nope" (data.array); the file has point data: stress' "$
 "$hsb" export "$work/empty.toml" -o "$work/empty" > "$work/log" 2>&1 || fail "export of an empty scene: $(cat "$work/log")"
 [[ -z $(ls -A "$work/empty" | grep partial) ]] || fail "export left: $(ls -A "$work/empty")"
 [[ -s "$work/empty/empty_sources.vtp" ]] || fail "export of an empty scene wrote: $(ls -A "$work/empty")"
+# A key from the user's file is printed, not obeyed: an escape sequence in
+# it reaches the terminal as text.
+printf '[glyphs]\n"spacing\\u001b[2J" = 1\n' > "$work/escape_key.toml"
+"$hsb" render "$work/escape_key.toml" -o "$work/escape_key" 2> "$work/err"
+[[ $? -ne 0 ]] || fail "exit status 0 for an unknown key"
+grep -q 'spacing\\x1b\[2J' "$work/err" || fail "the key's escape not shown: $(cat -v "$work/err")"
+! grep -q $'\x1b' "$work/err" || fail "an escape byte reached the terminal: $(cat -v "$work/err")"
+
 # A scene writes inside -o only: an absolute output.file, or one that climbs
 # out with .., is refused before anything is rendered or made.
 mkdir -p "$work/outside"
