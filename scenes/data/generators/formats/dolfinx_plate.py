@@ -88,7 +88,6 @@ seconds more.
 """
 import logging
 import os
-import struct
 import subprocess
 import sys
 import time
@@ -111,38 +110,7 @@ XDMF, H5 = 'dolfinx_plate.xdmf', 'dolfinx_plate.h5'
 def plate_tets():
     """gmsh tetrahedra of the plate with a hole (the mesh of
     kirsch_plate.vtkhdf): points (n, 3), tets (m, 4)."""
-    gmsh = fc.gmsh_start('dolfinx_plate')
-    try:
-        occ = gmsh.model.occ
-        box = occ.addBox(-W / 2, -H / 2, 0, W, H, T)
-        cyl = occ.addCylinder(0, 0, 0, 0, 0, T, A)
-        occ.cut([(3, box)], [(3, cyl)])
-        occ.synchronize()
-        hole = [t for _, t in gmsh.model.getEntities(2) if gmsh.model.getType(2, t) == 'Cylinder']
-        assert len(hole) == 1, hole
-        field = gmsh.model.mesh.field
-        field.add('Distance', 1)
-        field.setNumbers(1, 'SurfacesList', hole)
-        field.setNumber(1, 'NumPointsPerCurve', 100)
-        field.add('Threshold', 2)
-        field.setNumber(2, 'InField', 1)
-        field.setNumber(2, 'SizeMin', H_HOLE)
-        field.setNumber(2, 'SizeMax', H_FAR)
-        field.setNumber(2, 'DistMin', 0.0)
-        field.setNumber(2, 'DistMax', H_DIST)
-        field.setAsBackgroundMesh(2)
-        for option in ('Mesh.MeshSizeExtendFromBoundary', 'Mesh.MeshSizeFromPoints',
-                       'Mesh.MeshSizeFromCurvature'):
-            gmsh.option.setNumber(option, 0)
-        gmsh.option.setNumber('Mesh.Algorithm', 6)
-        gmsh.option.setNumber('Mesh.Algorithm3D', 1)
-        gmsh.model.mesh.generate(3)
-        points, conn = fc.gmsh_mesh(gmsh, 3, 4)
-    finally:
-        gmsh.finalize()
-    tets = np.concatenate([conn[k] for k in sorted(conn)])
-    points[np.abs(points) < 1e-12] = 0.0
-    return points, tets
+    return fc.solid_plate_tets('dolfinx_plate', H_HOLE, H_FAR, H_DIST)
 
 
 def rigid_body_modes(V):
@@ -284,50 +252,13 @@ def solve_and_write(folder):
 
 # ------------------------------------------------------------ second process
 
-def zero_hdf5_mtimes(path):
-    """Set the 'Object Modification Time' (message 0x0012) of every object
-    header (version 1, no checksums) to 0 in place; returns the count. The
-    same as fenics_notched_shaft.zero_hdf5_mtimes."""
-    import h5py
-    addresses = set()
-    with h5py.File(path, 'r') as f:
-        addresses.add(h5py.h5o.get_info(f.id).addr)
-        f.visititems(lambda name, obj: addresses.add(h5py.h5o.get_info(obj.id).addr))
-    count = 0
-    with open(path, 'r+b') as fh:
-        def read(pos, n):
-            fh.seek(pos)
-            return fh.read(n)
-        for addr in sorted(addresses):
-            version, _, _, _, size = struct.unpack('<BBHII', read(addr, 12))
-            if version != 1:
-                raise RuntimeError('%s: object header version %d at %d' % (path, version, addr))
-            blocks = [(addr + 16, addr + 16 + size)]
-            while blocks:
-                pos, end = blocks.pop()
-                while pos + 8 <= end:
-                    mtype, msize = struct.unpack('<HH', read(pos, 4))
-                    data = pos + 8
-                    if mtype == 0x0012:
-                        fh.seek(data + 4)
-                        fh.write(b'\0\0\0\0')
-                        count += 1
-                    elif mtype == 0x000E:
-                        raise RuntimeError('old-style modification time in ' + path)
-                    elif mtype == 0x0010:
-                        offset, length = struct.unpack('<QQ', read(data, 16))
-                        blocks.append((offset, offset + length))
-                    pos = data + msize
-    return count
-
-
 def check(folder, peak):
     """Every read-back check (h5py, meshio), after zeroing the times."""
     import h5py
     import meshio
 
     h5 = os.path.join(folder, H5)
-    print('%s: %d modification times set to 0' % (H5, zero_hdf5_mtimes(h5)))
+    print('%s: %d modification times set to 0' % (H5, fc.zero_hdf5_mtimes(h5)))
     for name in (XDMF, H5):
         fc.report(os.path.join(folder, name))
     assert os.path.getsize(h5) < 1_000_000

@@ -99,7 +99,6 @@ cached in ~/.cache/dijitso): about 60 s in all; after that the whole script
 takes about 22 s, the P2 solve (with assembly) about 18 s of it.
 """
 import os
-import struct
 import subprocess
 import sys
 import tempfile
@@ -293,44 +292,6 @@ def solve_and_write(folder):
 
 # ------------------------------------------------------------ second process
 
-def zero_hdf5_mtimes(path):
-    """Set the 'Object Modification Time' (message 0x0012) of every object
-    header in an HDF5 file written with the earliest format (version-1
-    object headers, no checksums) to 0, in place. Returns the number of
-    fields set."""
-    import h5py
-    addresses = set()
-    with h5py.File(path, 'r') as f:
-        addresses.add(h5py.h5o.get_info(f.id).addr)
-        f.visititems(lambda name, obj: addresses.add(h5py.h5o.get_info(obj.id).addr))
-    count = 0
-    with open(path, 'r+b') as fh:
-        def read(pos, n):
-            fh.seek(pos)
-            return fh.read(n)
-        for addr in sorted(addresses):
-            version, _, _, _, size = struct.unpack('<BBHII', read(addr, 12))
-            if version != 1:
-                raise RuntimeError('%s: object header version %d at %d' % (path, version, addr))
-            blocks = [(addr + 16, addr + 16 + size)]
-            while blocks:
-                pos, end = blocks.pop()
-                while pos + 8 <= end:
-                    mtype, msize = struct.unpack('<HH', read(pos, 4))
-                    data = pos + 8
-                    if mtype == 0x0012:     # version, 3 reserved bytes, uint32 seconds
-                        fh.seek(data + 4)
-                        fh.write(b'\0\0\0\0')
-                        count += 1
-                    elif mtype == 0x000E:
-                        raise RuntimeError('old-style modification time in ' + path)
-                    elif mtype == 0x0010:   # continuation block: offset, length
-                        offset, length = struct.unpack('<QQ', read(data, 16))
-                        blocks.append((offset, offset + length))
-                    pos = data + msize
-    return count
-
-
 def check(folder, peak):
     import h5py
     import meshio
@@ -339,7 +300,7 @@ def check(folder, peak):
 
     for name in (XDMF, XDMF_DG0):
         h5 = os.path.join(folder, name[:-5] + '.h5')
-        print('%s: %d modification times set to 0' % (os.path.basename(h5), zero_hdf5_mtimes(h5)))
+        print('%s: %d modification times set to 0' % (os.path.basename(h5), fc.zero_hdf5_mtimes(h5)))
     for name in (XDMF, XDMF[:-5] + '.h5', XDMF_DG0, XDMF_DG0[:-5] + '.h5', PVD, VTU):
         fc.report(os.path.join(folder, name))
 

@@ -306,3 +306,86 @@ def teem_helix(name, samples, encoding):
     path = os.path.join(folder, name)
     report(path)
     return path
+
+
+def solid_plate_tets(model, h_hole, h_far, h_dist):
+    """gmsh tetrahedra of the plate with a hole as a solid (PLATE_W x
+    PLATE_H x PLATE_T, hole radius HOLE_A), graded from h_hole at the
+    hole to h_far beyond h_dist: points (n, 3) with round-off below 1e-12
+    set to 0, tets (m, 4) as gmsh winds them. Used by vtkhdf_plate.py and
+    dolfinx_plate.py (the same mesh in both files)."""
+    import numpy as np
+    gmsh = gmsh_start(model)
+    try:
+        occ = gmsh.model.occ
+        w, h = PLATE_W / 2, PLATE_H / 2
+        box = occ.addBox(-w, -h, 0, PLATE_W, PLATE_H, PLATE_T)
+        cyl = occ.addCylinder(0, 0, 0, 0, 0, PLATE_T, HOLE_A)
+        occ.cut([(3, box)], [(3, cyl)])
+        occ.synchronize()
+        hole = [t for _, t in gmsh.model.getEntities(2) if gmsh.model.getType(2, t) == 'Cylinder']
+        assert len(hole) == 1, hole
+        field = gmsh.model.mesh.field
+        field.add('Distance', 1)
+        field.setNumbers(1, 'SurfacesList', hole)
+        field.setNumber(1, 'NumPointsPerCurve', 100)
+        field.add('Threshold', 2)
+        field.setNumber(2, 'InField', 1)
+        field.setNumber(2, 'SizeMin', h_hole)
+        field.setNumber(2, 'SizeMax', h_far)
+        field.setNumber(2, 'DistMin', 0.0)
+        field.setNumber(2, 'DistMax', h_dist)
+        field.setAsBackgroundMesh(2)
+        for option in ('Mesh.MeshSizeExtendFromBoundary', 'Mesh.MeshSizeFromPoints',
+                       'Mesh.MeshSizeFromCurvature'):
+            gmsh.option.setNumber(option, 0)
+        gmsh.option.setNumber('Mesh.Algorithm', 6)
+        gmsh.option.setNumber('Mesh.Algorithm3D', 1)
+        gmsh.model.mesh.generate(3)
+        points, conn = gmsh_mesh(gmsh, 3, 4)
+    finally:
+        gmsh.finalize()
+    tets = np.concatenate([conn[k] for k in sorted(conn)])
+    points[np.abs(points) < 1e-12] = 0.0
+    return points, tets
+
+
+def zero_hdf5_mtimes(path):
+    """Set the 'Object Modification Time' (message 0x0012) of every object
+    header in an HDF5 file written with the earliest format (version-1
+    object headers, no checksums) to 0, in place. Returns the number of
+    fields set. dolfin and dolfinx leave HDF5's time tracking on: their files
+    change from run to run by these times alone."""
+    import struct
+    import h5py
+    import h5py
+    addresses = set()
+    with h5py.File(path, 'r') as f:
+        addresses.add(h5py.h5o.get_info(f.id).addr)
+        f.visititems(lambda name, obj: addresses.add(h5py.h5o.get_info(obj.id).addr))
+    count = 0
+    with open(path, 'r+b') as fh:
+        def read(pos, n):
+            fh.seek(pos)
+            return fh.read(n)
+        for addr in sorted(addresses):
+            version, _, _, _, size = struct.unpack('<BBHII', read(addr, 12))
+            if version != 1:
+                raise RuntimeError('%s: object header version %d at %d' % (path, version, addr))
+            blocks = [(addr + 16, addr + 16 + size)]
+            while blocks:
+                pos, end = blocks.pop()
+                while pos + 8 <= end:
+                    mtype, msize = struct.unpack('<HH', read(pos, 4))
+                    data = pos + 8
+                    if mtype == 0x0012:     # version, 3 reserved bytes, uint32 seconds
+                        fh.seek(data + 4)
+                        fh.write(b'\0\0\0\0')
+                        count += 1
+                    elif mtype == 0x000E:
+                        raise RuntimeError('old-style modification time in ' + path)
+                    elif mtype == 0x0010:   # continuation block: offset, length
+                        offset, length = struct.unpack('<QQ', read(data, 16))
+                        blocks.append((offset, offset + length))
+                    pos = data + msize
+    return count

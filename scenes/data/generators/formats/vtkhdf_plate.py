@@ -92,41 +92,11 @@ def von_mises_of(t):
 
 
 def plate_tets():
-    gmsh = fc.gmsh_start('kirsch_plate_tets')
-    try:
-        occ = gmsh.model.occ
-        w, h = fc.PLATE_W / 2, fc.PLATE_H / 2
-        box = occ.addBox(-w, -h, 0, fc.PLATE_W, fc.PLATE_H, fc.PLATE_T)
-        cyl = occ.addCylinder(0, 0, 0, 0, 0, fc.PLATE_T, fc.HOLE_A)
-        occ.cut([(3, box)], [(3, cyl)])
-        occ.synchronize()
-        hole = [t for _, t in gmsh.model.getEntities(2) if gmsh.model.getType(2, t) == 'Cylinder']
-        assert len(hole) == 1, hole
-        field = gmsh.model.mesh.field
-        field.add('Distance', 1)
-        field.setNumbers(1, 'SurfacesList', hole)
-        field.setNumber(1, 'NumPointsPerCurve', 100)
-        field.add('Threshold', 2)
-        field.setNumber(2, 'InField', 1)
-        field.setNumber(2, 'SizeMin', H_HOLE)
-        field.setNumber(2, 'SizeMax', H_FAR)
-        field.setNumber(2, 'DistMin', 0.0)
-        field.setNumber(2, 'DistMax', H_DIST)
-        field.setAsBackgroundMesh(2)
-        for option in ('Mesh.MeshSizeExtendFromBoundary', 'Mesh.MeshSizeFromPoints',
-                       'Mesh.MeshSizeFromCurvature'):
-            gmsh.option.setNumber(option, 0)
-        gmsh.option.setNumber('Mesh.Algorithm', 6)
-        gmsh.option.setNumber('Mesh.Algorithm3D', 1)
-        gmsh.model.mesh.generate(3)
-        points, conn = fc.gmsh_mesh(gmsh, 3, 4)
-    finally:
-        gmsh.finalize()
-    tets = np.concatenate([conn[k] for k in sorted(conn)])
+    """The solid plate's tetrahedra, each wound as VTK winds it."""
+    points, tets = fc.solid_plate_tets('kirsch_plate_tets', H_HOLE, H_FAR, H_DIST)
     p = points[tets]
     vol = np.einsum('ij,ij->i', np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), p[:, 3] - p[:, 0])
     tets[vol < 0] = tets[vol < 0][:, [0, 2, 1, 3]]
-    points[np.abs(points) < 1e-12] = 0.0
     return points, tets
 
 
