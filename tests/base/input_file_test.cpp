@@ -15,6 +15,7 @@
 
 #include "base/input_file.h"
 #include "tests/temp_dir.h"
+#include "tests/without_waiting.h"
 
 namespace hsb {
 namespace {
@@ -22,20 +23,6 @@ namespace {
 std::filesystem::path scratch() { return test_temp_dir("input_file"); }
 
 const std::string kNotRegular = "not a regular file (a FIFO, socket or device)";
-
-// `call()`, which must not wait on the FIFO `fifo`: after a few seconds a
-// writer opens it, which releases a reader waiting there, and the test
-// fails.
-template <class Call>
-auto without_waiting(const std::filesystem::path& fifo, Call call) {
-  auto done = std::async(std::launch::async, call);
-  if (done.wait_for(std::chrono::seconds(10)) == std::future_status::timeout) {
-    ADD_FAILURE() << "waited for a writer on the FIFO " << fifo;
-    const int fd = open(fifo.c_str(), O_WRONLY | O_NONBLOCK);
-    if (fd >= 0) close(fd);
-  }
-  return done.get();
-}
 
 TEST(InputFile, ReadsARegularFileNoFurtherThanItsSize) {
   const std::filesystem::path path = scratch() / "bytes.txt";

@@ -19,6 +19,7 @@
 #include "field/reading/data_error.h"
 #include "field/reading/vtk_data.h"
 #include "tests/temp_dir.h"
+#include "tests/without_waiting.h"
 
 namespace hsb {
 namespace {
@@ -271,11 +272,10 @@ TEST_F(BadData, AFileItMayNotReadIsSaidSo) {
   fs::permissions(locked, fs::perms::owner_all);
 }
 
-// What error_of(path) says, which must not wait on the FIFO `fifo`: after
-// a few seconds a writer opens it, which releases a reader waiting there,
-// and the test fails.
+// What loading `path` says (BadData::error_of), which must not wait on the
+// FIFO `fifo`.
 std::string error_without_waiting(const fs::path& path, const fs::path& fifo) {
-  auto said = std::async(std::launch::async, [&] {
+  return without_waiting(fifo, [&] {
     try {
       load_vtk_data({path.string()});
     } catch (const DataError& e) {
@@ -283,12 +283,6 @@ std::string error_without_waiting(const fs::path& path, const fs::path& fifo) {
     }
     return std::string("no error");
   });
-  if (said.wait_for(std::chrono::seconds(10)) == std::future_status::timeout) {
-    ADD_FAILURE() << "waited for a writer on " << fifo;
-    const int fd = open(fifo.c_str(), O_WRONLY | O_NONBLOCK);
-    if (fd >= 0) close(fd);
-  }
-  return said.get();
 }
 
 // A FIFO where a data file names its data (a detached NRRD header's "data
