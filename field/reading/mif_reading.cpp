@@ -446,25 +446,16 @@ Image read_image_header(const Header& h, bool scalar) {
 // value). Bits are packed eight a byte, the first in the highest bit.
 template <class Use>
 void with_numbers(const unsigned char* data, NumberType type, Use&& use) {
-  const bool swap = type.swap;
-  const auto typed = [&](auto zero) {
-    using T = decltype(zero);
-    use([data, swap](std::uint64_t e) { return load_number<T>(data + e * sizeof(T), swap); });
-  };
   using K = NumberType::Kind;
-  switch (type.bytes * 4 + int(type.kind)) {
-    case 0 * 4 + int(K::bit):
-      use([data](std::uint64_t e) { return double((data[e >> 3] >> (7 - (e & 7))) & 1); });
-      break;
-#define HSB_AS(bytes_, kind_, T) \
-  case bytes_ * 4 + int(K::kind_): typed(T{}); break;
-    HSB_AS(1, integer, std::int8_t) HSB_AS(1, unsigned_integer, std::uint8_t)
-    HSB_AS(2, integer, std::int16_t) HSB_AS(2, unsigned_integer, std::uint16_t)
-    HSB_AS(4, integer, std::int32_t) HSB_AS(4, unsigned_integer, std::uint32_t) HSB_AS(4, floating, float)
-    HSB_AS(8, integer, std::int64_t) HSB_AS(8, unsigned_integer, std::uint64_t) HSB_AS(8, floating, double)
-#undef HSB_AS
-    default: throw std::logic_error("MRtrix: a number type without a reader");
+  if (type.kind == K::bit) {
+    use([data](std::uint64_t e) { return double((data[e >> 3] >> (7 - (e & 7))) & 1); });
+    return;
   }
+  const NumberKind kind = type.kind == K::floating  ? NumberKind::floating
+                          : type.kind == K::integer ? NumberKind::integer
+                                                    : NumberKind::unsigned_integer;
+  if (!with_typed_numbers(data, type.bytes, kind, type.swap, use))
+    throw std::logic_error("MRtrix: a number type without a reader");
 }
 
 // The data's bytes, held here: mapped (an uncompressed file), read (where

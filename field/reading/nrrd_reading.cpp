@@ -242,20 +242,11 @@ void with_values(const DecodedValues& d, Use&& use) {
     use([&](std::uint64_t i) { return d.text[i]; });
     return;
   }
-  const auto typed = [&](auto zero) {
-    using T = decltype(zero);
-    use([&](std::uint64_t i) { return load_number<T>(d.bytes + i * sizeof(T), d.swap); });
-  };
-  switch (d.type.bytes * 4 + int(d.type.kind)) {
-#define HSB_AS(bytes_, kind_, T) \
-  case bytes_ * 4 + int(NumberType::kind_): typed(T{}); break;
-    HSB_AS(1, integer, std::int8_t) HSB_AS(1, unsigned_integer, std::uint8_t)
-    HSB_AS(2, integer, std::int16_t) HSB_AS(2, unsigned_integer, std::uint16_t)
-    HSB_AS(4, integer, std::int32_t) HSB_AS(4, unsigned_integer, std::uint32_t) HSB_AS(4, floating, float)
-    HSB_AS(8, integer, std::int64_t) HSB_AS(8, unsigned_integer, std::uint64_t) HSB_AS(8, floating, double)
-#undef HSB_AS
-    default: throw std::logic_error("NRRD: a number type without a reader");
-  }
+  const NumberKind kind = d.type.kind == NumberType::floating ? NumberKind::floating
+                          : d.type.kind == NumberType::integer ? NumberKind::integer
+                                                               : NumberKind::unsigned_integer;
+  if (!with_typed_numbers(d.bytes, d.type.bytes, kind, d.swap, use))
+    throw std::logic_error("NRRD: a number type without a reader");
 }
 
 // Whether the header's data is spelled out as text (ASCII numbers).
