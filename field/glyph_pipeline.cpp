@@ -70,6 +70,11 @@ namespace {
 constexpr double kBytesPerTrajectoryPoint = 48.0;
 constexpr double kBytesPerSource = 1250.0;
 
+// Glyphs of each family sampled on the body's lattice in place of traced
+// ones (GlyphPlacing::on_body_lattice): the automatic mapping's
+// percentile of 4,096 values lies within 1.5 % of the rank of the whole's.
+constexpr std::size_t kLatticeGlyphs = 4096;
+
 std::size_t seed_count(const SeedSpec& spec) {
   double n = double(spec.points.size());
   for (const SeedGridSpec& g : spec.grids) n += double(g.n) * double(g.m);
@@ -546,7 +551,7 @@ std::vector<double> color_range_values(const GlyphScene& scene) {
 }
 
 GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
-                             const std::function<void(const Box3& domain)>& with_domain) {
+                             const std::function<void(const Box3& domain)>& with_domain, GlyphPlacing placing) {
   if (spec.placement == SourcePlacement::curve || spec.placement == SourcePlacement::list) {
     GlyphScene given = given_sources(spec, glyph_extent);
     if (with_domain) with_domain(given.domain);
@@ -633,20 +638,6 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
   if (region.mask_field) scene.values.trajectory.inside = [region](const Vec3& x) { return region.in_mask(x); };
   if (data.kind == DataKind::point_load) scene.values.singular_radius = data.point_load.singular_radius;
   const GlyphValues& values = scene.values;
-  std::vector<Vec3> seeds;
-  if (even) {
-    EvenTrajectories lines = trace_evenly(scene, body, body_eigenvalues, magnitude, tensors, flow);
-    seeds = std::move(lines.seeds);
-    scene.trajectories = std::move(lines.trajectories);
-  } else if (scene.placement != SourcePlacement::at_data_points) {
-    check_seed_and_trajectory_memory(values, scene.placement);
-    seeds = all_seeds(values.seeds, scene.domain);
-    // A seed outside the region has no line to start; nor a glyph.
-    if (region.restricts())
-      seeds.erase(std::remove_if(seeds.begin(), seeds.end(), [&](const Vec3& x) { return !magnitude(x); }),
-                  seeds.end());
-  }
-
   // The source at a point of a line of `family`: a tensor glyph or a
   // streamball, coloured by the chosen scalar (each line's own eigenvalue
   // for family_eigenvalue) or by the colour array there.
@@ -670,6 +661,43 @@ GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
     };
   };
   const ColorScalar color = scene.color;
+  const bool traced = scene.placement == SourcePlacement::along_trajectories ||
+                      (even && scene.placement == SourcePlacement::at_seeds);
+  if (placing == GlyphPlacing::on_body_lattice && traced) {
+    // A source of each family at lattice points in the body: the
+    // magnitudes and colours the lines would show, spread as evenly. A
+    // few thousand give the mapping's percentile to a fraction of a
+    // per cent; each costs a search of the mesh.
+    if (!even) body = lattice_in_body(scene.domain, magnitude, scene.plane_axis);
+    const std::size_t stride = body.points.size() / kLatticeGlyphs + 1;
+    for (const EigenFamily family : values.families) {
+      const SourceMaker make_here = maker(family);
+      for (std::size_t i = 0; i < body.points.size(); i += stride)
+        if (std::optional<GlyphSource> s = make_here(body.points[i])) scene.sources.push_back(std::move(*s));
+    }
+    std::vector<Vec3> eigenvalues;
+    eigenvalues.reserve(scene.sources.size());
+    for (const GlyphSource& s : scene.sources) eigenvalues.push_back(s.eigenvalues);
+    const std::optional<double> gap = even ? std::optional<double>(line_gap(*separation)) : std::nullopt;
+    scene.values.mapping = automatic_glyph_mapping(spec.size, eigenvalues, scene.domain, glyph_extent, gap,
+                                                   even && scene.placement == SourcePlacement::along_trajectories);
+    size_sources(scene.sources, scene.values.mapping);
+    return scene;
+  }
+  std::vector<Vec3> seeds;
+  if (even) {
+    EvenTrajectories lines = trace_evenly(scene, body, body_eigenvalues, magnitude, tensors, flow);
+    seeds = std::move(lines.seeds);
+    scene.trajectories = std::move(lines.trajectories);
+  } else if (scene.placement != SourcePlacement::at_data_points) {
+    check_seed_and_trajectory_memory(values, scene.placement);
+    seeds = all_seeds(values.seeds, scene.domain);
+    // A seed outside the region has no line to start; nor a glyph.
+    if (region.restricts())
+      seeds.erase(std::remove_if(seeds.begin(), seeds.end(), [&](const Vec3& x) { return !magnitude(x); }),
+                  seeds.end());
+  }
+
   const SourceMaker make = maker(values.families.front());
 
   std::optional<double> gap;  // between glyphs at data points, or lines evenly spaced

@@ -256,6 +256,23 @@ struct LoadedField {
 // unusable data files.
 LoadedField make_field(const DataSpec& spec);
 
+// The values an automatic colour range spans: the glyphs' scalars, and
+// the data's own (its sample and extremes), so that a stress
+// concentration the lines do not reach (a notch's or a hole's edge) is
+// coloured near its peak, unless the range's fence finds it singular
+// (renderer/image/colormap.h: auto_scale).
+std::vector<double> color_range_values(const GlyphScene& scene);
+
+// Where build_glyph_scene() puts the glyphs of traced placements. A time
+// series' steps lend only their magnitudes and colours to the settings
+// its images share (renderer/app/series_scale.h); tracing each of 5,000
+// steps for that took 45 minutes before any image. The lattice that
+// measures the body samples the same glyphs, evenly, with no line traced.
+enum class GlyphPlacing {
+  as_specified,    // as the scene says
+  on_body_lattice  // one glyph of each family at each point of the body's lattice, where the scene traces
+};
+
 // Runs the pipeline. `glyph_extent` is an isolated glyph's largest
 // semi-axis for a largest radius of 1 (the renderer's influence radius R
 // times its kernel's level radius): the automatic glyph size is a length in
@@ -264,14 +281,10 @@ LoadedField make_field(const DataSpec& spec);
 // thread count. `with_domain`, when given, is called with the data's
 // bounds as soon as they are known, before any trajectory is traced (the
 // renderer checks the scene's lengths against them there).
-// The values an automatic colour range spans: the glyphs' scalars, and
-// the data's own (its sample and extremes), so that a stress
-// concentration the lines do not reach (a notch's or a hole's edge) is
-// coloured near its peak, unless the range's fence finds it singular
-// (renderer/image/colormap.h: auto_scale).
-std::vector<double> color_range_values(const GlyphScene& scene);
-
+// `placing` on_body_lattice: no trajectory is traced (nor any warning
+// about them given); the mapping is made as for the traced glyphs.
 GlyphScene build_glyph_scene(const GlyphPipelineSpec& spec, double glyph_extent,
-                             const std::function<void(const Box3& domain)>& with_domain = {});
+                             const std::function<void(const Box3& domain)>& with_domain = {},
+                             GlyphPlacing placing = GlyphPlacing::as_specified);
 
 }  // namespace hsb
