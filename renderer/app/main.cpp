@@ -32,6 +32,7 @@
 #include "renderer/app/prepared_scene.h"
 #include "renderer/app/render_job.h"
 #include "renderer/app/scheduler_share.h"
+#include "renderer/app/series_settings_file.h"
 #include "renderer/image/image_io_module.h"
 #include "renderer/render/ray_scene.h"
 #include "renderer/scene/scene_error.h"
@@ -426,22 +427,25 @@ int run(int argc, char** argv) {
   std::size_t skipped = 0;
   std::map<std::string, std::string> written;  // image → the scene that wrote it
   std::map<std::string, std::vector<std::string>> series_settings;  // a series' shared settings, by its first step
+  const auto series_progress = [&](hsb::SeriesWork work, double fraction) {
+    progress.update(work == hsb::SeriesWork::reading ? hsb::JobStage::sharing : hsb::JobStage::waiting, fraction);
+  };
   const int status = for_each(mine, name_of, "images", [&](std::size_t i) {
     const hsb::BatchItem item = item_at(i);
     if (!item.error.empty()) throw hsb::SceneError(item.error);
     progress.start(i, std::filesystem::path(item.scene).filename().string() +
                           (item.variant.empty() ? "" : " [" + item.variant + "]"));
     // A series' steps share one glyph scale, colour range, size and camera,
-    // computed once per series (a batch may render its steps one after another).
+    // computed once per series (a batch may render its steps one after another),
+    // and kept in the output folder for the other tasks of a job array.
     std::vector<std::string> job_overrides = item.overrides;
     if (!item.series.empty()) {
       std::string key = item.series.front().scene;
       for (const std::string& o : item.series.front().overrides) key += "\n" + o;
-      const auto found = series_settings.find(key);
-      const std::vector<std::string>& shared =
-          found != series_settings.end() ? found->second
-                                         : series_settings.emplace(key, hsb::shared_series_settings(item.series)).first->second;
-      job_overrides.insert(job_overrides.end(), shared.begin(), shared.end());
+      auto found = series_settings.find(key);
+      if (found == series_settings.end())
+        found = series_settings.emplace(key, hsb::series_settings_in(output_dir, item.series, series_progress)).first;
+      job_overrides.insert(job_overrides.end(), found->second.begin(), found->second.end());
     }
     hsb::RenderJob job{item.scene, job_overrides, output_dir, item.variant, skip_existing,
                        [&](hsb::JobStage stage, double fraction) { progress.update(stage, fraction); }, &written};

@@ -20,6 +20,8 @@ double seconds_between(std::chrono::steady_clock::time_point a, std::chrono::ste
 
 const char* stage_name(JobStage stage) {
   switch (stage) {
+    case JobStage::sharing: return "reading the series' steps for their shared scale and colours";
+    case JobStage::waiting: return "waiting for another task reading the series' steps";
     case JobStage::preparing: return "reading data, tracing trajectories";
     case JobStage::rendering: return "rendering";
     case JobStage::writing: return "writing";
@@ -57,12 +59,12 @@ void BatchProgress::start(std::size_t index, const std::string& name) {
   name_ = name;
   stage_ = JobStage::preparing;
   fraction_ = 0.0;
-  item_start_ = render_start_ = last_print_ = Clock::now();
+  item_start_ = stage_start_ = last_print_ = Clock::now();
   print(true);
 }
 
 void BatchProgress::update(JobStage stage, double fraction) {
-  if (stage == JobStage::rendering && stage_ != JobStage::rendering) render_start_ = Clock::now();
+  if (stage != stage_ && (stage == JobStage::rendering || stage == JobStage::sharing)) stage_start_ = Clock::now();
   const bool changed = stage != stage_;
   stage_ = stage;
   fraction_ = fraction;
@@ -90,11 +92,11 @@ void BatchProgress::print(bool force) {
   std::string item = "[" + std::to_string(index_ + 1) + "/" + std::to_string(items_) + "] " + name_ + ": " +
                      stage_name(stage_);
   double left = NAN;  // of this image
-  if (stage_ == JobStage::rendering) {
+  if (stage_ == JobStage::rendering || stage_ == JobStage::sharing) {
     char percent[16];
     std::snprintf(percent, sizeof percent, " %.0f%%", 100.0 * fraction_);
     item += percent;
-    const double rendering = seconds_between(render_start_, now);
+    const double rendering = seconds_between(stage_start_, now);  // in this stage
     if (fraction_ > 0.02) left = rendering / fraction_ * (1.0 - fraction_);
   }
   item += ", " + human_duration(elapsed) + " elapsed";

@@ -12,7 +12,10 @@
 
 namespace hsb {
 
-enum class JobStage { preparing, rendering, writing };
+// `sharing`: reading a time series' steps for the scale, colours and
+// camera its images share (renderer/app/series_scale.h); `waiting`: for
+// another task doing that (renderer/app/series_settings_file.h).
+enum class JobStage { sharing, waiting, preparing, rendering, writing };
 
 class BatchProgress {
  public:
@@ -38,7 +41,7 @@ class BatchProgress {
   std::string name_;
   JobStage stage_ = JobStage::preparing;
   double fraction_ = 0.0;
-  Clock::time_point batch_start_, item_start_, render_start_, last_print_;
+  Clock::time_point batch_start_, item_start_, stage_start_, last_print_;
   double finished_seconds_ = 0.0;  // of the items done
   bool line_shown_ = false;
 };

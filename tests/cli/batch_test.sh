@@ -191,6 +191,55 @@ done
 "$hsb" render "${steps[0]}" "${steps[2]}" -o "$work/series/apart" "${small[@]}" --quiet || fail "two files apart"
 [[ $(shared "$work/series/apart/kirsch_plate_series_0.png") != $(shared "$work/series/apart/kirsch_plate_series_2.png") ]] ||
   fail "files given without --series share a scale"
+# The shared scale is that of the step with the largest stresses (the
+# third), as it would be alone: only that step is traced for it.
+scale_of() { oiiotool --info -v "$1" | grep -E '^scale = '; }
+[[ $(scale_of "$work/series/grows/kirsch_plate_series_data.step=0.png") == \
+   $(scale_of "$work/series/apart/kirsch_plate_series_2.png") ]] ||
+  fail "the series' scale is not its largest step's: $(scale_of "$work/series/grows/kirsch_plate_series_data.step=0.png") against $(scale_of "$work/series/apart/kirsch_plate_series_2.png")"
+# The tasks of a job array read the steps once between them: the first
+# keeps the shared settings in the output folder, named by what they come
+# from; the others (and a resubmitted task) read them from there.
+grows="$work/series/grows"
+kept=("$grows"/.hsb-series-*.toml)
+[[ ${#kept[@]} == 1 && -f ${kept[0]} ]] || fail "the series kept no settings file: $(ls -A "$grows")"
+sha=$(basename "${kept[0]}" .toml); sha=${sha#.hsb-series-}
+[[ $(head -1 "${kept[0]}") == "# series $sha" ]] || fail "the settings file names another series: $(head -1 "${kept[0]}")"
+grep -qx 'color.map="coolwarm"' "${kept[0]}" || fail "the settings file lacks the map: $(cat "${kept[0]}")"
+[[ ! -e "$grows/.hsb-series-$sha.lock" ]] || fail "the lock was left behind"
+map_of() { oiiotool --info -v "$1" | sed -n "s/^map = '\(.*\)'$/\1/p"; }
+# Another task's file is used: one with magma in it makes magma.
+sed -i 's/^color.map=.*/color.map="magma"/' "${kept[0]}"
+"$hsb" render "$src/scenes/data/formats/kirsch_plate_series.pvd" -o "$grows" "${small[@]}" --shard 2/3 --quiet ||
+  fail "task 2 of the plate's series"
+[[ $(map_of "$grows/kirsch_plate_series_data.step=1.png") == magma ]] ||
+  fail "task 2 read the steps again: map $(map_of "$grows/kirsch_plate_series_data.step=1.png")"
+# A file that sets any other key is not hsb's: read again and replaced.
+printf '# series %s\noutput.file="../../elsewhere.png"\n' "$sha" > "${kept[0]}"
+"$hsb" render "$src/scenes/data/formats/kirsch_plate_series.pvd" -o "$grows" "${small[@]}" --shard 2/3 --quiet ||
+  fail "task 2 with a foreign settings file"
+grep -qx 'color.map="coolwarm"' "${kept[0]}" || fail "a foreign settings file was kept: $(cat "${kept[0]}")"
+[[ $(map_of "$grows/kirsch_plate_series_data.step=1.png") == coolwarm ]] || fail "a foreign settings file was used"
+# While one task reads the steps (here: the test holds the lock), another
+# waits for its file rather than reading them too.
+rm "${kept[0]}"
+exec 9> "$grows/.hsb-series-$sha.lock"
+flock 9
+"$hsb" render "$src/scenes/data/formats/kirsch_plate_series.pvd" -o "$grows" "${small[@]}" --shard 3/3 --quiet 9>&- &
+waiter=$!
+for _ in $(seq 300); do
+  ls -l /proc/$waiter/fd 2>/dev/null | grep -q "hsb-series-$sha.lock" && break
+  sleep 0.1
+done
+ls -l /proc/$waiter/fd 2>/dev/null | grep -q "hsb-series-$sha.lock" || fail "task 3 never reached the lock"
+sleep 0.5
+kill -0 $waiter 2>/dev/null || fail "task 3 did not wait for the lock"
+[[ ! -e ${kept[0]} ]] || fail "task 3 read the steps while another held the lock"
+printf '# series %s\ncolor.map="viridis"\n' "$sha" > "${kept[0]}"
+exec 9>&-
+wait $waiter || fail "task 3, after the lock"
+[[ $(map_of "$grows/kirsch_plate_series_data.step=2.png") == viridis ]] ||
+  fail "task 3 did not take the file the lock's holder wrote: $(map_of "$grows/kirsch_plate_series_data.step=2.png")"
 out=$("$hsb" render "$work/series/shaft.pvd" -o "$work/series/out" "${small[@]}" --set data.step=7 2>&1)
 grep -q "shaft.pvd: data.step 7 is beyond its 2 steps (0 to 1)" <<<"$out" || fail "step 7 of 2: $out"
 
