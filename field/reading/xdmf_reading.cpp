@@ -45,6 +45,7 @@
 #include <hdf5.h>
 #include <libxml/parser.h>
 #include <libxml/tree.h>
+#include <libxml/uri.h>
 #include <libxml/xinclude.h>
 #include <libxml/xmlerror.h>
 #include <libxml/xpath.h>
@@ -137,6 +138,29 @@ void keep_first_error(void* kept, xmlErrorPtr error) {
     *first = trimmed(error->message) + (error->line > 0 ? " (line " + std::to_string(error->line) + ")" : "");
 }
 
+// The file an xi:include names that is no regular file (a FIFO would
+// wait for a writer for ever, a device never end), and why; libxml2
+// itself would open it. Set by the entity loader below, while a document
+// is read; the reading child reads one at a time.
+std::string refused_include;
+xmlExternalEntityLoader next_loader = nullptr;
+
+xmlParserInputPtr regular_files_only(const char* url, const char* id, xmlParserCtxtPtr context) {
+  if (url) {
+    std::string path = url;
+    if (path.rfind("file://", 0) == 0) path.erase(0, 7);
+    if (char* plain = xmlURIUnescapeString(path.c_str(), 0, nullptr)) {
+      path = plain;
+      xmlFree(plain);
+    }
+    if (const std::string why = unreadable_input(path); !why.empty()) {
+      if (refused_include.empty()) refused_include = path + ": " + why;
+      return nullptr;
+    }
+  }
+  return next_loader(url, id, context);
+}
+
 // The .xdmf parsed, its <Xdmf> root checked, and XIncludes processed
 // (unless `include` is false); freed at the end of scope. libxml2's
 // messages are kept, not printed, meanwhile.
@@ -145,6 +169,9 @@ class XdmfDocument {
   XdmfDocument(const std::string& path, bool include)
       : handler_(xmlStructuredError), handler_context_(xmlStructuredErrorContext) {
     xmlSetStructuredErrorFunc(&error_, keep_first_error);
+    refused_include.clear();
+    next_loader = xmlGetExternalEntityLoader();
+    xmlSetExternalEntityLoader(regular_files_only);
     doc_ = xmlReadFile(path.c_str(), nullptr, XML_PARSE_NONET | XML_PARSE_BIG_LINES);
     if (!doc_)
       fail(path, "cannot parse it as XML, which an XDMF file is (" +
@@ -154,11 +181,15 @@ class XdmfDocument {
       fail(path, "not an XDMF file: its root element is <" +
                      std::string(root ? reinterpret_cast<const char*>(root->name) : "") + ">, not <Xdmf>");
     if (include && xmlXIncludeProcessFlags(doc_, XML_PARSE_NONET) < 0)
-      fail(path, "cannot resolve its xi:include: " + (error_.empty() ? std::string("libxml2 says no more") : error_));
+      fail(path, "cannot resolve its xi:include: " +
+                     (!refused_include.empty() ? refused_include
+                      : error_.empty()         ? std::string("libxml2 says no more")
+                                               : error_));
+    restore();
   }
   ~XdmfDocument() {
     if (doc_) xmlFreeDoc(doc_);
-    xmlSetStructuredErrorFunc(handler_context_, handler_);
+    restore();
   }
   XdmfDocument(const XdmfDocument&) = delete;
   XdmfDocument& operator=(const XdmfDocument&) = delete;
@@ -168,8 +199,13 @@ class XdmfDocument {
  private:
   [[noreturn]] void fail(const std::string& path, const std::string& what) {
     if (doc_) xmlFreeDoc(doc_);
-    xmlSetStructuredErrorFunc(handler_context_, handler_);
+    doc_ = nullptr;
+    restore();
     throw DataError(path + ": " + what);
+  }
+  void restore() {
+    xmlSetStructuredErrorFunc(handler_context_, handler_);
+    if (next_loader) xmlSetExternalEntityLoader(next_loader);
   }
   xmlStructuredErrorFunc handler_;
   void* handler_context_;
