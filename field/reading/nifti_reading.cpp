@@ -34,6 +34,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -264,8 +265,29 @@ vtkSmartPointer<vtkDataSet> read_nifti_data(const std::string& path, const ReadR
   return read_nifti(path, request.scalar, vtk);
 }
 
+// A .hdr's voxels are in the .img beside it (VTK's reader takes .img,
+// else .img.gz, in either case): asked before VTK opens it (a FIFO there
+// kept the reader waiting) and hashed for --skip-existing (a changed .img
+// was found up to date).
+std::vector<std::string> nifti_parts(const std::string& path) {
+  std::string stem = path;
+  if (stem.size() > 3 && (stem.compare(stem.size() - 3, 3, ".gz") == 0 || stem.compare(stem.size() - 3, 3, ".GZ") == 0))
+    stem.resize(stem.size() - 3);
+  const std::filesystem::path header(stem);
+  std::string extension = header.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (extension != ".hdr") return {};
+  std::vector<std::string> parts;
+  for (const char* img : {".img", ".IMG", ".img.gz", ".IMG.gz"}) {
+    const std::filesystem::path candidate = std::filesystem::path(header).replace_extension(img);
+    std::error_code error;
+    if (std::filesystem::exists(std::filesystem::symlink_status(candidate, error))) parts.push_back(candidate.string());
+  }
+  return parts;
+}
+
 }  // namespace
 
-const FormatReader nifti_reader{read_nifti_data};
+const FormatReader nifti_reader{read_nifti_data, nullptr, nifti_parts};
 
 }  // namespace hsb
