@@ -37,10 +37,53 @@ OCIO::ConstConfigRcPtr load_config(const std::string& file, std::string& name) {
   return OCIO::Config::CreateFromStream(text);
 }
 
+// The files `transform` reads (a FileTransform's LUT, within groups), each
+// asked as the configuration's own file is: OCIO opens a LUT that is a
+// FIFO and waits for a writer for ever. A file OCIO cannot find is left
+// to OCIO, which names it when the transform is used.
+void check_lut_files(const OCIO::Config& config, const OCIO::ConstTransformRcPtr& transform,
+                     const std::string& config_name) {
+  if (!transform) return;
+  if (const auto group = OCIO::DynamicPtrCast<const OCIO::GroupTransform>(transform)) {
+    for (int i = 0; i < group->getNumTransforms(); ++i) check_lut_files(config, group->getTransform(i), config_name);
+  } else if (const auto file = OCIO::DynamicPtrCast<const OCIO::FileTransform>(transform)) {
+    std::string path;
+    try {
+      path = config.getCurrentContext()->resolveFileLocation(file->getSrc());
+    } catch (const OCIO::Exception&) {
+      return;
+    }
+    if (const std::string why = unreadable_input(path); !why.empty() && why != "no such file")
+      throw std::runtime_error(config_name + " names the LUT " + path + ": " + why);
+  }
+}
+
+// Every transform of the configuration's colour spaces, view transforms
+// and looks, for check_lut_files.
+void check_config_luts(const OCIO::Config& config, const std::string& config_name) {
+  for (int i = 0; i < config.getNumColorSpaces(OCIO::SEARCH_REFERENCE_SPACE_ALL, OCIO::COLORSPACE_ALL); ++i) {
+    const char* name = config.getColorSpaceNameByIndex(OCIO::SEARCH_REFERENCE_SPACE_ALL, OCIO::COLORSPACE_ALL, i);
+    const OCIO::ConstColorSpaceRcPtr space = config.getColorSpace(name);
+    if (!space) continue;
+    for (const auto direction : {OCIO::COLORSPACE_DIR_TO_REFERENCE, OCIO::COLORSPACE_DIR_FROM_REFERENCE})
+      check_lut_files(config, space->getTransform(direction), config_name);
+  }
+  for (int i = 0; i < config.getNumViewTransforms(); ++i)
+    if (const OCIO::ConstViewTransformRcPtr view = config.getViewTransform(config.getViewTransformNameByIndex(i)))
+      for (const auto direction : {OCIO::VIEWTRANSFORM_DIR_TO_REFERENCE, OCIO::VIEWTRANSFORM_DIR_FROM_REFERENCE})
+        check_lut_files(config, view->getTransform(direction), config_name);
+  for (int i = 0; i < config.getNumLooks(); ++i)
+    if (const OCIO::ConstLookRcPtr look = config.getLook(config.getLookNameByIndex(i))) {
+      check_lut_files(config, look->getTransform(), config_name);
+      check_lut_files(config, look->getInverseTransform(), config_name);
+    }
+}
+
 }  // namespace
 
 ColorManagement::ColorManagement(const std::string& display, const std::string& view, const std::string& config)
     : config_(load_config(config, config_name_)) {
+  check_config_luts(*config_, "the colour configuration " + config_name_);
   display_ = display.empty() ? config_->getDefaultDisplay() : display;
   view_ = view.empty() ? config_->getDefaultView(display_.c_str()) : view;
 

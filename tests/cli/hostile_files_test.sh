@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Files that are not what they seem: a FIFO or a device where a data file
-# names its data, or where $OCIO names the colour configuration; an old
-# picture --skip-existing must not read whole; a full disk under the
-# POV-Ray export; and what another user plants where hsb keeps its
-# temporaries. Each ends in one clear error or a right result, never a
-# hang, a half-written file, a file written through a link, or a planted
-# file read as the user's.
+# names its data (a piece, an xi:include, a .hdr's .img), or where $OCIO
+# names the colour configuration or its LUT; an old picture --skip-existing must not
+# read whole; a full disk under the POV-Ray export; and what another user
+# plants where hsb keeps its temporaries. Each ends in one clear error or
+# a right result, never a hang, a half-written file, a file written
+# through a link, or a planted file read as the user's.
 source "$(dirname "$0")/common.sh"
 small=(--set render.width=64 --set render.height=64 --set render.samples=1)
 fig07=$src/scenes/fig07_point_load_normalized.toml
@@ -53,6 +53,41 @@ status=$?
 [[ $status == 1 ]] || fail "--skip-existing, a piece /dev/zero: exit $status: $out"
 grep -q "zero.pvtu: names /dev/zero: $not_regular" <<<"$out" || fail "--skip-existing, a piece /dev/zero: $out"
 
+# --- An XDMF file whose xi:include names a FIFO (at the top or inside an
+# included file): libxml2 opened it and waited until the reading child's
+# 30 s deadline. A NIfTI .hdr whose .img is a FIFO: the same.
+mkdir -p "$work/xdmf"
+mkfifo "$work/xdmf/fifo.xml"
+printf '<?xml version="1.0"?>\n<Xdmf Version="3.0" xmlns:xi="http://www.w3.org/2001/XInclude"><Domain><xi:include href="%s"/></Domain></Xdmf>\n' \
+  fifo.xml > "$work/xdmf/top.xdmf"
+printf '<?xml version="1.0"?>\n<Xdmf Version="3.0" xmlns:xi="http://www.w3.org/2001/XInclude"><Domain><xi:include href="%s"/></Domain></Xdmf>\n' \
+  inner.xml > "$work/xdmf/nested.xdmf"
+printf '<Grid Name="g" xmlns:xi="http://www.w3.org/2001/XInclude"><xi:include href="fifo.xml" parse="text"/></Grid>\n' \
+  > "$work/xdmf/inner.xml"
+for xdmf in top nested; do
+  out=$(timeout 20 "$hsb" info "$work/xdmf/$xdmf.xdmf" 2>&1); status=$?
+  [[ $status == 1 ]] || fail "an xi:include of a FIFO ($xdmf): exit $status: $out"
+  grep -q "$work/xdmf/fifo.xml: $not_regular" <<<"$out" || fail "an xi:include of a FIFO ($xdmf): $out"
+done
+mkdir -p "$work/pair"
+gunzip -c "$formats/dti_fsl_dtifit.nii.gz" > "$work/pair/dti.nii"
+# The .nii's header as a pair's (magic ni1, voxels from byte 0 of the .img).
+head -c 344 "$work/pair/dti.nii" > "$work/pair/dti.hdr"
+printf 'ni1\0' >> "$work/pair/dti.hdr"
+printf '\0\0\0\0' | dd of="$work/pair/dti.hdr" bs=1 seek=108 conv=notrunc status=none
+tail -c +353 "$work/pair/dti.nii" > "$work/pair/voxels"
+mkfifo "$work/pair/dti.img"
+out=$(timeout 20 "$hsb" info "$work/pair/dti.hdr" 2>&1); status=$?
+[[ $status == 1 ]] || fail "a .hdr whose .img is a FIFO: exit $status: $out"
+grep -q "dti.hdr: names $work/pair/dti.img: $not_regular" <<<"$out" || fail "a .hdr whose .img is a FIFO: $out"
+# The .img is the data's: --skip-existing renders again when it changes.
+rm "$work/pair/dti.img"
+cp "$work/pair/voxels" "$work/pair/dti.img"
+"$hsb" render "$work/pair/dti.hdr" "${small[@]}" -o "$work/pair/out" --quiet || fail "a .hdr and .img"
+printf 'A' | dd of="$work/pair/dti.img" bs=1 seek=1000 conv=notrunc status=none
+out=$("$hsb" render "$work/pair/dti.hdr" "${small[@]}" -o "$work/pair/out" --skip-existing 2>&1)
+grep -q "dti.png  sources=" <<<"$out" || fail "a changed .img was found up to date: $out"
+
 # --- $OCIO naming a FIFO: refused, with or without --skip-existing
 # (which hashes the configuration).
 mkfifo "$work/config.ocio"
@@ -61,6 +96,18 @@ for skip in "" --skip-existing; do
   [[ $status == 1 ]] || fail "\$OCIO a FIFO $skip: exit $status: $out"
   grep -q "\$OCIO names $work/config.ocio: $not_regular" <<<"$out" || fail "\$OCIO a FIFO $skip: $out"
 done
+
+# A configuration whose colour space reads a LUT that is a FIFO: OCIO
+# opened it and waited for ever.
+mkdir -p "$work/lut"
+sed -e 's|^search_path: ""|search_path: "."|' \
+  -e 's|from_reference: !<ExponentWithLinearTransform> {gamma: 2.4, offset: 0.055, direction: inverse}|from_reference: !<FileTransform> {src: curve.spi1d, interpolation: linear}|' \
+  "$src/renderer/image/hyperstreamball.ocio" > "$work/lut/lut.ocio"
+grep -q FileTransform "$work/lut/lut.ocio" || fail "the test's configuration has no LUT"
+mkfifo "$work/lut/curve.spi1d"
+out=$(OCIO=$work/lut/lut.ocio timeout 60 "$hsb" render "$fig07" "${small[@]}" -o "$work/lut/out" 2>&1); status=$?
+[[ $status == 1 ]] || fail "a LUT that is a FIFO: exit $status: $out"
+grep -q "names the LUT $work/lut/curve.spi1d: $not_regular" <<<"$out" || fail "a LUT that is a FIFO: $out"
 
 # --- --skip-existing reads of an old picture only what tells its hash: a
 # 1 GB PDF (sparse) was read whole into memory. Junk under a picture's name
