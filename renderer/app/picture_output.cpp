@@ -12,6 +12,7 @@
 #include "base/sha1.h"
 #include "field/reading/data_error.h"
 #include "field/reading/vtk_data.h"
+#include "renderer/image/color_management.h"
 #include "renderer/image/display_image.h"
 #include "renderer/image/image_output.h"
 #include "renderer/image/vector_figure.h"
@@ -89,7 +90,8 @@ std::string data_sha1(const SceneSpec& spec) {
 }
 
 // The colour configuration the picture goes through: output.ocio_config,
-// else $OCIO, else the built-in one (the same in every build).
+// else $OCIO, else the built-in one (the same in every build); with the
+// LUTs it reads, whose change changes the picture as the file's does.
 std::string color_config_sha1(const SceneSpec& spec) {
   const char* environment = std::getenv("OCIO");
   const bool from_scene = !spec.output.ocio_config.empty();
@@ -99,7 +101,15 @@ std::string color_config_sha1(const SceneSpec& spec) {
   if (!config.why().empty())
     throw std::runtime_error(std::string(from_scene ? "output.ocio_config" : "$OCIO") + " names " + file + ": " +
                              config.why());
-  return sha1_of(config);
+  const std::vector<std::string> luts = color_config_luts(file);
+  if (luts.empty()) return sha1_of(config);
+  std::string hashes = sha1_of(config) + "\n";
+  for (const std::string& lut : luts) {
+    const InputFile read(lut);
+    if (!read.why().empty()) throw std::runtime_error(lut + ": " + read.why());
+    hashes += sha1_of(read) + "\n";
+  }
+  return sha1_hex(hashes);
 }
 
 // The scene hash from the data file's, so the file is read once. With the

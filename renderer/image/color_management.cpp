@@ -3,6 +3,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <sstream>
 #include <stdexcept>
@@ -37,53 +38,60 @@ OCIO::ConstConfigRcPtr load_config(const std::string& file, std::string& name) {
   return OCIO::Config::CreateFromStream(text);
 }
 
-// The files `transform` reads (a FileTransform's LUT, within groups), each
-// asked as the configuration's own file is: OCIO opens a LUT that is a
-// FIFO and waits for a writer for ever. A file OCIO cannot find is left
-// to OCIO, which names it when the transform is used.
-void check_lut_files(const OCIO::Config& config, const OCIO::ConstTransformRcPtr& transform,
-                     const std::string& config_name) {
+// The files `transform` reads (a FileTransform's LUT, within groups),
+// found in the configuration's search path, into `files`. A file OCIO
+// cannot find is left to OCIO, which names it when the transform is used.
+void add_lut_files(const OCIO::Config& config, const OCIO::ConstTransformRcPtr& transform,
+                   std::vector<std::string>& files) {
   if (!transform) return;
   if (const auto group = OCIO::DynamicPtrCast<const OCIO::GroupTransform>(transform)) {
-    for (int i = 0; i < group->getNumTransforms(); ++i) check_lut_files(config, group->getTransform(i), config_name);
+    for (int i = 0; i < group->getNumTransforms(); ++i) add_lut_files(config, group->getTransform(i), files);
   } else if (const auto file = OCIO::DynamicPtrCast<const OCIO::FileTransform>(transform)) {
-    std::string path;
     try {
-      path = config.getCurrentContext()->resolveFileLocation(file->getSrc());
+      files.push_back(config.getCurrentContext()->resolveFileLocation(file->getSrc()));
     } catch (const OCIO::Exception&) {
-      return;
     }
-    if (const std::string why = unreadable_input(path); !why.empty() && why != "no such file")
-      throw std::runtime_error(config_name + " names the LUT " + path + ": " + why);
   }
 }
 
-// Every transform of the configuration's colour spaces, view transforms
-// and looks, for check_lut_files.
-void check_config_luts(const OCIO::Config& config, const std::string& config_name) {
+// Every LUT file the configuration's colour spaces, view transforms and
+// looks read, in order, each once.
+std::vector<std::string> lut_files(const OCIO::Config& config) {
+  std::vector<std::string> files;
   for (int i = 0; i < config.getNumColorSpaces(OCIO::SEARCH_REFERENCE_SPACE_ALL, OCIO::COLORSPACE_ALL); ++i) {
     const char* name = config.getColorSpaceNameByIndex(OCIO::SEARCH_REFERENCE_SPACE_ALL, OCIO::COLORSPACE_ALL, i);
-    const OCIO::ConstColorSpaceRcPtr space = config.getColorSpace(name);
-    if (!space) continue;
-    for (const auto direction : {OCIO::COLORSPACE_DIR_TO_REFERENCE, OCIO::COLORSPACE_DIR_FROM_REFERENCE})
-      check_lut_files(config, space->getTransform(direction), config_name);
+    if (const OCIO::ConstColorSpaceRcPtr space = config.getColorSpace(name))
+      for (const auto direction : {OCIO::COLORSPACE_DIR_TO_REFERENCE, OCIO::COLORSPACE_DIR_FROM_REFERENCE})
+        add_lut_files(config, space->getTransform(direction), files);
   }
   for (int i = 0; i < config.getNumViewTransforms(); ++i)
     if (const OCIO::ConstViewTransformRcPtr view = config.getViewTransform(config.getViewTransformNameByIndex(i)))
       for (const auto direction : {OCIO::VIEWTRANSFORM_DIR_TO_REFERENCE, OCIO::VIEWTRANSFORM_DIR_FROM_REFERENCE})
-        check_lut_files(config, view->getTransform(direction), config_name);
+        add_lut_files(config, view->getTransform(direction), files);
   for (int i = 0; i < config.getNumLooks(); ++i)
     if (const OCIO::ConstLookRcPtr look = config.getLook(config.getLookNameByIndex(i))) {
-      check_lut_files(config, look->getTransform(), config_name);
-      check_lut_files(config, look->getInverseTransform(), config_name);
+      add_lut_files(config, look->getTransform(), files);
+      add_lut_files(config, look->getInverseTransform(), files);
     }
+  std::vector<std::string> once;
+  for (const std::string& f : files)
+    if (std::find(once.begin(), once.end(), f) == once.end()) once.push_back(f);
+  return once;
+}
+
+// Each LUT asked as the configuration's own file is: OCIO opens a LUT
+// that is a FIFO and waits for a writer for ever.
+void check_lut_files(const OCIO::Config& config, const std::string& config_name) {
+  for (const std::string& path : lut_files(config))
+    if (const std::string why = unreadable_input(path); !why.empty() && why != "no such file")
+      throw std::runtime_error("the colour configuration " + config_name + " names the LUT " + path + ": " + why);
 }
 
 }  // namespace
 
 ColorManagement::ColorManagement(const std::string& display, const std::string& view, const std::string& config)
     : config_(load_config(config, config_name_)) {
-  check_config_luts(*config_, "the colour configuration " + config_name_);
+  check_lut_files(*config_, config_name_);
   display_ = display.empty() ? config_->getDefaultDisplay() : display;
   view_ = view.empty() ? config_->getDefaultView(display_.c_str()) : view;
 
@@ -97,6 +105,17 @@ ColorManagement::ColorManagement(const std::string& display, const std::string& 
   transform->setView(view_.c_str());
   to_display_ = config_->getProcessor(transform)->getDefaultCPUProcessor();
   display_tables_ = ChannelTables::of(to_display_);
+}
+
+std::vector<std::string> color_config_luts(const std::string& config_file) {
+  OCIO::ConstConfigRcPtr config;
+  try {
+    config = OCIO::Config::CreateFromFile(config_file.c_str());
+  } catch (const OCIO::Exception&) {
+    return {};  // OCIO says what is wrong with it when the picture is made
+  }
+  check_lut_files(*config, config_file);
+  return lut_files(*config);
 }
 
 Rgb ColorManagement::to_scene_linear(const Rgb& picked) const {

@@ -44,6 +44,12 @@ class ColorManagement {
   std::optional<ChannelTables> display_tables_;  // to_display_ where it treats each channel alone
 };
 
+// The LUT files the colour configuration in `config_file` reads (its
+// FileTransforms, found in its search path), for the picture's hash: a
+// changed LUT changes the picture. None where OCIO cannot read it;
+// throws, naming it, for a LUT that is a FIFO, socket or device.
+std::vector<std::string> color_config_luts(const std::string& config_file);
+
 // The built-in config's text (for tests and for `hsb --print-ocio-config`).
 const char* builtin_ocio_config();
 

@@ -97,6 +97,18 @@ OCIO=$work/other.ocio "$hsb" render "${again[@]}" > "$work/log" || fail "changed
 grep -q "beam.png  sources=" "$work/log" || fail "a changed OCIO config was skipped: $(cat "$work/log")"
 OCIO=$work/other.ocio "$hsb" render "${again[@]}" > "$work/log" || fail "same OCIO config"
 grep -q "up to date, skipped" "$work/log" || fail "the same OCIO config was not skipped: $(cat "$work/log")"
+# ... and so is a changed LUT the configuration reads (sRGB's curve, here
+# an identity table).
+sed -e 's|^search_path: ""|search_path: "."|' \
+  -e 's|from_reference: !<ExponentWithLinearTransform> {gamma: 2.4, offset: 0.055, direction: inverse}|from_reference: !<FileTransform> {src: curve.spi1d, interpolation: linear}|' \
+  "$src/renderer/image/hyperstreamball.ocio" > "$work/lut.ocio"
+printf 'Version 1\nFrom 0.0 1.0\nLength 2\nComponents 1\n{\n0.0\n1.0\n}\n' > "$work/curve.spi1d"
+OCIO=$work/lut.ocio "$hsb" render "${again[@]}" > "$work/log" || fail "a config with a LUT"
+OCIO=$work/lut.ocio "$hsb" render "${again[@]}" > "$work/log" || fail "a config with a LUT, again"
+grep -q "up to date, skipped" "$work/log" || fail "the same LUT was not skipped: $(cat "$work/log")"
+printf 'Version 1\nFrom 0.0 1.0\nLength 2\nComponents 1\n{\n0.0\n0.5\n}\n' > "$work/curve.spi1d"
+OCIO=$work/lut.ocio "$hsb" render "${again[@]}" > "$work/log" || fail "a changed LUT"
+grep -q "beam.png  sources=" "$work/log" || fail "a changed LUT was skipped: $(cat "$work/log")"
 
 # --- Interrupted: stops at once, the old image intact, no temporary file.
 # A background job of a script starts with SIGINT ignored until hsb installs
