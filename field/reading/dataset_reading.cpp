@@ -22,6 +22,7 @@
 #include <functional>
 #include <iomanip>
 #include <map>
+#include <mutex>
 #include <new>
 #include <sstream>
 
@@ -326,11 +327,40 @@ const FormatReader* reader_of(const std::string& path) {
   return format ? format->reader : nullptr;
 }
 
-// A series' file of step `step`.
+// Every step's file of the series in `path`, listed by one child and
+// kept while the series file stays as it was (its size and modification
+// time): a 5,000-step .pvd asked a child per step, 5,000 forks of a
+// process that may hold gigabytes, each time its steps were hashed or
+// read.
+std::vector<std::string> step_files_of(const std::string& path, const FormatReader& series) {
+  struct Listed {
+    std::uintmax_t size = 0;
+    std::filesystem::file_time_type modified;
+    std::vector<std::string> files;
+  };
+  static std::mutex guard;
+  static std::map<std::string, Listed> listed;
+  std::error_code error;
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  const std::filesystem::file_time_type modified = error ? std::filesystem::file_time_type()
+                                                         : std::filesystem::last_write_time(path, error);
+  const std::lock_guard<std::mutex> lock(guard);
+  const auto found = listed.find(path);
+  if (!error && found != listed.end() && found->second.size == size && found->second.modified == modified)
+    return found->second.files;
+  std::vector<std::string> files = lines_in_child(path, [&] { return series.step_files(path); });
+  if (!error) listed[path] = {size, modified, files};
+  return files;
+}
+
+// A series' file of step `step` (-1: the first).
 std::string step_file_of(const std::string& path, const FormatReader& series, int step) {
-  const std::vector<std::string> file = lines_in_child(path, [&] { return std::vector{series.step_file(path, step)}; });
-  if (file.size() != 1) throw DataError(path + ": cannot read which file holds step " + std::to_string(step));
-  return file.front();
+  const std::vector<std::string> all = step_files_of(path, series);
+  if (all.empty()) throw DataError(path + ": a time series of no steps");
+  if (step >= int(all.size()))
+    throw DataError(path + ": data.step " + std::to_string(step) + " is beyond its " + std::to_string(all.size()) +
+                    " steps (0 to " + std::to_string(all.size() - 1) + ")");
+  return all[std::size_t(std::max(step, 0))];
 }
 
 }  // namespace
@@ -356,7 +386,7 @@ std::vector<std::string> data_files_read(const std::string& path, int step) {
       const std::vector<std::string> parts = lines_in_child(path, [&] { return reader->parts(path); });
       files.insert(files.end(), parts.begin(), parts.end());
     }
-    if (reader->step_file) step_file = step_file_of(path, *reader, step);
+    if (reader->step_files) step_file = step_file_of(path, *reader, step);
   }
   if (!step_file.empty() && reader_of(step_file) != reader) {
     const std::vector<std::string> inner = data_files_read(step_file, -1);
@@ -400,7 +430,7 @@ vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSessi
   const DataFormat* format = format_by_extension(path);
   if (!format || !format->readable()) throw DataError(unreadable_format_message(path));
   const FormatReader& reader = *format->reader;
-  if (reader.step_file) {
+  if (reader.step_files) {
     const std::string file = step_file_of(path, reader, request.step);
     if (reader_of(file) == &reader) throw DataError(path + ": its step names another series, " + file);
     return read_dataset(file, vtk, {-1, request.block, request.scalar});

@@ -25,18 +25,18 @@ struct ReadRequest {
 };
 
 // The hooks are called with a VtkSession held, and those that parse the
-// user's file (all but step_file's arithmetic) in a child process
+// user's file in a child process
 // (dataset_reading.cpp): VTK's parsers trust what a file declares.
 struct FormatReader {
   // The data set in `path`, read as the request asks (pieces and blocks
   // merged into one grid), before the checks every format gets. Checks
   // the file's own signature first. Runs in a child process. Throws
   // DataError naming the file. Null for a series, whose steps are files
-  // of other formats (step_file).
+  // of other formats (step_files).
   vtkSmartPointer<vtkDataSet> (*read)(const std::string& path, const ReadRequest& request, const VtkSession& vtk) =
       nullptr;
-  // A series only: the file holding step `step` (-1: the first).
-  std::string (*step_file)(const std::string& path, int step) = nullptr;
+  // A series only: the file holding each of its steps, in order.
+  std::vector<std::string> (*step_files)(const std::string& path) = nullptr;
   // The other files the data is made of (pieces, blocks, a detached data
   // file): each asked before the data is read (none may be a FIFO or a
   // device), and hashed for --skip-existing; null: none.

@@ -170,12 +170,10 @@ std::vector<std::pair<double, std::string>> series_files(const std::string& path
   return steps;
 }
 
-std::string series_step_file(const std::string& path, int step) {
-  const std::vector<std::pair<double, std::string>> steps = series_files(path);
-  if (step >= int(steps.size()))
-    throw DataError(path + ": data.step " + std::to_string(step) + " is beyond its " + std::to_string(steps.size()) +
-                    " steps (0 to " + std::to_string(steps.size() - 1) + ")");
-  return steps[std::size_t(std::max(step, 0))].second;
+std::vector<std::string> series_step_files(const std::string& path) {
+  std::vector<std::string> files;
+  for (const auto& [time, file] : series_files(path)) files.push_back(file);
+  return files;
 }
 
 std::vector<double> series_step_times(const std::string& path) {
@@ -190,7 +188,7 @@ const FormatReader legacy_vtk_reader{read_legacy};
 const FormatReader vtk_xml_reader{read_xml};
 const FormatReader vtk_pieces_reader{read_xml_parts, nullptr, xml_parts, nullptr, true, false};
 const FormatReader vtk_multiblock_reader{read_xml_parts, nullptr, xml_parts, nullptr, true, true};
-const FormatReader vtk_series_reader{nullptr, series_step_file, nullptr, series_step_times};
+const FormatReader vtk_series_reader{nullptr, series_step_files, nullptr, series_step_times};
 const FormatReader vtk_hdf_reader{read_vtk_hdf};
 
 }  // namespace hsb
