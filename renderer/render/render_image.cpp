@@ -75,6 +75,10 @@ void sample_position(int x, int y, int width, int k, int per_pixel, double& sx, 
   sy = y + (per_pixel == 1 ? 0.5 : v);
 }
 
+bool cancelled(const RenderSettings& settings) {
+  return settings.cancel && settings.cancel->load(std::memory_order_relaxed);
+}
+
 // Traces the camera samples of picture rows [first, last). A tile that
 // cannot see the scene's reach (camera_frustum.h) takes the background
 // without tracing, where `untraced_background` allows.
@@ -86,6 +90,7 @@ void trace_rows(const RayScene& scene, const Camera& camera, const ShadingSpec& 
   tbb::parallel_for(tbb::blocked_range<int>(0, tiles_x * tiles_y), [&](const tbb::blocked_range<int>& range) {
     SampleTracer& tracer = tracers.local();
     for (int tile = range.begin(); tile < range.end(); ++tile) {
+      if (cancelled(settings)) return;
       const int tx = tile % tiles_x, ty = tile / tiles_x;
       int px[kMaxPacket], py[kMaxPacket], count = 0;
       for (int dy = 0; dy < kTile; ++dy)
@@ -297,6 +302,8 @@ RenderOutput render_image(const RayScene& scene, const CameraSpec& camera_spec, 
     if (traced < needed)
       trace_rows(scene, camera, shading, settings, traced, needed, per_pixel, untraced_background, rows, tracers);
     traced = needed;
+    // The rows traced since a cancel are incomplete: none reaches the film.
+    if (cancelled(settings)) throw RenderCancelled();
     const bool surface_planes = out.film.has(Plane::normal) || out.film.has(Plane::scalar);
     const bool colour_only = !surface_planes && !out.film.has(Plane::depth) && !out.film.has(Plane::id);
     tbb::parallel_for(band, band_end, [&](int y) {

@@ -10,7 +10,9 @@
 // bands of samples, whatever the picture's size, and the film itself is a
 // band where the picture is handed on as it is made (rows_done).
 
+#include <atomic>
 #include <cstdint>
+#include <exception>
 #include <functional>
 #include <vector>
 
@@ -38,6 +40,17 @@ struct RenderSettings {
   // [first, last) of the film in order, and the film holds only the band
   // being made (Film's window): RenderOutput::film is left with the last.
   std::function<void(const Film& film, int first, int last)> rows_done;
+  // Polled before each 4×4 tile: once it holds true, no more rays are
+  // traced and render_image() throws RenderCancelled, a tile's time later
+  // (a viewer's next change, a user's Ctrl-C). Null: the render runs to
+  // its end.
+  const std::atomic<bool>* cancel = nullptr;
+};
+
+// What render_image() throws when RenderSettings::cancel was set. The
+// scene, the device and whatever the caller holds stay usable.
+struct RenderCancelled : std::exception {
+  const char* what() const noexcept override { return "the render was cancelled"; }
 };
 
 struct RenderOutput {

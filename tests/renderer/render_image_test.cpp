@@ -5,6 +5,9 @@
 
 #include <tbb/global_control.h>
 
+#include <atomic>
+#include <thread>
+
 #include "renderer/app/prepared_scene.h"
 #include "renderer/render/pixel_filter.h"
 #include "renderer/render/ray_scene.h"
@@ -63,6 +66,40 @@ TEST(RenderImage, SameBytesForAnyThreadCountOverADenseCrowd) {
   EXPECT_LT(two.shadow_stats.span_queries, two.shadow_stats.field_rays);
   for (Plane p : {Plane::color, Plane::alpha})
     EXPECT_EQ(two.film.data(p), one.film.data(p)) << plane_info(p).name << ": 1 thread against 2";
+}
+
+// A render cancelled part-way (here after its first band of rows, as a
+// viewer's next change or a Ctrl-C would) traces no further tile, throws
+// RenderCancelled and leaves the scene usable: the same RayScene then
+// renders the bytes a fresh render gives, and a render from another
+// thread's cancel stops as well.
+TEST(RenderImage, CancelledRenderStopsAndTheSceneStaysUsable) {
+  const ColorManagement color("", "");
+  const std::unique_ptr<PreparedScene> p = prepare_scene(
+      load_scene_text(scene, "film.toml", "", {"render.width=200", "render.height=160", "render.samples=3"}), color);
+  static const EmbreeDevice device;
+  const RayScene rays(device, p->field, p->trace, p->context);
+  std::atomic<bool> cancel{false};
+  int bands = 0;
+  RenderSettings settings = p->render;
+  settings.cancel = &cancel;
+  settings.progress = [&](double) {
+    ++bands;
+    cancel = true;
+  };
+  EXPECT_THROW(render_image(rays, p->camera, p->shading, settings), RenderCancelled);
+  EXPECT_EQ(bands, 1) << "bands made after the cancel";
+
+  cancel = false;
+  settings.progress = nullptr;
+  const RenderOutput after = render_image(rays, p->camera, p->shading, settings);
+  const RenderOutput fresh = render(scene, {"render.width=200", "render.height=160", "render.samples=3"});
+  EXPECT_EQ(after.film.data(Plane::color), fresh.film.data(Plane::color));
+
+  // From another thread, at once: nothing is left to trace.
+  cancel = true;
+  std::thread other([&] { EXPECT_THROW(render_image(rays, p->camera, p->shading, settings), RenderCancelled); });
+  other.join();
 }
 
 TEST(RenderImage, TransparentBackgroundIsAlphaZeroOffTheGlyphsAndOneOnThem) {
