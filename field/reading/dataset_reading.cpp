@@ -200,6 +200,21 @@ void check_named_files(const std::string& path, const FormatReader& reader) {
       throw DataError(path + ": names " + part + ": " + why);
 }
 
+// What every data set gets after its reader (a file's or data arrays'):
+// its cells checked, pieces joined where `joins_pieces`, component arrays
+// joined and the writer's orders recorded, a 2-D result extruded, and a
+// body without volume refused. `path` names it in messages.
+vtkSmartPointer<vtkDataSet> made_whole(vtkSmartPointer<vtkDataSet> data, const std::string& path, bool joins_pieces) {
+  check_cells(data, path);
+  if (joins_pieces) data = joined(vtkUnstructuredGrid::SafeDownCast(data));
+  join_component_arrays(data->GetPointData(), data->GetFieldData());
+  join_component_arrays(data->GetCellData(), data->GetFieldData());
+  record_writer_orders(data);
+  if (const std::optional<PlaneOfData> plane = find_plane(data)) data = extruded(data, *plane);
+  check_volume(data, path);
+  return data;
+}
+
 // The file read by its format's reader, checked and made whole: what runs
 // in the child.
 vtkSmartPointer<vtkDataSet> read_checked(const std::string& path, const FormatReader& reader,
@@ -207,15 +222,7 @@ vtkSmartPointer<vtkDataSet> read_checked(const std::string& path, const FormatRe
   // A file of another known format under this one's name is said as what it is.
   if (const std::string other = unreadable_format_message(path); !other.empty()) throw DataError(other);
   check_named_files(path, reader);
-  vtkSmartPointer<vtkDataSet> data = reader.read(path, request, vtk);
-  check_cells(data, path);
-  if (reader.joins_pieces) data = joined(vtkUnstructuredGrid::SafeDownCast(data));
-  join_component_arrays(data->GetPointData(), data->GetFieldData());
-  join_component_arrays(data->GetCellData(), data->GetFieldData());
-  record_writer_orders(data);
-  if (const std::optional<PlaneOfData> plane = find_plane(data)) data = extruded(data, *plane);
-  check_volume(data, path);
-  return data;
+  return made_whole(reader.read(path, request, vtk), path, reader.joins_pieces);
 }
 
 // The time a child may take on `path`: generous, a few seconds more than
@@ -423,6 +430,12 @@ std::vector<double> series_times(const std::string& path) {
        }))
     times.push_back(std::strtod(line.c_str(), nullptr));
   return times;
+}
+
+vtkSmartPointer<vtkDataSet> read_arrays(const DataArrays& arrays) {
+  // The program's own arrays, checked before VTK is given them: read here,
+  // with no child (the data is in this process only).
+  return made_whole(grid_of_arrays(arrays), arrays.name, false);
 }
 
 vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSession& vtk, const ReadRequest& request) {

@@ -12,6 +12,7 @@
 #include <vtkDataSet.h>
 #include <vtkSmartPointer.h>
 
+#include "field/reading/data_arrays.h"
 #include "field/reading/format_reader.h"
 #include "field/reading/vtk_session.h"
 
@@ -21,6 +22,10 @@ namespace hsb {
 // complaints end up in `vtk`. Throws DataError naming the file.
 vtkSmartPointer<vtkDataSet> read_dataset(const std::string& path, const VtkSession& vtk,
                                          const ReadRequest& request = {});
+
+// The data set `arrays` describe (data_arrays.h), checked and made whole
+// as a file's is after its reader. Throws DataError naming arrays.name.
+vtkSmartPointer<vtkDataSet> read_arrays(const DataArrays& arrays);
 
 // Why the data set has no volume to sample in between its points (a point
 // cloud, lines, a curved shell: its values stand at its points only); ""

@@ -604,7 +604,8 @@ std::vector<double> site_colors(const SitePositions& sites, bool on_points, cons
 
 VtkData load_vtk_data(const VtkFileSpec& spec) {
   const VtkSession vtk;
-  const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path, vtk, {spec.step, spec.block});
+  const vtkSmartPointer<vtkDataSet> data =
+      spec.arrays ? read_arrays(*spec.arrays) : read_dataset(spec.path, vtk, {spec.step, spec.block});
   VtkData out;
   out.no_volume = no_volume_reason(data);
   const bool volume = out.no_volume.empty();
@@ -726,9 +727,10 @@ std::unique_ptr<ScalarField> load_mask(const std::string& path) {
 
 std::string describe_vtk_file(const VtkFileSpec& spec) {
   // Before the session: reading the series takes one of its own.
-  const std::vector<double> times = series_times(spec.path);
+  const std::vector<double> times = spec.arrays ? std::vector<double>{} : series_times(spec.path);
   const VtkSession vtk;
-  const vtkSmartPointer<vtkDataSet> data = read_dataset(spec.path, vtk, {spec.step, spec.block});
+  const vtkSmartPointer<vtkDataSet> data =
+      spec.arrays ? read_arrays(*spec.arrays) : read_dataset(spec.path, vtk, {spec.step, spec.block});
   std::ostringstream out;
   double b[6];
   data->GetBounds(b);

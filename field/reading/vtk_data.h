@@ -11,6 +11,7 @@
 #include "base/shared_values.h"
 #include "field/data_quantity.h"
 #include "field/glyphs/triangle_mesh.h"
+#include "field/reading/data_arrays.h"
 #include "field/reading/site_positions.h"
 #include "field/sampling/field.h"
 
@@ -65,6 +66,9 @@ struct VtkFileSpec {
   TensorFrame frame = TensorFrame::automatic;
   // What the tensors are; automatic: recognised from them (field/data_quantity.h).
   std::optional<DataQuantity> quantity;
+  // Data already in memory (field/reading/data_arrays.h): read from these
+  // arrays instead of a file, `path` only naming them in messages.
+  std::shared_ptr<const DataArrays> arrays;
 };
 
 // The drawn array's values where they stand: its points, or its cells'

@@ -80,6 +80,7 @@ std::string data_file_of(const SceneSpec& spec) {
 // The SHA-1 of the data: of its file, or for data read from several (a
 // series' step, pieces, blocks) of their SHA-1s in turn.
 std::string data_sha1(const SceneSpec& spec) {
+  if (spec.pipeline.data.file.arrays) return arrays_sha1(*spec.pipeline.data.file.arrays);
   const std::string data = data_file_of(spec);
   if (spec.pipeline.data.kind != DataKind::vtk_file) return file_sha1(data);
   const std::vector<std::string> files = data_files_read(data, spec.pipeline.data.file.step);
