@@ -5,7 +5,7 @@
 #include "field/glyphs/vtk_export.h"
 #include "field/reading/data_formats.h"
 #include "renderer/app/povray_export.h"
-#include "renderer/app/prepared_scene.h"
+#include "renderer/library/prepared_scene.h"
 
 namespace hsb {
 

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <sstream>
 
-#include "renderer/app/picture_output.h"
-#include "renderer/app/pinned_scene.h"
-#include "renderer/app/prepared_scene.h"
+#include "renderer/library/picture_output.h"
+#include "renderer/library/pinned_scene.h"
+#include "renderer/library/prepared_scene.h"
 #include "renderer/image/display_image.h"
 #include "renderer/image/image_output.h"
 #include "renderer/image/text.h"

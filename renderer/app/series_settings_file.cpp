@@ -18,7 +18,7 @@
 #include "base/input_file.h"
 #include "base/partial_file.h"
 #include "base/sha1.h"
-#include "renderer/app/picture_output.h"
+#include "renderer/library/picture_output.h"
 #include "renderer/scene/scene_spec.h"
 
 namespace hsb {

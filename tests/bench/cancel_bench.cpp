@@ -19,7 +19,7 @@
 #include <thread>
 #include <vector>
 
-#include "renderer/app/prepared_scene.h"
+#include "renderer/library/prepared_scene.h"
 #include "renderer/render/ray_scene.h"
 #include "renderer/render/render_image.h"
 

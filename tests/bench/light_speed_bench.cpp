@@ -31,7 +31,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/app/prepared_scene.h"
+#include "renderer/library/prepared_scene.h"
 #include "renderer/render/camera.h"
 #include "renderer/render/ray_scene.h"
 #include "renderer/surface/embree_ray.h"

@@ -27,7 +27,7 @@
 #include <random>
 #include <string>
 
-#include "renderer/app/prepared_scene.h"
+#include "renderer/library/prepared_scene.h"
 #include "renderer/render/ray_scene.h"
 #include "renderer/render/render_image.h"
 #include "renderer/surface/instruction_set.h"

@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/app/prepared_scene.h"
+#include "renderer/library/prepared_scene.h"
 #include "renderer/render/ray_scene.h"
 #include "renderer/render/render_image.h"
 #include "renderer/surface/instruction_set.h"

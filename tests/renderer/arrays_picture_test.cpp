@@ -7,9 +7,9 @@
 #include <memory>
 
 #include "field/reading/data_arrays.h"
-#include "renderer/app/picture_output.h"
-#include "renderer/app/pinned_scene.h"
-#include "renderer/app/prepared_scene.h"
+#include "renderer/library/picture_output.h"
+#include "renderer/library/pinned_scene.h"
+#include "renderer/library/prepared_scene.h"
 #include "renderer/render/ray_scene.h"
 #include "renderer/render/render_image.h"
 #include "tests/data_arrays_of.h"

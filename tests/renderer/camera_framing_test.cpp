@@ -7,7 +7,7 @@
 #include <cmath>
 #include <random>
 
-#include "renderer/app/prepared_scene.h"
+#include "renderer/library/prepared_scene.h"
 #include "renderer/render/camera.h"
 #include "renderer/render/camera_framing.h"
 #include "renderer/render/ray_scene.h"

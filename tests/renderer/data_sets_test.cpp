@@ -10,8 +10,8 @@
 #include "field/reading/data_formats.h"
 #include "field/reading/data_info.h"
 #include "renderer/app/export_job.h"
-#include "renderer/app/pinned_scene.h"
-#include "renderer/app/prepared_scene.h"
+#include "renderer/library/pinned_scene.h"
+#include "renderer/library/prepared_scene.h"
 #include "renderer/render/ray_scene.h"
 #include "tests/temp_dir.h"
 

@@ -9,8 +9,8 @@
 #include <fstream>
 
 #include "renderer/app/export_job.h"
-#include "renderer/app/pinned_scene.h"
-#include "renderer/app/prepared_scene.h"
+#include "renderer/library/pinned_scene.h"
+#include "renderer/library/prepared_scene.h"
 #include "renderer/app/render_job.h"
 #include "tests/temp_dir.h"
 

@@ -19,7 +19,7 @@
 
 #include "renderer/app/export_job.h"
 #include "renderer/app/povray_export.h"
-#include "renderer/app/prepared_scene.h"
+#include "renderer/library/prepared_scene.h"
 #include "renderer/scene/scene_spec.h"
 #include "renderer/surface/glyph_shape.h"
 #include "renderer/surface/kernel.h"

@@ -13,7 +13,7 @@
 #include <memory>
 #include <sstream>
 
-#include "renderer/app/prepared_scene.h"
+#include "renderer/library/prepared_scene.h"
 #include "renderer/app/render_job.h"
 #include "renderer/image/text.h"
 #include "tests/renderer/command_output.h"

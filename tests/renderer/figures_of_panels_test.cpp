@@ -13,7 +13,7 @@
 
 #include "field/reading/data_error.h"
 #include "renderer/app/panel_figure.h"
-#include "renderer/app/prepared_scene.h"
+#include "renderer/library/prepared_scene.h"
 #include "renderer/app/render_job.h"
 #include "tests/renderer/command_output.h"
 #include "tests/temp_dir.h"

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "base/memory_budget.h"
-#include "renderer/app/prepared_scene.h"
+#include "renderer/library/prepared_scene.h"
 
 namespace hsb {
 namespace {

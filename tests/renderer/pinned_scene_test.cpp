@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "renderer/app/pinned_scene.h"
-#include "renderer/app/prepared_scene.h"
+#include "renderer/library/pinned_scene.h"
+#include "renderer/library/prepared_scene.h"
 
 namespace hsb {
 namespace {

@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "renderer/app/picture_output.h"
-#include "renderer/app/prepared_scene.h"
+#include "renderer/library/picture_output.h"
+#include "renderer/library/prepared_scene.h"
 #include "renderer/image/display_image.h"
 #include "renderer/image/raster_stream.h"
 #include "renderer/render/ray_scene.h"

@@ -8,7 +8,7 @@
 #include <atomic>
 #include <thread>
 
-#include "renderer/app/prepared_scene.h"
+#include "renderer/library/prepared_scene.h"
 #include "renderer/render/pixel_filter.h"
 #include "renderer/render/ray_scene.h"
 

@@ -1,4 +1,4 @@
-#include "renderer/app/picture_output.h"
+#include "renderer/library/picture_output.h"
 
 #include <algorithm>
 #include <cstdint>

@@ -1,4 +1,4 @@
-#include "renderer/app/pinned_scene.h"
+#include "renderer/library/pinned_scene.h"
 
 #include <filesystem>
 #include <sstream>

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/app/prepared_scene.h"
+#include "renderer/library/prepared_scene.h"
 #include "renderer/image/annotations.h"
 #include "renderer/image/raster_stream.h"
 #include "renderer/render/film.h"

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/app/prepared_scene.h"
+#include "renderer/library/prepared_scene.h"
 
 namespace hsb {
 

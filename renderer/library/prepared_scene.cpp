@@ -1,4 +1,4 @@
-#include "renderer/app/prepared_scene.h"
+#include "renderer/library/prepared_scene.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
