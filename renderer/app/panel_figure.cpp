@@ -5,13 +5,13 @@
 #include <cmath>
 #include <sstream>
 
-#include "renderer/library/picture_output.h"
-#include "renderer/library/pinned_scene.h"
-#include "renderer/library/prepared_scene.h"
 #include "renderer/image/display_image.h"
 #include "renderer/image/image_output.h"
 #include "renderer/image/text.h"
-#include "renderer/render/ray_scene.h"
+#include "renderer/library/hyperstreamball.h"
+#include "renderer/library/picture_output.h"
+#include "renderer/library/pinned_scene.h"
+#include "renderer/library/prepared_scene.h"
 #include "renderer/render/render_image.h"
 
 namespace hsb {
@@ -162,7 +162,6 @@ RenderSummary render_panel_figure(SceneSpec figure, const std::string& image_pat
   std::vector<float> rgba(std::size_t(width) * std::size_t(height) * 4, 0.0f);
   if (!transparent)
     for (std::size_t i = 0; i < rgba.size(); i += 4) std::copy(background.begin(), background.end(), &rgba[i]);
-  static const EmbreeDevice device;
   Annotations annotations;
   RenderSummary summary;
   summary.build_seconds = seconds_since(start);
@@ -171,10 +170,10 @@ RenderSummary render_panel_figure(SceneSpec figure, const std::string& image_pat
   for (std::size_t i = 0; i < n; ++i) {
     PreparedScene& p = *panels[i];
     const int x0 = int(i % std::size_t(columns)) * p.render.width, y0 = int(i / std::size_t(columns)) * p.render.height;
-    const RayScene scene(device, p.field, p.trace, p.context);
-    RenderSettings settings = p.render;
-    settings.progress = [&](double fraction) { report(JobStage::rendering, (double(i) + fraction) / double(n)); };
-    RenderOutput out = render_image(scene, p.camera, p.shading, settings);
+    RenderControl control;
+    control.progress = [&](double fraction) { report(JobStage::rendering, (double(i) + fraction) / double(n)); };
+    Picture picture = render(p, control);
+    RenderOutput& out = picture.rendered;
     render_seconds += out.seconds;
     const std::vector<float> panel = display_pixels(std::move(out.film), color, transparent);
     for (int y = 0; y < p.render.height; ++y)
@@ -194,7 +193,7 @@ RenderSummary render_panel_figure(SceneSpec figure, const std::string& image_pat
     summary.shadow_rays += out.shadow_rays;
     summary.stats += out.stats;
     summary.shadow_stats += out.shadow_stats;
-    for (const std::string& w : p.warnings) summary.warnings.push_back(panel_letter(i) + " " + w);
+    for (const std::string& w : picture.warnings) summary.warnings.push_back(panel_letter(i) + " " + w);
     resolved << "# panel " << panel_letter(i) << "\n" << pinned_scene_toml(p) << "\n";
   }
   if (bar) annotations.legends.push_back({*bar, panels.front()->scale, legend_ink(rgba, width, height, *bar)});

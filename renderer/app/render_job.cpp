@@ -6,15 +6,13 @@
 
 #include "renderer/app/batch.h"
 #include "renderer/app/panel_figure.h"
-#include "renderer/library/picture_output.h"
-#include "renderer/library/pinned_scene.h"
-#include "renderer/library/hyperstreamball.h"
-#include "renderer/library/prepared_scene.h"
 #include "renderer/image/display_image.h"
 #include "renderer/image/image_output.h"
 #include "renderer/image/raster_stream.h"
-#include "renderer/render/ray_scene.h"
-#include "renderer/render/render_image.h"
+#include "renderer/library/hyperstreamball.h"
+#include "renderer/library/picture_output.h"
+#include "renderer/library/pinned_scene.h"
+#include "renderer/library/prepared_scene.h"
 
 namespace hsb {
 namespace {

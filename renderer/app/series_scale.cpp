@@ -6,8 +6,8 @@
 #include <limits>
 
 #include "field/glyph_pipeline.h"
-#include "renderer/library/prepared_scene.h"
 #include "renderer/image/colormap.h"
+#include "renderer/library/prepared_scene.h"
 #include "renderer/scene/scene_spec.h"
 #include "renderer/scene/toml_text.h"
 

@@ -49,8 +49,9 @@ std::unique_ptr<Prepared> prepare(SceneSpec spec) {
   return std::unique_ptr<Prepared>(new Prepared{std::move(color), std::move(scene)});
 }
 
-Picture render(const Prepared& prepared, const RenderControl& control) {
-  const PreparedScene& p = *prepared.scene;
+Picture render(const Prepared& prepared, const RenderControl& control) { return render(*prepared.scene, control); }
+
+Picture render(const PreparedScene& p, const RenderControl& control) {
   // One Embree device for the process: it holds the threads' state.
   static const EmbreeDevice device;
   const RayScene scene(device, p.field, p.trace, p.context);

@@ -65,6 +65,9 @@ struct Picture {
 };
 
 Picture render(const Prepared& prepared, const RenderControl& control = {});
+// The same for a prepared scene whose colour management is held apart
+// (the panels of a figure share one): the render needs none.
+Picture render(const PreparedScene& prepared, const RenderControl& control = {});
 
 // The picture display-referred, premultiplied RGBA, as its file shows it
 // before the colour bar is drawn: what a viewer puts on screen.

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "renderer/library/prepared_scene.h"
 #include "renderer/image/annotations.h"
 #include "renderer/image/raster_stream.h"
+#include "renderer/library/prepared_scene.h"
 #include "renderer/render/film.h"
 
 namespace hsb {

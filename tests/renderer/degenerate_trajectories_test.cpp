@@ -9,9 +9,9 @@
 #include <fstream>
 
 #include "renderer/app/export_job.h"
+#include "renderer/app/render_job.h"
 #include "renderer/library/pinned_scene.h"
 #include "renderer/library/prepared_scene.h"
-#include "renderer/app/render_job.h"
 #include "tests/temp_dir.h"
 
 namespace hsb {

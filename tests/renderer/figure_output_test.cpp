@@ -13,11 +13,11 @@
 #include <memory>
 #include <sstream>
 
-#include "renderer/library/prepared_scene.h"
+#include "field/tensor/tensor_measures.h"
 #include "renderer/app/render_job.h"
 #include "renderer/image/text.h"
+#include "renderer/library/prepared_scene.h"
 #include "tests/renderer/command_output.h"
-#include "field/tensor/tensor_measures.h"
 #include "tests/temp_dir.h"
 
 namespace hsb {

@@ -13,8 +13,8 @@
 
 #include "field/reading/data_error.h"
 #include "renderer/app/panel_figure.h"
-#include "renderer/library/prepared_scene.h"
 #include "renderer/app/render_job.h"
+#include "renderer/library/prepared_scene.h"
 #include "tests/renderer/command_output.h"
 #include "tests/temp_dir.h"
 

@@ -8,10 +8,10 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include "renderer/library/picture_output.h"
-#include "renderer/library/prepared_scene.h"
 #include "renderer/image/display_image.h"
 #include "renderer/image/raster_stream.h"
+#include "renderer/library/picture_output.h"
+#include "renderer/library/prepared_scene.h"
 #include "renderer/render/ray_scene.h"
 #include "tests/temp_dir.h"
 
