@@ -13,6 +13,18 @@ formats=$src/scenes/data/formats
 not_regular="not a regular file (a FIFO, socket or device)"
 host=$(hostname | tr './' '__')
 
+# Runs hsb with the arguments after the first three, within SECONDS (a
+# hang is a failure); fails, naming WHAT, unless it exits 1 and says SAID
+# (a grep pattern).
+refused() {
+  local seconds=$1 what=$2 said=$3
+  shift 3
+  out=$(timeout "$seconds" "$hsb" "$@" 2>&1)
+  local status=$?
+  [[ $status == 1 ]] || fail "$what: exit $status: $out"
+  grep -q -- "$said" <<<"$out" || fail "$what: $out"
+}
+
 # --- A detached NRRD header whose data file is a FIFO: render, info and
 # export each say so at once (reading it waited for a writer for ever).
 mkdir -p "$work/nrrd"
@@ -22,9 +34,8 @@ sed 's/^data file: .*/data file: fifo.raw/' "$formats/teem_helix_detached.nhdr" 
 for command in render info export; do
   args=("$work/nrrd/fifo.nhdr")
   [[ $command == info ]] || args+=(-o "$work/nrrd/out")
-  out=$(timeout 60 "$hsb" $command "${args[@]}" 2>&1); status=$?
-  [[ $status == 1 ]] || fail "$command of a NRRD whose data is a FIFO: exit $status: $out"
-  grep -q "fifo.nhdr: names $work/nrrd/fifo.raw: $not_regular" <<<"$out" || fail "$command, data a FIFO: $out"
+  refused 60 "$command of a NRRD whose data is a FIFO" "fifo.nhdr: names $work/nrrd/fifo.raw: $not_regular" \
+    $command "${args[@]}"
 done
 # In a batch it is one scene's error; the next scene still renders.
 out=$(timeout 60 "$hsb" render "$work/nrrd/fifo.nhdr" "$work/nrrd/teem_helix_detached.nhdr" "${small[@]}" \
@@ -35,23 +46,16 @@ out=$(timeout 60 "$hsb" render "$work/nrrd/fifo.nhdr" "$work/nrrd/teem_helix_det
 # --- --skip-existing hashes the data's files: a device or a FIFO among
 # them is refused, where /dev/zero was hashed for ever.
 sed 's/^data file: .*/data file: \/dev\/zero/' "$formats/teem_helix_detached.nhdr" > "$work/nrrd/zero.nhdr"
-out=$(timeout 60 "$hsb" render "$work/nrrd/zero.nhdr" "${small[@]}" -o "$work/nrrd/skip" --skip-existing 2>&1)
-status=$?
-[[ $status == 1 ]] || fail "--skip-existing, data /dev/zero: exit $status: $out"
-grep -q "zero.nhdr: names /dev/zero: $not_regular" <<<"$out" || fail "--skip-existing, data /dev/zero: $out"
+refused 60 "--skip-existing, data /dev/zero" "zero.nhdr: names /dev/zero: $not_regular" \
+  render "$work/nrrd/zero.nhdr" "${small[@]}" -o "$work/nrrd/skip" --skip-existing
 mkdir -p "$work/pieces"
 cp "$formats/lame_cylinder.pvtu" "$formats/lame_cylinder_0.vtu" "$work/pieces/"
 mkfifo "$work/pieces/lame_cylinder_1.vtu"
-out=$(timeout 60 "$hsb" render "$work/pieces/lame_cylinder.pvtu" "${small[@]}" -o "$work/pieces/out" --skip-existing 2>&1)
-status=$?
-[[ $status == 1 ]] || fail "--skip-existing, a piece a FIFO: exit $status: $out"
-grep -q "lame_cylinder.pvtu: names $work/pieces/lame_cylinder_1.vtu: $not_regular" <<<"$out" ||
-  fail "--skip-existing, a piece a FIFO: $out"
+refused 60 "--skip-existing, a piece a FIFO" "lame_cylinder.pvtu: names $work/pieces/lame_cylinder_1.vtu: $not_regular" \
+  render "$work/pieces/lame_cylinder.pvtu" "${small[@]}" -o "$work/pieces/out" --skip-existing
 sed 's|Source="lame_cylinder_1.vtu"|Source="/dev/zero"|' "$formats/lame_cylinder.pvtu" > "$work/pieces/zero.pvtu"
-out=$(timeout 60 "$hsb" render "$work/pieces/zero.pvtu" "${small[@]}" -o "$work/pieces/out" --skip-existing 2>&1)
-status=$?
-[[ $status == 1 ]] || fail "--skip-existing, a piece /dev/zero: exit $status: $out"
-grep -q "zero.pvtu: names /dev/zero: $not_regular" <<<"$out" || fail "--skip-existing, a piece /dev/zero: $out"
+refused 60 "--skip-existing, a piece /dev/zero" "zero.pvtu: names /dev/zero: $not_regular" \
+  render "$work/pieces/zero.pvtu" "${small[@]}" -o "$work/pieces/out" --skip-existing
 
 # --- An XDMF file whose xi:include names a FIFO (at the top or inside an
 # included file): libxml2 opened it and waited until the reading child's
@@ -65,9 +69,7 @@ printf '<?xml version="1.0"?>\n<Xdmf Version="3.0" xmlns:xi="http://www.w3.org/2
 printf '<Grid Name="g" xmlns:xi="http://www.w3.org/2001/XInclude"><xi:include href="fifo.xml" parse="text"/></Grid>\n' \
   > "$work/xdmf/inner.xml"
 for xdmf in top nested; do
-  out=$(timeout 20 "$hsb" info "$work/xdmf/$xdmf.xdmf" 2>&1); status=$?
-  [[ $status == 1 ]] || fail "an xi:include of a FIFO ($xdmf): exit $status: $out"
-  grep -q "$work/xdmf/fifo.xml: $not_regular" <<<"$out" || fail "an xi:include of a FIFO ($xdmf): $out"
+  refused 20 "an xi:include of a FIFO ($xdmf)" "$work/xdmf/fifo.xml: $not_regular" info "$work/xdmf/$xdmf.xdmf"
 done
 mkdir -p "$work/pair"
 gunzip -c "$formats/dti_fsl_dtifit.nii.gz" > "$work/pair/dti.nii"
@@ -77,9 +79,7 @@ printf 'ni1\0' >> "$work/pair/dti.hdr"
 printf '\0\0\0\0' | dd of="$work/pair/dti.hdr" bs=1 seek=108 conv=notrunc status=none
 tail -c +353 "$work/pair/dti.nii" > "$work/pair/voxels"
 mkfifo "$work/pair/dti.img"
-out=$(timeout 20 "$hsb" info "$work/pair/dti.hdr" 2>&1); status=$?
-[[ $status == 1 ]] || fail "a .hdr whose .img is a FIFO: exit $status: $out"
-grep -q "dti.hdr: names $work/pair/dti.img: $not_regular" <<<"$out" || fail "a .hdr whose .img is a FIFO: $out"
+refused 20 "a .hdr whose .img is a FIFO" "dti.hdr: names $work/pair/dti.img: $not_regular" info "$work/pair/dti.hdr"
 # The .img is the data's: --skip-existing renders again when it changes.
 rm "$work/pair/dti.img"
 cp "$work/pair/voxels" "$work/pair/dti.img"
@@ -92,9 +92,8 @@ grep -q "dti.png  sources=" <<<"$out" || fail "a changed .img was found up to da
 # (which hashes the configuration).
 mkfifo "$work/config.ocio"
 for skip in "" --skip-existing; do
-  out=$(OCIO=$work/config.ocio timeout 60 "$hsb" render "$fig07" "${small[@]}" -o "$work/ocio" $skip 2>&1); status=$?
-  [[ $status == 1 ]] || fail "\$OCIO a FIFO $skip: exit $status: $out"
-  grep -q "\$OCIO names $work/config.ocio: $not_regular" <<<"$out" || fail "\$OCIO a FIFO $skip: $out"
+  OCIO=$work/config.ocio refused 60 "\$OCIO a FIFO $skip" "\$OCIO names $work/config.ocio: $not_regular" \
+    render "$fig07" "${small[@]}" -o "$work/ocio" $skip
 done
 
 # A configuration whose colour space reads a LUT that is a FIFO: OCIO
@@ -105,9 +104,8 @@ sed -e 's|^search_path: ""|search_path: "."|' \
   "$src/renderer/image/hyperstreamball.ocio" > "$work/lut/lut.ocio"
 grep -q FileTransform "$work/lut/lut.ocio" || fail "the test's configuration has no LUT"
 mkfifo "$work/lut/curve.spi1d"
-out=$(OCIO=$work/lut/lut.ocio timeout 60 "$hsb" render "$fig07" "${small[@]}" -o "$work/lut/out" 2>&1); status=$?
-[[ $status == 1 ]] || fail "a LUT that is a FIFO: exit $status: $out"
-grep -q "names the LUT $work/lut/curve.spi1d: $not_regular" <<<"$out" || fail "a LUT that is a FIFO: $out"
+OCIO=$work/lut/lut.ocio refused 60 "a LUT that is a FIFO" "names the LUT $work/lut/curve.spi1d: $not_regular" \
+  render "$fig07" "${small[@]}" -o "$work/lut/out"
 
 # --- --skip-existing reads of an old picture only what tells its hash: a
 # 1 GB PDF (sparse) was read whole into memory. Junk under a picture's name
